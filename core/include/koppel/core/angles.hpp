@@ -1,0 +1,16 @@
+// Angle units and wrap-aware comparison. Radians inside koppel; degrees at the boundary.
+#pragma once
+
+#include <cmath>
+
+namespace koppel {
+
+inline constexpr double kPi = 3.14159265358979323846;
+
+inline constexpr double DegToRad(double degrees) { return degrees * (kPi / 180.0); }
+inline constexpr double RadToDeg(double radians) { return radians * (180.0 / kPi); }
+
+// The signed difference a - b folded into [-pi, pi]: the only way koppel compares angles.
+inline double AngleDifference(double a, double b) { return std::remainder(a - b, 2.0 * kPi); }
+
+}  // namespace koppel

@@ -1,0 +1,126 @@
+// The mechanism model: links with named points, R and P joints, one drive and named outputs.
+//
+// Conventions (they hold everywhere in koppel):
+// - Global frame: x right, y up, lengths in the file's length unit, angles counter-clockwise
+//   positive, radians inside the library (degrees only at the YAML / CLI boundary).
+// - Every link has its own body frame; its points are given in that frame. The frame link
+//   (Gestell) is fixed: its body frame is the global frame.
+// - A moving link's pose is (x, y, theta): the global position of its body origin and the
+//   rotation of its body frame against the global frame.
+// - An R joint (Drehgelenk, "D") makes point_a of link_a coincide with point_b of link_b.
+//   Its joint angle is theta_b - theta_a.
+// - A P joint (Schubgelenk, "S") lets link_b (the block) slide along a line of link_a (the
+//   guide): the line through point_a with direction axis (unit, body frame of link_a). The block
+//   keeps the rotation theta_b - theta_a = angle. Its displacement is
+//   s = axis_global . (p_b - p_a), positive along axis.
+// A Mechanism is built once (by the catalog reader or by code) and never mutated by the solver.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+enum class JointType { kRevolute, kPrismatic };
+
+struct NamedPoint {
+  std::string name;
+  Eigen::Vector2d local = Eigen::Vector2d::Zero();  // body frame of the owning link
+};
+
+struct Link {
+  std::string name;
+  bool is_frame = false;
+  std::vector<NamedPoint> points;
+
+  // Index of the point called `point_name`, or -1.
+  int FindPoint(const std::string& point_name) const;
+};
+
+struct Joint {
+  std::string name;
+  JointType type = JointType::kRevolute;
+  int link_a = -1;  // R: either link; P: the guide
+  int link_b = -1;  // R: the other link; P: the block
+  int point_a = -1;
+  int point_b = -1;
+  Eigen::Vector2d axis = Eigen::Vector2d::UnitX();  // P only: unit, body frame of link_a
+  double angle = 0.0;  // P only: theta_b - theta_a held by the joint [rad]
+};
+
+// A point of a link, by indices.
+struct PointRef {
+  int link = -1;
+  int point = -1;
+};
+
+// The input of the mechanism: an R joint's angle or a P joint's displacement.
+// input = joint value - zero, so `zero` is the joint value at which the input reads 0
+// (radians for R, length for P).
+struct Drive {
+  int joint = -1;
+  double zero = 0.0;
+  std::string input_name = "phi";
+};
+
+enum class OutputKind {
+  kJoint,               // R: joint angle theta_b - theta_a [rad]; P: displacement s [length]
+  kLinkAngle,           // theta of a link against the global x axis [rad]
+  kPoint,               // global x, y of a link point [length] (two components)
+  kDistance,            // |p - q| between two link points [length]
+  kDirection,           // angle of the line p -> q against the global x axis [rad]
+  kTransmissionAngle,   // see transmission.hpp in the solver: angle folded to 0..pi/2 [rad]
+};
+
+struct Output {
+  std::string name;
+  OutputKind kind = OutputKind::kJoint;
+  int joint = -1;  // kJoint; kTransmissionAngle: the output joint
+  int link = -1;   // kLinkAngle; kTransmissionAngle: the coupler link
+  PointRef p;      // kPoint, kDistance, kDirection
+  PointRef q;      // kDistance, kDirection
+  double offset = 0.0;  // angle outputs: subtracted from the value (a zero reference) [rad]
+
+  bool IsAngle() const;
+  int Components() const { return kind == OutputKind::kPoint ? 2 : 1; }
+};
+
+// Rough global positions of points that choose the assembly branch (Einbaulage).
+struct AssemblyHint {
+  double input = 0.0;  // the drive input the hint describes
+  struct Entry {
+    PointRef point;
+    Eigen::Vector2d global = Eigen::Vector2d::Zero();
+  };
+  std::vector<Entry> points;
+};
+
+struct Mechanism {
+  std::string name;
+  std::vector<Link> links;
+  std::vector<Joint> joints;
+  Drive drive;
+  std::vector<Output> outputs;
+  AssemblyHint hint;
+
+  int FindLink(const std::string& link_name) const;
+  int FindJoint(const std::string& joint_name) const;
+  int FindOutput(const std::string& output_name) const;
+  int FrameLink() const;  // index of the (single) frame link, -1 if none
+
+  // Unit of the drive input: true for an angle (R joint), false for a length (P joint).
+  bool InputIsAngle() const;
+};
+
+// Empty when the mechanism is consistent; otherwise one message per problem. The solver
+// requires a consistent mechanism (exactly one frame link, indices in range, unit P axes,
+// a drive on an existing joint).
+std::vector<std::string> CheckConsistency(const Mechanism& mechanism);
+
+// Characteristic length: the largest distance of any point from its body origin, at least 1e-3.
+// Used to scale tolerances with the mechanism's size.
+double LengthScale(const Mechanism& mechanism);
+
+}  // namespace koppel

@@ -1,0 +1,101 @@
+#include "koppel/core/mechanism.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace koppel {
+namespace {
+
+template <class Items>
+int FindByName(const Items& items, const std::string& name) {
+  for (int i = 0; i < static_cast<int>(items.size()); ++i) {
+    if (items[i].name == name) return i;
+  }
+  return -1;
+}
+
+bool PointRefValid(const Mechanism& m, const PointRef& ref) {
+  if (ref.link < 0 || ref.link >= static_cast<int>(m.links.size())) return false;
+  return ref.point >= 0 && ref.point < static_cast<int>(m.links[ref.link].points.size());
+}
+
+}  // namespace
+
+int Link::FindPoint(const std::string& point_name) const { return FindByName(points, point_name); }
+
+bool Output::IsAngle() const {
+  return kind == OutputKind::kLinkAngle || kind == OutputKind::kDirection ||
+         kind == OutputKind::kTransmissionAngle;
+}
+
+int Mechanism::FindLink(const std::string& link_name) const { return FindByName(links, link_name); }
+int Mechanism::FindJoint(const std::string& joint_name) const { return FindByName(joints, joint_name); }
+int Mechanism::FindOutput(const std::string& output_name) const { return FindByName(outputs, output_name); }
+
+int Mechanism::FrameLink() const {
+  for (int i = 0; i < static_cast<int>(links.size()); ++i) {
+    if (links[i].is_frame) return i;
+  }
+  return -1;
+}
+
+bool Mechanism::InputIsAngle() const {
+  return drive.joint >= 0 && joints[drive.joint].type == JointType::kRevolute;
+}
+
+std::vector<std::string> CheckConsistency(const Mechanism& m) {
+  std::vector<std::string> problems;
+  const int n_links = static_cast<int>(m.links.size());
+  const auto frames = std::count_if(m.links.begin(), m.links.end(), [](const Link& l) { return l.is_frame; });
+  if (frames != 1) problems.push_back("a mechanism needs exactly one frame link, found " + std::to_string(frames));
+  for (const Joint& j : m.joints) {
+    const std::string where = "joint '" + j.name + "'";
+    if (j.link_a < 0 || j.link_a >= n_links || j.link_b < 0 || j.link_b >= n_links) {
+      problems.push_back(where + " names a link that does not exist");
+      continue;
+    }
+    if (j.link_a == j.link_b) problems.push_back(where + " joins link '" + m.links[j.link_a].name + "' to itself");
+    if (!PointRefValid(m, {j.link_a, j.point_a}) || !PointRefValid(m, {j.link_b, j.point_b}))
+      problems.push_back(where + " names a point that does not exist");
+    if (j.type == JointType::kPrismatic && std::abs(j.axis.norm() - 1.0) > 1e-12)
+      problems.push_back(where + " has a slide axis that is not a unit vector");
+  }
+  if (m.drive.joint < 0 || m.drive.joint >= static_cast<int>(m.joints.size()))
+    problems.push_back("the drive names no joint");
+  for (const Output& o : m.outputs) {
+    const std::string where = "output '" + o.name + "'";
+    switch (o.kind) {
+      case OutputKind::kJoint:
+        if (o.joint < 0 || o.joint >= static_cast<int>(m.joints.size())) problems.push_back(where + " names no joint");
+        break;
+      case OutputKind::kLinkAngle:
+        if (o.link < 0 || o.link >= n_links) problems.push_back(where + " names no link");
+        break;
+      case OutputKind::kPoint:
+        if (!PointRefValid(m, o.p)) problems.push_back(where + " names no point");
+        break;
+      case OutputKind::kDistance:
+      case OutputKind::kDirection:
+        if (!PointRefValid(m, o.p) || !PointRefValid(m, o.q)) problems.push_back(where + " names no point");
+        break;
+      case OutputKind::kTransmissionAngle:
+        if (o.joint < 0 || o.joint >= static_cast<int>(m.joints.size()) || o.link < 0 || o.link >= n_links)
+          problems.push_back(where + " needs a coupler link and an output joint");
+        break;
+    }
+  }
+  for (const AssemblyHint::Entry& e : m.hint.points) {
+    if (!PointRefValid(m, e.point)) problems.push_back("an assembly hint names no point");
+  }
+  return problems;
+}
+
+double LengthScale(const Mechanism& m) {
+  double scale = 0.0;
+  for (const Link& link : m.links) {
+    for (const NamedPoint& p : link.points) scale = std::max(scale, p.local.norm());
+  }
+  return std::max(scale, 1e-3);
+}
+
+}  // namespace koppel

@@ -1,0 +1,119 @@
+// Position analysis: Newton on the joint residuals of constraints.hpp with the analytic
+// Jacobian, assembly from a rough hint, and the exact Taylor coefficients of q(input).
+//
+// Outcomes are values: a SolveReport with a status, never an exception. On failure the
+// caller's q is left as it was.
+#pragma once
+
+#include "koppel/core/mechanism.hpp"
+#include "koppel/solver/constraints.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <Eigen/QR>
+
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+enum class SolveStatus {
+  kConverged,
+  kNotAssemblable,   // no pose satisfies the joints at this input (links too short, ...)
+  kSingular,         // the Jacobian lost rank: a dead centre of the drive or a bifurcation
+  kDidNotConverge,   // Newton ran out of iterations or the step was rejected
+};
+
+const char* ToString(SolveStatus status);
+
+struct SolveReport {
+  SolveStatus status = SolveStatus::kDidNotConverge;
+  double residual_norm = 0.0;  // max-norm of F at the returned (or last tried) q
+  int iterations = 0;
+  int worst_joint = -1;        // joint with the largest residual, -1 for the drive row
+  std::string message;
+  bool ok() const { return status == SolveStatus::kConverged; }
+};
+
+struct NewtonOptions {
+  int max_iterations = 20;
+  // Converged when |F|_inf <= tolerance * L (L = length scale): a few hundred ulps of the
+  // coordinates, far below the 1e-9 the closed-form checks ask for.
+  double tolerance = 1e-13;
+};
+
+// Largest order of transfer function the solver computes (Taylor coefficients of q).
+inline constexpr int kMaxOrder = 8;
+
+class PositionSolver {
+ public:
+  explicit PositionSolver(const Mechanism& mechanism, NewtonOptions options = {});
+
+  const ConstraintSystem& system() const { return system_; }
+  int NumCoordinates() const { return system_.NumCoordinates(); }
+
+  // Newton from q at `input`. On success q holds the solution and the Jacobian there is
+  // factorised (see Series, JacobianSign). On failure q is unchanged.
+  SolveReport Correct(double input, Eigen::VectorXd& q);
+
+  // Builds a first guess from the mechanism's frame points, the drive and the assembly hint,
+  // then Levenberg–Marquardt, then Newton. The hint describes the pose at mechanism.hint.input;
+  // this assembles at exactly that input. On success q is the assembled pose.
+  SolveReport Assemble(Eigen::VectorXd& q);
+
+  // Coefficients of the Taylor series of q about the last converged pose: column k holds
+  // d^k q / d input^k / k!, k = 0..order (order <= kMaxOrder). Uses the factorisation of the
+  // last successful Correct/Assemble. False for a singular Jacobian.
+  bool Series(int order, Eigen::MatrixXd& coefficients);
+
+  // Every output's derivatives from q's Taylor coefficients, in the order output, component
+  // (x, y for points), k = 0..order: out[...] = d^k y / d input^k. `out` holds
+  // OutputWidth(order) numbers.
+  void OutputDerivatives(const Eigen::MatrixXd& q_coefficients, int order, double* out) const;
+  int OutputWidth(int order) const;
+
+  // Sign of det J at the last converged pose (square systems), 0 when J is singular or not
+  // square. A change of sign along a path means the path crossed a singular position.
+  int JacobianSign() const { return jacobian_sign_; }
+  // Smallest |U_ii| / largest |U_ii| of the last LU: a cheap distance-to-singularity gauge.
+  double PivotRatio() const { return pivot_ratio_; }
+
+  // Rank of the constraint rows (drive row excluded) at q, and the actual mobility
+  // NumCoordinates() - rank.
+  int ConstraintRank(const Eigen::VectorXd& q) const;
+
+ private:
+  void Evaluate(const Eigen::VectorXd& q, double input);  // fills residual_ and jacobian_
+  bool Factorize();                                       // factorises jacobian_
+  void SolveFactorized(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
+  Eigen::VectorXd InitialGuess() const;
+  SolveReport Report(SolveStatus status, int iterations, std::string message) const;
+  template <int N> bool SeriesImpl(int order, Eigen::MatrixXd& coefficients);
+
+  const Mechanism& mechanism_;
+  ConstraintSystem system_;
+  NewtonOptions options_;
+  bool square_ = true;
+  Eigen::VectorXd residual_, step_, rhs_;
+  Eigen::MatrixXd jacobian_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr_;
+  Eigen::VectorXd q_solved_;
+  double input_solved_ = 0.0;
+  bool factorized_ = false;
+  int jacobian_sign_ = 0;
+  double pivot_ratio_ = 0.0;
+  // Taylor workspaces, allocated once.
+  mutable std::vector<Taylor<2>> q2_, r2_;
+  mutable std::vector<Taylor<kMaxOrder>> q8_, r8_;
+  Eigen::VectorXd q_try_;
+  template <int N> std::vector<Taylor<N>>& CoordinateSeries() const {
+    if constexpr (N == 2) return q2_; else return q8_;
+  }
+  template <int N> std::vector<Taylor<N>>& ResidualSeries() const {
+    if constexpr (N == 2) return r2_; else return r8_;
+  }
+  template <int N> void OutputDerivativesImpl(const Eigen::MatrixXd& q_coefficients, int order, double* out) const;
+};
+
+}  // namespace koppel

@@ -1,0 +1,127 @@
+// Truncated Taylor series in one variable t: x(t) = c[0] + c[1] t + ... + c[N] t^N.
+// Residuals and outputs are templated on their scalar, so evaluating them on Taylor<N>
+// coefficients of the coordinates q(t) gives the series of the residual, from which the
+// transfer functions of any order follow exactly (no differencing). Fixed size: no heap.
+#pragma once
+
+#include <array>
+#include <cmath>
+
+namespace koppel {
+
+template <int N>
+struct Taylor {
+  static_assert(N >= 0);
+  std::array<double, N + 1> c{};
+
+  Taylor() = default;
+  Taylor(double value) { c[0] = value; }  // NOLINT: a constant is a series
+
+  Taylor& operator+=(const Taylor& o) { for (int k = 0; k <= N; ++k) c[k] += o.c[k]; return *this; }
+  Taylor& operator-=(const Taylor& o) { for (int k = 0; k <= N; ++k) c[k] -= o.c[k]; return *this; }
+};
+
+template <int N> Taylor<N> operator+(Taylor<N> a, const Taylor<N>& b) { return a += b; }
+template <int N> Taylor<N> operator-(Taylor<N> a, const Taylor<N>& b) { return a -= b; }
+template <int N> Taylor<N> operator-(Taylor<N> a) { for (double& x : a.c) x = -x; return a; }
+template <int N> Taylor<N> operator+(Taylor<N> a, double b) { a.c[0] += b; return a; }
+template <int N> Taylor<N> operator-(Taylor<N> a, double b) { a.c[0] -= b; return a; }
+template <int N> Taylor<N> operator*(Taylor<N> a, double b) { for (double& x : a.c) x *= b; return a; }
+template <int N> Taylor<N> operator*(double b, Taylor<N> a) { return a * b; }
+
+// Cauchy product.
+template <int N>
+Taylor<N> operator*(const Taylor<N>& a, const Taylor<N>& b) {
+  Taylor<N> r;
+  for (int k = 0; k <= N; ++k) {
+    double s = 0.0;
+    for (int j = 0; j <= k; ++j) s += a.c[j] * b.c[k - j];
+    r.c[k] = s;
+  }
+  return r;
+}
+
+// r = a / b from a = r b, solved coefficient by coefficient; requires b.c[0] != 0.
+template <int N>
+Taylor<N> operator/(const Taylor<N>& a, const Taylor<N>& b) {
+  Taylor<N> r;
+  for (int k = 0; k <= N; ++k) {
+    double s = a.c[k];
+    for (int j = 1; j <= k; ++j) s -= b.c[j] * r.c[k - j];
+    r.c[k] = s / b.c[0];
+  }
+  return r;
+}
+
+// sin and cos together, from s' = c u', c' = -s u' (coefficient recurrences).
+template <int N>
+void SinCos(const Taylor<N>& u, Taylor<N>& s, Taylor<N>& c) {
+  s.c[0] = std::sin(u.c[0]);
+  c.c[0] = std::cos(u.c[0]);
+  for (int k = 1; k <= N; ++k) {
+    double ss = 0.0, cc = 0.0;
+    for (int j = 1; j <= k; ++j) {
+      ss += j * u.c[j] * c.c[k - j];
+      cc -= j * u.c[j] * s.c[k - j];
+    }
+    s.c[k] = ss / k;
+    c.c[k] = cc / k;
+  }
+}
+inline void SinCos(double u, double& s, double& c) { s = std::sin(u); c = std::cos(u); }
+
+template <int N> Taylor<N> sin(const Taylor<N>& u) { Taylor<N> s, c; SinCos(u, s, c); return s; }
+template <int N> Taylor<N> cos(const Taylor<N>& u) { Taylor<N> s, c; SinCos(u, s, c); return c; }
+
+// r = sqrt(a) from r*r = a; requires a.c[0] > 0.
+template <int N>
+Taylor<N> sqrt(const Taylor<N>& a) {
+  Taylor<N> r;
+  r.c[0] = std::sqrt(a.c[0]);
+  for (int k = 1; k <= N; ++k) {
+    double s = a.c[k];
+    for (int j = 1; j < k; ++j) s -= r.c[j] * r.c[k - j];
+    r.c[k] = s / (2.0 * r.c[0]);
+  }
+  return r;
+}
+
+// Integral of a series with a given constant term: the tool for functions known by their
+// derivative (atan2).
+template <int N>
+Taylor<N> IntegrateWithConstant(const Taylor<N>& derivative, double constant) {
+  Taylor<N> r;
+  r.c[0] = constant;
+  for (int k = 1; k <= N; ++k) r.c[k] = derivative.c[k - 1] / k;
+  return r;
+}
+
+// The derivative series d/dt, truncated (its top coefficient is zero).
+template <int N>
+Taylor<N> Derivative(const Taylor<N>& a) {
+  Taylor<N> r;
+  for (int k = 0; k < N; ++k) r.c[k] = (k + 1) * a.c[k + 1];
+  return r;
+}
+
+// atan2(y, x): theta' = (x y' - y x') / (x^2 + y^2); requires (x, y) != 0.
+template <int N>
+Taylor<N> atan2(const Taylor<N>& y, const Taylor<N>& x) {
+  const Taylor<N> rate = (x * Derivative(y) - y * Derivative(x)) / (x * x + y * y);
+  return IntegrateWithConstant(rate, std::atan2(y.c[0], x.c[0]));
+}
+
+// Scalar access so that templated code can branch on the value (wrap, signs).
+inline double Value(double x) { return x; }
+template <int N> double Value(const Taylor<N>& x) { return x.c[0]; }
+
+// Folds the value into [-pi, pi] by a whole number of turns; higher coefficients are untouched
+// because a constant shift does not change derivatives.
+inline double WrapAngle(double x) { return std::remainder(x, 2.0 * 3.14159265358979323846); }
+template <int N>
+Taylor<N> WrapAngle(Taylor<N> x) {
+  x.c[0] = WrapAngle(x.c[0]);
+  return x;
+}
+
+}  // namespace koppel

@@ -1,0 +1,358 @@
+#include "koppel/solver/position.hpp"
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <cmath>
+
+namespace koppel {
+namespace {
+
+Eigen::Vector2d Rotate(double theta, const Eigen::Vector2d& v) {
+  const double c = std::cos(theta), s = std::sin(theta);
+  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+}
+
+double Factorial(int k) {
+  double f = 1.0;
+  for (int i = 2; i <= k; ++i) f *= i;
+  return f;
+}
+
+// Levenberg–Marquardt budget for assembly from a rough guess: generous, it runs once.
+constexpr int kAssemblyIterations = 400;
+// Assembly hands over to Newton once the residual is this small relative to L: Newton then
+// converges quadratically on the branch LM found.
+constexpr double kAssemblyHandover = 1e-8;
+// A pivot ratio below this counts as a singular Jacobian (about 100 ulps).
+constexpr double kSingularPivotRatio = 1e-14;
+
+}  // namespace
+
+const char* ToString(SolveStatus status) {
+  switch (status) {
+    case SolveStatus::kConverged: return "converged";
+    case SolveStatus::kNotAssemblable: return "not assemblable";
+    case SolveStatus::kSingular: return "singular";
+    case SolveStatus::kDidNotConverge: return "did not converge";
+  }
+  return "unknown";
+}
+
+PositionSolver::PositionSolver(const Mechanism& mechanism, NewtonOptions options)
+    : mechanism_(mechanism), system_(mechanism), options_(options) {
+  const int n = system_.NumCoordinates(), m = system_.NumEquations();
+  square_ = (n == m);
+  residual_.resize(m);
+  rhs_.resize(m);
+  step_.resize(n);
+  q_try_.resize(n);
+  q_solved_.setZero(n);
+  jacobian_.resize(m, n);
+  if (square_) lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+  q2_.resize(n);
+  q8_.resize(n);
+  r2_.resize(m);
+  r8_.resize(m);
+}
+
+void PositionSolver::Evaluate(const Eigen::VectorXd& q, double input) {
+  system_.Residuals(q.data(), input, residual_.data());
+  system_.Jacobian(q.data(), jacobian_);
+}
+
+bool PositionSolver::Factorize() {
+  double max_pivot = 0.0, min_pivot = 0.0;
+  if (square_ && jacobian_.rows() > 0) {
+    lu_.compute(jacobian_);
+    const auto& lu = lu_.matrixLU();
+    int sign = static_cast<int>(lu_.permutationP().determinant());
+    min_pivot = std::abs(lu(0, 0));
+    for (int i = 0; i < lu.rows(); ++i) {
+      const double d = lu(i, i);
+      max_pivot = std::max(max_pivot, std::abs(d));
+      min_pivot = std::min(min_pivot, std::abs(d));
+      if (d < 0) sign = -sign;
+    }
+    pivot_ratio_ = max_pivot > 0 ? min_pivot / max_pivot : 0.0;
+    jacobian_sign_ = pivot_ratio_ > kSingularPivotRatio ? sign : 0;
+  } else {
+    // Redundant constraints (more rows than coordinates): least squares through QR, no sign.
+    qr_.compute(jacobian_);
+    const auto& r = qr_.matrixR();
+    const int k = std::min(r.rows(), r.cols());
+    max_pivot = k > 0 ? std::abs(r(0, 0)) : 0.0;
+    min_pivot = k > 0 ? std::abs(r(k - 1, k - 1)) : 0.0;
+    pivot_ratio_ = (k == jacobian_.cols() && max_pivot > 0) ? min_pivot / max_pivot : 0.0;
+    jacobian_sign_ = 0;
+  }
+  return pivot_ratio_ > kSingularPivotRatio;
+}
+
+void PositionSolver::SolveFactorized(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
+  if (square_) {
+    x.noalias() = lu_.solve(rhs);
+  } else {
+    x.noalias() = qr_.solve(rhs);
+  }
+}
+
+SolveReport PositionSolver::Report(SolveStatus status, int iterations, std::string message) const {
+  SolveReport report;
+  report.status = status;
+  report.iterations = iterations;
+  report.residual_norm = residual_.size() ? residual_.lpNorm<Eigen::Infinity>() : 0.0;
+  double worst = -1.0;
+  for (int row = 0; row < residual_.size(); ++row) {
+    if (std::abs(residual_(row)) > worst) {
+      worst = std::abs(residual_(row));
+      report.worst_joint = row == system_.DriveRow() ? -1 : row / 2;
+    }
+  }
+  report.message = std::move(message);
+  return report;
+}
+
+SolveReport PositionSolver::Correct(double input, Eigen::VectorXd& q) {
+  const double tolerance = options_.tolerance * system_.length_scale();
+  q_try_ = q;
+  double first_norm = -1.0;
+  for (int it = 0; it <= options_.max_iterations; ++it) {
+    Evaluate(q_try_, input);
+    const double norm = residual_.lpNorm<Eigen::Infinity>();
+    if (!std::isfinite(norm)) return Report(SolveStatus::kDidNotConverge, it, "the residual is not finite");
+    if (first_norm < 0) first_norm = norm;
+    const bool regular = Factorize();
+    if (norm <= tolerance) {
+      if (!regular) {
+        factorized_ = false;
+        return Report(SolveStatus::kSingular, it, "the pose is singular: the Jacobian has lost rank");
+      }
+      q = q_try_;
+      q_solved_ = q_try_;
+      input_solved_ = input;
+      factorized_ = true;
+      return Report(SolveStatus::kConverged, it, "");
+    }
+    if (!regular) return Report(SolveStatus::kSingular, it, "the Jacobian is singular before convergence");
+    // Divergence guard: Newton from a good predictor never grows the residual this much.
+    if (it > 0 && norm > 1e3 * first_norm && norm > system_.length_scale())
+      return Report(SolveStatus::kDidNotConverge, it, "Newton diverged");
+    rhs_ = -residual_;
+    SolveFactorized(rhs_, step_);
+    q_try_ += step_;
+  }
+  return Report(SolveStatus::kDidNotConverge, options_.max_iterations,
+                "Newton did not converge in " + std::to_string(options_.max_iterations) + " iterations");
+}
+
+Eigen::VectorXd PositionSolver::InitialGuess() const {
+  const Mechanism& m = mechanism_;
+  const int n_links = static_cast<int>(m.links.size());
+  const double input = m.hint.input;
+  std::vector<bool> posed(n_links, false), angle_known(n_links, false);
+  std::vector<double> theta(n_links, 0.0);
+  std::vector<Eigen::Vector2d> origin(n_links, Eigen::Vector2d::Zero());
+  // Global estimates of link points, (point index, position) per link; the first one wins.
+  std::vector<std::vector<std::pair<int, Eigen::Vector2d>>> estimates(n_links);
+  auto add_estimate = [&](int link, int point, const Eigen::Vector2d& g) {
+    for (const auto& [p, unused] : estimates[link]) {
+      if (p == point) return false;
+    }
+    estimates[link].emplace_back(point, g);
+    return true;
+  };
+  auto global = [&](int link, int point) { return Eigen::Vector2d(origin[link] + Rotate(theta[link], m.links[link].points[point].local)); };
+  auto set_angle = [&](int link, double value) {
+    if (angle_known[link]) return false;
+    angle_known[link] = true;
+    theta[link] = value;
+    return true;
+  };
+  const int frame = m.FrameLink();
+  posed[frame] = angle_known[frame] = true;
+  for (const AssemblyHint::Entry& e : m.hint.points) add_estimate(e.point.link, e.point.point, e.global);
+
+  auto propagate = [&] {
+    bool changed = true;
+    while (changed) {
+      changed = false;
+      for (int k = 0; k < static_cast<int>(m.joints.size()); ++k) {
+        const Joint& j = m.joints[k];
+        const bool is_drive = (k == m.drive.joint);
+        if (j.type == JointType::kRevolute) {
+          if (posed[j.link_a] && !posed[j.link_b]) changed |= add_estimate(j.link_b, j.point_b, global(j.link_a, j.point_a));
+          if (posed[j.link_b] && !posed[j.link_a]) changed |= add_estimate(j.link_a, j.point_a, global(j.link_b, j.point_b));
+          if (is_drive && angle_known[j.link_a]) changed |= set_angle(j.link_b, theta[j.link_a] + m.drive.zero + input);
+          if (is_drive && angle_known[j.link_b]) changed |= set_angle(j.link_a, theta[j.link_b] - m.drive.zero - input);
+        } else {
+          if (angle_known[j.link_a]) changed |= set_angle(j.link_b, theta[j.link_a] + j.angle);
+          if (angle_known[j.link_b]) changed |= set_angle(j.link_a, theta[j.link_b] - j.angle);
+          const double s = is_drive ? m.drive.zero + input : 0.0;
+          if (posed[j.link_a] && !posed[j.link_b])
+            changed |= add_estimate(j.link_b, j.point_b, global(j.link_a, j.point_a) + s * Rotate(theta[j.link_a], j.axis));
+        }
+      }
+      for (int l = 0; l < n_links; ++l) {
+        if (posed[l] || estimates[l].empty()) continue;
+        const auto& est = estimates[l];
+        const Eigen::Vector2d& p0 = m.links[l].points[est[0].first].local;
+        if (!angle_known[l] && est.size() >= 2) {
+          const Eigen::Vector2d& p1 = m.links[l].points[est[1].first].local;
+          const Eigen::Vector2d dl = p1 - p0, dg = est[1].second - est[0].second;
+          if (dl.norm() > 0 && dg.norm() > 0) set_angle(l, std::atan2(dg.y(), dg.x()) - std::atan2(dl.y(), dl.x()));
+        }
+        if (!angle_known[l]) continue;
+        origin[l] = est[0].second - Rotate(theta[l], p0);
+        posed[l] = changed = true;
+      }
+    }
+  };
+  // Propagate what is determined; where nothing is, pose a link with the angle it has (or 0)
+  // at its first estimated point (or the origin) and propagate again.
+  for (;;) {
+    propagate();
+    int pick = -1;
+    for (int l = 0; l < n_links && pick < 0; ++l) {
+      if (!posed[l] && !estimates[l].empty()) pick = l;
+    }
+    for (int l = 0; l < n_links && pick < 0; ++l) {
+      if (!posed[l]) pick = l;
+    }
+    if (pick < 0) break;
+    angle_known[pick] = true;
+    if (!estimates[pick].empty())
+      origin[pick] = estimates[pick][0].second - Rotate(theta[pick], m.links[pick].points[estimates[pick][0].first].local);
+    posed[pick] = true;
+  }
+  Eigen::VectorXd q(system_.NumCoordinates());
+  for (int l = 0; l < n_links; ++l) {
+    const int i = system_.CoordinateOf(l);
+    if (i < 0) continue;
+    q(i) = origin[l].x();
+    q(i + 1) = origin[l].y();
+    q(i + 2) = theta[l];
+  }
+  return q;
+}
+
+SolveReport PositionSolver::Assemble(Eigen::VectorXd& q) {
+  const double input = mechanism_.hint.input;
+  const double scale = system_.length_scale();
+  Eigen::VectorXd x = InitialGuess();
+  Evaluate(x, input);
+  double cost = residual_.squaredNorm();
+  Eigen::MatrixXd normal = jacobian_.transpose() * jacobian_;
+  Eigen::VectorXd gradient = jacobian_.transpose() * residual_;
+  double lambda = 1e-3 * std::max(normal.diagonal().maxCoeff(), 1e-12);
+  int it = 0;
+  for (; it < kAssemblyIterations && residual_.lpNorm<Eigen::Infinity>() > kAssemblyHandover * scale; ++it) {
+    Eigen::MatrixXd damped = normal;
+    damped.diagonal() += lambda * (normal.diagonal().array() + 1e-9).matrix();
+    const Eigen::VectorXd dx = -damped.ldlt().solve(gradient);
+    const Eigen::VectorXd trial = x + dx;
+    Evaluate(trial, input);
+    const double trial_cost = residual_.squaredNorm();
+    if (std::isfinite(trial_cost) && trial_cost < cost) {
+      x = trial;
+      cost = trial_cost;
+      normal = jacobian_.transpose() * jacobian_;
+      gradient = jacobian_.transpose() * residual_;
+      lambda = std::max(lambda / 3.0, 1e-15);
+    } else {
+      Evaluate(x, input);  // restore residual_ for the stall test and the report
+      lambda *= 4.0;
+      if (lambda > 1e16) break;  // no descent left: a local minimum of |F| that is not zero
+    }
+  }
+  if (residual_.lpNorm<Eigen::Infinity>() > kAssemblyHandover * scale) {
+    std::string what = "no pose satisfies all joints";
+    const SolveReport partial = Report(SolveStatus::kNotAssemblable, it, "");
+    if (partial.worst_joint >= 0) {
+      what += " (joint '" + mechanism_.joints[partial.worst_joint].name + "' stays open by " +
+              std::to_string(partial.residual_norm) + ")";
+    } else {
+      what += " (the drive cannot reach its input)";
+    }
+    return Report(SolveStatus::kNotAssemblable, it, what);
+  }
+  // Angles into (-pi, pi] so that outputs start on the principal value.
+  for (int l = 0; l < static_cast<int>(mechanism_.links.size()); ++l) {
+    if (const int i = system_.CoordinateOf(l); i >= 0) x(i + 2) = WrapAngle(x(i + 2));
+  }
+  SolveReport report = Correct(input, x);
+  report.iterations += it;
+  if (report.ok()) q = x;
+  return report;
+}
+
+template <int N>
+bool PositionSolver::SeriesImpl(int order, Eigen::MatrixXd& coefficients) {
+  std::vector<Taylor<N>>& qs = CoordinateSeries<N>();
+  std::vector<Taylor<N>>& rs = ResidualSeries<N>();
+  const int n = system_.NumCoordinates();
+  coefficients.col(0) = q_solved_;
+  Taylor<N> input(input_solved_);
+  input.c[1] = 1.0;
+  for (int k = 1; k <= order; ++k) {
+    // Coefficient k of F(q(t), input + t) with q's own coefficient k still zero is the
+    // right-hand side: J q_k = -[F]_k.
+    for (int i = 0; i < n; ++i) {
+      qs[i] = Taylor<N>();
+      for (int j = 0; j < k; ++j) qs[i].c[j] = coefficients(i, j);
+    }
+    system_.Residuals(qs.data(), input, rs.data());
+    for (int i = 0; i < rhs_.size(); ++i) rhs_(i) = -rs[i].c[k];
+    SolveFactorized(rhs_, step_);
+    coefficients.col(k) = step_;
+  }
+  return true;
+}
+
+bool PositionSolver::Series(int order, Eigen::MatrixXd& coefficients) {
+  if (!factorized_ || order < 0 || order > kMaxOrder) return false;
+  if (coefficients.rows() != NumCoordinates() || coefficients.cols() != order + 1)
+    coefficients.resize(NumCoordinates(), order + 1);
+  return order <= 2 ? SeriesImpl<2>(order, coefficients) : SeriesImpl<kMaxOrder>(order, coefficients);
+}
+
+int PositionSolver::OutputWidth(int order) const {
+  int width = 0;
+  for (const Output& o : mechanism_.outputs) width += o.Components() * (order + 1);
+  return width;
+}
+
+template <int N>
+void PositionSolver::OutputDerivativesImpl(const Eigen::MatrixXd& coefficients, int order, double* out) const {
+  std::vector<Taylor<N>>& qs = CoordinateSeries<N>();
+  for (int i = 0; i < NumCoordinates(); ++i) {
+    qs[i] = Taylor<N>();
+    for (int j = 0; j <= order; ++j) qs[i].c[j] = coefficients(i, j);
+  }
+  int column = 0;
+  for (int o = 0; o < static_cast<int>(mechanism_.outputs.size()); ++o) {
+    for (int comp = 0; comp < mechanism_.outputs[o].Components(); ++comp) {
+      const Taylor<N> y = system_.Output(o, comp, qs.data());
+      for (int k = 0; k <= order; ++k) out[column++] = y.c[k] * Factorial(k);
+    }
+  }
+}
+
+void PositionSolver::OutputDerivatives(const Eigen::MatrixXd& coefficients, int order, double* out) const {
+  if (order <= 2) {
+    OutputDerivativesImpl<2>(coefficients, order, out);
+  } else {
+    OutputDerivativesImpl<kMaxOrder>(coefficients, order, out);
+  }
+}
+
+int PositionSolver::ConstraintRank(const Eigen::VectorXd& q) const {
+  Eigen::MatrixXd jac(system_.NumEquations(), system_.NumCoordinates());
+  system_.Jacobian(q.data(), jac);
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(jac.topRows(system_.NumEquations() - 1));
+  // Rank threshold relative to the largest pivot, scaled like the Newton tolerance.
+  qr.setThreshold(1e-10);
+  return static_cast<int>(qr.rank());
+}
+
+}  // namespace koppel

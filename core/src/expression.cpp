@@ -67,16 +67,20 @@ std::optional<double> ParameterSet::Evaluate(const std::string& formula, std::st
   }
 }
 
+void ParameterSet::DefineValue(const std::string& name, double value) {
+  for (auto& [n, v] : values_) {
+    if (n == name) {
+      v = value;
+      return;
+    }
+  }
+  values_.emplace_back(name, value);
+}
+
 bool ParameterSet::Define(const std::string& name, const std::string& formula, std::string* error) {
   const std::optional<double> value = Evaluate(formula, error);
   if (!value) return false;
-  for (auto& [n, v] : values_) {
-    if (n == name) {
-      v = *value;
-      return true;
-    }
-  }
-  values_.emplace_back(name, *value);
+  DefineValue(name, *value);
   return true;
 }
 

@@ -27,6 +27,9 @@ class ParameterSet {
   // unknown name or a non-finite result.
   std::optional<double> Evaluate(const std::string& formula, std::string* error) const;
 
+  // Defines `name` with an exact value (no formula round trip), e.g. the input of a sample.
+  void DefineValue(const std::string& name, double value);
+
   bool Has(const std::string& name) const;
   double Value(const std::string& name) const;  // precondition: Has(name)
   const std::vector<std::pair<std::string, double>>& Values() const { return values_; }

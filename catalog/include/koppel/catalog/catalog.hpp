@@ -1,0 +1,53 @@
+// The catalog: every mechanism file with a catalog card in one directory, looked up by id, by
+// access features (Zugriffsmerkmale), by kind and by free text over the titles.
+#pragma once
+
+#include "koppel/catalog/card.hpp"
+#include "koppel/catalog/mechanism_file.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+struct CatalogEntry {
+  MechanismFile file;       // file.card is set
+  AccessFeatures features;  // as declared, completed by the computed ones where not declared
+};
+
+class Catalog {
+ public:
+  // Reads every *.yaml in `directory` (sorted by file name). Bad files throw one InputError
+  // with the diagnostics of all of them; a file without a catalog section is an error too.
+  static Catalog Load(const std::string& directory);
+
+  const std::vector<CatalogEntry>& entries() const { return entries_; }
+  const CatalogEntry* Find(const std::string& id) const;
+
+ private:
+  std::vector<CatalogEntry> entries_;
+};
+
+// An inclusive integer range; "4" or "4..6" (either end may be open: "..6", "4..").
+struct CountRange {
+  int lo = 0;
+  int hi = 1 << 30;
+  bool Contains(int value) const { return value >= lo && value <= hi; }
+  static std::optional<CountRange> Parse(const std::string& text);
+};
+
+struct FeatureQuery {
+  std::optional<CountRange> links, binary, ternary, quaternary, joints, revolute, prismatic;
+  std::optional<CountRange> drives, drives_at_frame, outputs, outputs_at_frame;
+  std::string kind;  // "transfer" or "guidance"; empty: any
+  std::string text;  // case-insensitive substring of id or titles; empty: any
+};
+
+bool Matches(const CatalogEntry& entry, const FeatureQuery& query);
+std::vector<const CatalogEntry*> FindEntries(const Catalog& catalog, const FeatureQuery& query);
+
+// The default catalog directory: $KOPPEL_CATALOG if set, else the one compiled in.
+std::string DefaultCatalogDirectory();
+
+}  // namespace koppel

@@ -1,0 +1,144 @@
+#include "koppel/catalog/catalog.hpp"
+
+#include "koppel/catalog/check.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+
+#ifndef KOPPEL_CATALOG_DIR
+#define KOPPEL_CATALOG_DIR "catalog/entries"
+#endif
+
+namespace koppel {
+namespace {
+
+std::string Lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+// Declared values win (they are what the document lists, and `check` proves them equal to the
+// computed ones); computed values fill what the card leaves out.
+AccessFeatures Merge(const AccessFeatures& declared, const AccessFeatures& computed) {
+  AccessFeatures f = computed;
+  auto take = [](int d, int& c) { if (d >= 0) c = d; };
+  take(declared.drive_joints, f.drive_joints);
+  take(declared.drive_joints_at_frame, f.drive_joints_at_frame);
+  take(declared.output_links, f.output_links);
+  take(declared.output_links_at_frame, f.output_links_at_frame);
+  take(declared.links, f.links);
+  take(declared.joints, f.joints);
+  if (!declared.links_by_degree.empty()) f.links_by_degree = declared.links_by_degree;
+  if (!declared.joints_by_type.empty()) f.joints_by_type = declared.joints_by_type;
+  return f;
+}
+
+int CountOf(const std::map<int, int>& m, int key) {
+  const auto it = m.find(key);
+  return it == m.end() ? 0 : it->second;
+}
+int CountOf(const std::map<std::string, int>& m, const std::string& key) {
+  const auto it = m.find(key);
+  return it == m.end() ? 0 : it->second;
+}
+
+}  // namespace
+
+std::string DefaultCatalogDirectory() {
+  if (const char* env = std::getenv("KOPPEL_CATALOG"); env && *env) return env;
+  return KOPPEL_CATALOG_DIR;
+}
+
+Catalog Catalog::Load(const std::string& directory) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(directory, ec))
+    throw InputError({Diagnostic{directory, 0, 0, "", "catalog directory does not exist"}});
+  std::vector<std::string> paths;
+  for (const auto& item : fs::directory_iterator(directory, ec)) {
+    if (item.is_regular_file() && item.path().extension() == ".yaml") paths.push_back(item.path().string());
+  }
+  std::sort(paths.begin(), paths.end());
+  Catalog catalog;
+  std::vector<Diagnostic> problems;
+  for (const std::string& path : paths) {
+    try {
+      MechanismFile file = ReadMechanismFile(path);
+      if (!file.card) {
+        problems.push_back({path, 1, 1, "catalog", "catalog entry has no 'catalog' section"});
+        continue;
+      }
+      if (catalog.Find(file.id)) {
+        problems.push_back({path, 1, 1, "name", "id '" + file.id + "' is used by another entry"});
+        continue;
+      }
+      const AccessFeatures computed = ComputeFeatures(file.mechanism, file.card->outputs);
+      AccessFeatures merged = Merge(file.card->declared, computed);
+      catalog.entries_.push_back({std::move(file), std::move(merged)});
+    } catch (const InputError& e) {
+      problems.insert(problems.end(), e.diagnostics().begin(), e.diagnostics().end());
+    }
+  }
+  if (!problems.empty()) throw InputError(problems);
+  return catalog;
+}
+
+const CatalogEntry* Catalog::Find(const std::string& id) const {
+  for (const CatalogEntry& e : entries_) {
+    if (e.file.id == id) return &e;
+  }
+  return nullptr;
+}
+
+std::optional<CountRange> CountRange::Parse(const std::string& text) {
+  auto number = [](const std::string& s, int& out) {
+    if (s.empty() || s.size() > 6 || !std::all_of(s.begin(), s.end(), ::isdigit)) return false;
+    out = std::stoi(s);
+    return true;
+  };
+  CountRange r;
+  const auto dots = text.find("..");
+  if (dots == std::string::npos) {
+    if (!number(text, r.lo)) return std::nullopt;
+    r.hi = r.lo;
+    return r;
+  }
+  const std::string lo = text.substr(0, dots), hi = text.substr(dots + 2);
+  if (lo.empty() && hi.empty()) return std::nullopt;
+  if (!lo.empty() && !number(lo, r.lo)) return std::nullopt;
+  if (!hi.empty() && !number(hi, r.hi)) return std::nullopt;
+  if (r.lo > r.hi) return std::nullopt;
+  return r;
+}
+
+bool Matches(const CatalogEntry& entry, const FeatureQuery& q) {
+  const AccessFeatures& f = entry.features;
+  auto ok = [](const std::optional<CountRange>& r, int value) { return !r || r->Contains(value); };
+  if (!ok(q.links, f.links) || !ok(q.joints, f.joints)) return false;
+  if (!ok(q.binary, CountOf(f.links_by_degree, 2)) || !ok(q.ternary, CountOf(f.links_by_degree, 3)) ||
+      !ok(q.quaternary, CountOf(f.links_by_degree, 4)))
+    return false;
+  if (!ok(q.revolute, CountOf(f.joints_by_type, "D")) || !ok(q.prismatic, CountOf(f.joints_by_type, "S"))) return false;
+  if (!ok(q.drives, f.drive_joints) || !ok(q.drives_at_frame, f.drive_joints_at_frame)) return false;
+  if (!ok(q.outputs, f.output_links) || !ok(q.outputs_at_frame, f.output_links_at_frame)) return false;
+  const CatalogCard& card = *entry.file.card;
+  if (!q.kind.empty() && Lower(card.kind) != Lower(q.kind)) return false;
+  if (!q.text.empty()) {
+    const std::string needle = Lower(q.text);
+    const std::string hay = Lower(entry.file.id + "\n" + card.title_de + "\n" + card.title_en + "\n" + entry.file.title);
+    if (hay.find(needle) == std::string::npos) return false;
+  }
+  return true;
+}
+
+std::vector<const CatalogEntry*> FindEntries(const Catalog& catalog, const FeatureQuery& query) {
+  std::vector<const CatalogEntry*> found;
+  for (const CatalogEntry& e : catalog.entries()) {
+    if (Matches(e, query)) found.push_back(&e);
+  }
+  return found;
+}
+
+}  // namespace koppel

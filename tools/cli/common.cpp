@@ -1,0 +1,105 @@
+#include "common.hpp"
+
+#include "koppel/core/expression.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace koppel::cli {
+
+void Complain(const std::string& message) { std::cerr << "koppel: " << message << "\n"; }
+
+MechanismFile LoadMechanism(const std::string& path, const std::vector<std::string>& sets) {
+  try {
+    std::vector<std::pair<std::string, std::string>> overrides;
+    for (const std::string& s : sets) overrides.push_back(ParseAssignment(s));
+    return ReadMechanismFile(path, overrides);
+  } catch (const InputError& e) {
+    for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
+    throw Exit{kExitBadInput};
+  }
+}
+
+double ParseNumberFlag(const std::string& flag, const std::string& text) {
+  ParameterSet empty;
+  std::string error;
+  const std::optional<double> value = empty.Evaluate(text, &error);
+  if (!value) {
+    Complain(flag + ": " + error);
+    throw Exit{kExitBadInput};
+  }
+  return *value;
+}
+
+void WriteOutput(const std::string& path, const std::string& text) {
+  if (path.empty() || path == "-") {
+    std::cout << text;
+    std::cout.flush();
+    return;
+  }
+  // Write beside the target and rename, so a failure never leaves a half-written file.
+  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out) {
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      Complain("cannot write '" + path + "'");
+      throw Exit{kExitBadInput};
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(temporary, path, ec);
+  if (ec) {
+    std::filesystem::remove(temporary, ec);
+    Complain("cannot write '" + path + "'");
+    throw Exit{kExitBadInput};
+  }
+}
+
+std::string FormatNumber(double value) {
+  if (!std::isfinite(value)) throw std::logic_error("koppel: refusing to print a non-finite number");
+  if (value == 0.0) return "0";  // no "-0"
+  return fmt::format("{:.12g}", value);
+}
+
+std::string Table::ToCsv() const {
+  std::string out;
+  for (size_t i = 0; i < columns.size(); ++i) out += (i ? "," : "") + columns[i];
+  out += "\n";
+  for (const auto& row : rows) {
+    for (size_t i = 0; i < row.size(); ++i) out += (i ? "," : "") + FormatNumber(row[i]);
+    out += "\n";
+  }
+  return out;
+}
+
+nlohmann::json Table::ToJson() const {
+  nlohmann::json j;
+  j["columns"] = columns;
+  nlohmann::json rows_json = nlohmann::json::array();
+  for (const auto& row : rows) {
+    for (double v : row) FormatNumber(v);  // the same refusal of non-finite numbers as CSV
+    rows_json.push_back(row);
+  }
+  j["rows"] = rows_json;
+  return j;
+}
+
+void CheckFormat(const std::string& format) {
+  if (format != "csv" && format != "json") {
+    Complain("--format must be csv or json, not '" + format + "'");
+    throw Exit{kExitBadInput};
+  }
+}
+
+}  // namespace koppel::cli

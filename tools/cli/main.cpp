@@ -1,0 +1,31 @@
+// koppel: planar linkages from YAML files. Each subcommand is added by its own file.
+#include "commands.hpp"
+#include "common.hpp"
+
+#include <exception>
+#include <iostream>
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "koppel - planar linkages (ebene Getriebe): position analysis, transfer functions, dead centres,\n"
+      "coupler curves, a catalog of documented mechanisms and synthesis.\n"
+      "Mechanisms are YAML files (see README.md, 'Mechanism files'). Angles are in degrees at the\n"
+      "command line, lengths in the file's unit. Exit codes: 0 ok, 1 a check or solve failed, 2 bad input.",
+      "koppel"};
+  app.require_subcommand(1);
+  app.set_help_all_flag("--help-all", "Print help for every subcommand");
+  koppel::cli::AddAnalyzeCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 returns 0 for --help; usage errors are bad input (2).
+    const int code = app.exit(e);
+    return code == 0 ? 0 : koppel::cli::kExitBadInput;
+  } catch (const koppel::cli::Exit& e) {
+    return e.code;
+  } catch (const std::exception& e) {
+    koppel::cli::Complain(std::string("internal error: ") + e.what());
+    return koppel::cli::kExitFailed;
+  }
+  return koppel::cli::kExitOk;
+}

@@ -2,6 +2,7 @@
 
 #include "koppel/core/angles.hpp"
 #include "koppel/core/expression.hpp"
+#include "koppel/solver/stationary.hpp"
 #include "koppel/solver/sweep.hpp"
 
 #include <cmath>
@@ -14,31 +15,37 @@ namespace {
   throw InputError({Diagnostic{file.path, f.line, 0, "catalog.figures." + f.name, message}});
 }
 
-// Vertex of the parabola through three equally spaced samples: refines a sampled extremum to
-// O(h^3) without another solve. Returns (abscissa offset in steps, value).
-std::pair<double, double> ParabolaVertex(double y0, double y1, double y2) {
-  const double curvature = y0 - 2 * y1 + y2;
-  if (curvature == 0.0) return {0.0, y1};
-  const double t = 0.5 * (y0 - y2) / curvature;
-  return {t, y1 - 0.25 * (y0 - y2) * t};
-}
-
 struct Extremum {
   double input;
   double value;
 };
 
-Extremum FindExtremum(const SweepResult& sweep, int column, bool maximum) {
+// The sampled extreme of a sweep column, refined where it lies inside the range by Newton on
+// the first-order transfer function (stationary.hpp), so figures are exact, not sampled.
+std::optional<Extremum> FindExtremum(const Mechanism& m, const SweepResult& sweep, int output, int component, int column,
+                                     bool maximum, std::string* detail) {
   const int n = static_cast<int>(sweep.inputs.size());
   int best = 0;
   for (int i = 1; i < n; ++i) {
     const double v = sweep.outputs(i, column), b = sweep.outputs(best, column);
     if (maximum ? v > b : v < b) best = i;
   }
-  if (best == 0 || best == n - 1) return {sweep.inputs[best], sweep.outputs(best, column)};
-  const auto [t, v] = ParabolaVertex(sweep.outputs(best - 1, column), sweep.outputs(best, column), sweep.outputs(best + 1, column));
-  const double h = sweep.inputs[best + 1] - sweep.inputs[best];
-  return {sweep.inputs[best] + t * h, v};
+  const Eigen::VectorXd q = sweep.poses.row(best).transpose();
+  const StationaryPoint p = RefineStationary(m, output, component, sweep.inputs[best], q);
+  const bool interior = best > 0 && best < n - 1;
+  if (!p.found) {
+    if (interior) {
+      *detail = p.message;
+      return std::nullopt;
+    }
+    return Extremum{sweep.inputs[best], sweep.outputs(best, column)};  // an end of the range
+  }
+  // a stationary point outside the range (or the wrong kind) leaves the end sample as the extreme
+  const double lo = std::min(sweep.inputs.front(), sweep.inputs.back()), hi = std::max(sweep.inputs.front(), sweep.inputs.back());
+  const bool inside = p.input >= lo - 1e-12 && p.input <= hi + 1e-12;
+  const bool better = maximum ? p.value >= sweep.outputs(best, column) : p.value <= sweep.outputs(best, column);
+  if (inside && better) return Extremum{p.input, p.value};
+  return Extremum{sweep.inputs[best], sweep.outputs(best, column)};
 }
 
 }  // namespace
@@ -78,7 +85,7 @@ CheckOutcome EvaluateFigure(const MechanismFile& file, const CatalogCard& card, 
 
   std::optional<double> value;
   const std::string& q = f.quantity;
-  if (q == "min" || q == "max" || q == "argmin" || q == "argmax" || q == "stroke") {
+  if (q == "min" || q == "max" || q == "argmin" || q == "argmax" || q == "stroke" || q == "phase_ratio") {
     SweepOptions options;
     options.from = input_internal(card.from);
     options.to = input_internal(card.to);
@@ -90,12 +97,23 @@ CheckOutcome EvaluateFigure(const MechanismFile& file, const CatalogCard& card, 
       return out;
     }
     const int column = OutputColumn(m, f.output, f.component, 0, 0);
-    const Extremum lo = FindExtremum(sweep, column, false), hi = FindExtremum(sweep, column, true);
-    if (q == "min") value = in_unit(lo.value);
-    if (q == "max") value = in_unit(hi.value);
-    if (q == "argmin") value = in_unit(lo.input);
-    if (q == "argmax") value = in_unit(hi.input);
-    if (q == "stroke") value = in_unit(hi.value - lo.value);
+    const std::optional<Extremum> lo = FindExtremum(m, sweep, output, f.component, column, false, &out.detail);
+    const std::optional<Extremum> hi = FindExtremum(m, sweep, output, f.component, column, true, &out.detail);
+    if (!lo || !hi) return out;
+    // inputs in degrees for an R drive (the unit of the figure then says deg)
+    if (q == "min") value = in_unit(lo->value);
+    if (q == "max") value = in_unit(hi->value);
+    if (q == "argmin") value = in_unit(lo->input);
+    if (q == "argmax") value = in_unit(hi->input);
+    if (q == "stroke") value = in_unit(hi->value - lo->value);
+    if (q == "phase_ratio") {
+      // crank angle of the forward stroke, from the maximum (extended dead centre of a slider)
+      // to the minimum in the positive sense, and its ratio to the return stroke
+      const double turn = angle_input ? 2 * kPi : 0.0;
+      if (turn == 0.0) Fail(file, f, "a phase ratio needs a rotating drive");
+      const double forward = std::fmod(std::fmod(lo->input - hi->input, turn) + turn, turn);
+      value = forward / (turn - forward);
+    }
   } else if (q == "value" || q == "derivative") {
     const auto at_text = f.args.find("at");
     if (at_text == f.args.end()) Fail(file, f, "quantity '" + q + "' needs 'at'");

@@ -6,5 +6,6 @@
 namespace koppel::cli {
 
 void AddAnalyzeCommand(CLI::App& app);
+void AddCatalogCommand(CLI::App& app);
 
 }  // namespace koppel::cli

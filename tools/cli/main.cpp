@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
   koppel::cli::AddAnalyzeCommand(app);
+  koppel::cli::AddCatalogCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,68 @@
+// Reading mechanism files (YAML, format in README.md "Mechanism files"). Every problem of a
+// file is collected and reported at once, each with file:line:column, the key path and what was
+// expected; yaml-cpp stays inside the catalog's .cpp files.
+#pragma once
+
+#include "koppel/catalog/card.hpp"
+#include "koppel/core/expression.hpp"
+#include "koppel/core/mechanism.hpp"
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace koppel {
+
+// One problem in an input file. line and column are 1-based; 0 when unknown.
+struct Diagnostic {
+  std::string file;
+  int line = 0;
+  int column = 0;
+  std::string path;     // key path, e.g. "joints.A.links[1]"
+  std::string message;
+  // "mech.yaml:12:7: joint 'A' names unknown link 'crank2' (joints.A.links[1])"
+  std::string ToString() const;
+};
+
+// Thrown once per file (or per catalog) with every problem found.
+class InputError : public std::runtime_error {
+ public:
+  explicit InputError(std::vector<Diagnostic> diagnostics);
+  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+
+ private:
+  std::vector<Diagnostic> diagnostics_;
+};
+
+// The default sweep of a file, in the drive's YAML units (degrees for an R drive).
+struct SweepDefaults {
+  double from = 0;
+  double to = 360;
+  double step = 1;
+};
+
+struct MechanismFile {
+  std::string path;
+  std::string id;     // `name`
+  std::string title;  // `title`
+  std::string description;
+  ParameterSet parameters;  // after overrides
+  Mechanism mechanism;      // consistent, angles in radians
+  SweepDefaults sweep;
+  std::optional<CatalogCard> card;  // the `catalog` section, when present
+};
+
+using Overrides = std::vector<std::pair<std::string, std::string>>;
+
+// Reads and checks a mechanism file. `overrides` (NAME -> formula, from --set) replace parameter
+// formulas before evaluation; overriding a name that is not a parameter is an error.
+// Throws InputError.
+MechanismFile ReadMechanismFile(const std::string& path, const Overrides& overrides = {});
+MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides = {});
+
+// "NAME=VALUE" -> {NAME, VALUE}; throws InputError for a malformed argument.
+std::pair<std::string, std::string> ParseAssignment(const std::string& name_eq_value);
+
+}  // namespace koppel

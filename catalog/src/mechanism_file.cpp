@@ -1,0 +1,438 @@
+#include "koppel/catalog/mechanism_file.hpp"
+
+#include "koppel/core/angles.hpp"
+#include "koppel/solver/constraints.hpp"
+#include "yaml_reader.hpp"
+
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+namespace koppel {
+namespace {
+
+bool ValidId(const std::string& id) {
+  if (id.empty()) return false;
+  for (char c : id) {
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_')) return false;
+  }
+  return true;
+}
+
+// Reads one mechanism file into a MechanismFile, collecting diagnostics in `reader`.
+class MechanismReader {
+ public:
+  MechanismReader(YamlReader& reader, MechanismFile& out) : r_(reader), out_(out), m_(out.mechanism) {}
+
+  void Read(const YAML::Node& root, const Overrides& overrides) {
+    if (!r_.ExpectMap(root, "")) return;
+    r_.CheckKeys(root, "", {"koppel", "name", "title", "description", "parameters", "links", "joints", "drive",
+                            "outputs", "assembly", "sweep", "catalog"});
+    if (const YAML::Node v = root["koppel"]; v.IsDefined()) {
+      if (!v.IsScalar() || v.Scalar() != "1") r_.Error(v, "koppel", "unsupported format version (this koppel reads 1)");
+    }
+    if (const YAML::Node name = r_.Require(root, "name", ""); name.IsDefined() && !name.IsNull()) {
+      if (auto id = r_.Text(name, "name")) {
+        if (!ValidId(*id)) r_.Error(name, "name", "the id '" + *id + "' may use only letters, digits, '-' and '_'");
+        out_.id = *id;
+        m_.name = *id;
+      }
+    }
+    if (const YAML::Node t = root["title"]; t.IsDefined()) out_.title = r_.Text(t, "title").value_or("");
+    if (const YAML::Node d = root["description"]; d.IsDefined()) out_.description = r_.Text(d, "description").value_or("");
+    ReadParameters(root["parameters"], overrides);
+    r_.set_parameters(&out_.parameters);
+    ReadLinks(r_.Require(root, "links", ""));
+    ReadJoints(r_.Require(root, "joints", ""));
+    ReadDrive(r_.Require(root, "drive", ""));
+    if (const YAML::Node o = root["outputs"]; o.IsDefined() && !o.IsNull()) ReadOutputs(o);
+    if (const YAML::Node a = root["assembly"]; a.IsDefined() && !a.IsNull()) ReadAssembly(a);
+    if (const YAML::Node s = root["sweep"]; s.IsDefined() && !s.IsNull()) ReadSweep(s);
+  }
+
+ private:
+  void ReadParameters(const YAML::Node& node, const Overrides& overrides) {
+    std::vector<bool> used(overrides.size(), false);
+    if (node.IsDefined() && !node.IsNull()) {
+      for (const YamlReader::Entry& e : r_.Entries(node, "parameters")) {
+        const std::string path = Child("parameters", e.key);
+        if (!ParameterSet::ValidName(e.key)) {
+          r_.Error(e.key_node, path, "'" + e.key + "' cannot be a parameter name (a letter then letters, digits, '_'; not pi or deg)");
+          continue;
+        }
+        std::optional<std::string> formula = e.value.IsScalar() ? std::optional<std::string>(e.value.Scalar()) : std::nullopt;
+        if (!formula) {
+          r_.Error(e.value, path, "expected a number or formula");
+          continue;
+        }
+        for (size_t i = 0; i < overrides.size(); ++i) {
+          if (overrides[i].first == e.key) {
+            formula = overrides[i].second;
+            used[i] = true;
+          }
+        }
+        std::string error;
+        if (!out_.parameters.Define(e.key, *formula, &error)) {
+          // an override's error belongs to the command line; the file's to its line
+          r_.Error(e.value, path, error);
+        }
+      }
+    }
+    for (size_t i = 0; i < overrides.size(); ++i) {
+      if (!used[i]) {
+        r_.diagnostics().push_back({r_.file(), 0, 0, "--set " + overrides[i].first,
+                                    "'" + overrides[i].first + "' is not a parameter of this file"});
+      }
+    }
+  }
+
+  void ReadLinks(const YAML::Node& node) {
+    if (!node.IsDefined() || node.IsNull()) return;
+    for (const YamlReader::Entry& e : r_.Entries(node, "links")) {
+      const std::string path = Child("links", e.key);
+      Link link;
+      link.name = e.key;
+      if (!r_.ExpectMap(e.value, path)) continue;
+      r_.CheckKeys(e.value, path, {"frame", "points"});
+      if (const YAML::Node f = e.value["frame"]; f.IsDefined()) link.is_frame = r_.Flag(f, Child(path, "frame")).value_or(false);
+      const YAML::Node points = r_.Require(e.value, "points", path);
+      if (points.IsDefined() && !points.IsNull()) {
+        for (const YamlReader::Entry& p : r_.Entries(points, Child(path, "points"))) {
+          if (auto v = r_.Vector(p.value, Child(Child(path, "points"), p.key))) link.points.push_back({p.key, *v});
+        }
+      }
+      if (link.is_frame && m_.FrameLink() >= 0) {
+        r_.Error(e.key_node, path, "a second frame link ('" + m_.links[m_.FrameLink()].name + "' is the frame already)");
+        link.is_frame = false;
+      }
+      m_.links.push_back(std::move(link));
+    }
+    if (m_.FrameLink() < 0 && !m_.links.empty()) r_.Error(node, "links", "no link has 'frame: true': a mechanism needs a frame");
+  }
+
+  int LinkIndex(const YAML::Node& node, const std::string& path, const std::string& owner) {
+    const std::optional<std::string> name = r_.Text(node, path);
+    if (!name) return -1;
+    const int index = m_.FindLink(*name);
+    if (index < 0) r_.Error(node, path, owner + " names unknown link '" + *name + "'");
+    return index;
+  }
+
+  int PointIndex(int link, const std::string& point, const YAML::Node& node, const std::string& path, const std::string& owner) {
+    if (link < 0) return -1;
+    const int index = m_.links[link].FindPoint(point);
+    if (index < 0) r_.Error(node, path, owner + ": link '" + m_.links[link].name + "' has no point '" + point + "'");
+    return index;
+  }
+
+  // "link.point" -> PointRef
+  std::optional<PointRef> PointReference(const YAML::Node& node, const std::string& path, const std::string& owner) {
+    const std::optional<std::string> text = r_.Text(node, path);
+    if (!text) return std::nullopt;
+    const auto dot = text->find('.');
+    if (dot == std::string::npos) {
+      r_.Error(node, path, owner + ": expected 'link.point', found '" + *text + "'");
+      return std::nullopt;
+    }
+    const int link = m_.FindLink(text->substr(0, dot));
+    if (link < 0) {
+      r_.Error(node, path, owner + " names unknown link '" + text->substr(0, dot) + "'");
+      return std::nullopt;
+    }
+    const int point = PointIndex(link, text->substr(dot + 1), node, path, owner);
+    if (point < 0) return std::nullopt;
+    return PointRef{link, point};
+  }
+
+  void ReadJoints(const YAML::Node& node) {
+    if (!node.IsDefined() || node.IsNull()) return;
+    for (const YamlReader::Entry& e : r_.Entries(node, "joints")) {
+      const std::string path = Child("joints", e.key);
+      const std::string owner = "joint '" + e.key + "'";
+      if (!r_.ExpectMap(e.value, path)) continue;
+      r_.CheckKeys(e.value, path, {"type", "links", "points", "axis", "angle"});
+      Joint j;
+      j.name = e.key;
+      const YAML::Node type = r_.Require(e.value, "type", path);
+      if (type.IsDefined() && !type.IsNull()) {
+        const std::string t = r_.Text(type, Child(path, "type")).value_or("");
+        if (t == "R" || t == "D" || t == "revolute") {
+          j.type = JointType::kRevolute;
+        } else if (t == "P" || t == "S" || t == "prismatic") {
+          j.type = JointType::kPrismatic;
+        } else {
+          r_.Error(type, Child(path, "type"), owner + " has unknown type '" + t + "' (expected R or P; also D, S, revolute, prismatic)");
+        }
+      }
+      const YAML::Node links = r_.Require(e.value, "links", path);
+      if (links.IsDefined() && !links.IsNull()) {
+        if (!links.IsSequence() || links.size() != 2) {
+          r_.Error(links, Child(path, "links"), owner + ": expected two links [a, b]");
+        } else {
+          j.link_a = LinkIndex(links[0], Index(Child(path, "links"), 0), owner);
+          j.link_b = LinkIndex(links[1], Index(Child(path, "links"), 1), owner);
+          if (j.link_a >= 0 && j.link_a == j.link_b) r_.Error(links, Child(path, "links"), owner + " joins a link to itself");
+        }
+      }
+      std::string point_a = e.key, point_b = e.key;
+      YAML::Node point_node_a = e.key_node, point_node_b = e.key_node;
+      std::string path_a = path, path_b = path;
+      if (const YAML::Node points = e.value["points"]; points.IsDefined()) {
+        if (!points.IsSequence() || points.size() != 2) {
+          r_.Error(points, Child(path, "points"), owner + ": expected two point names [on a, on b]");
+        } else {
+          point_a = r_.Text(points[0], Index(Child(path, "points"), 0)).value_or("");
+          point_b = r_.Text(points[1], Index(Child(path, "points"), 1)).value_or("");
+          point_node_a = points[0];
+          point_node_b = points[1];
+          path_a = Index(Child(path, "points"), 0);
+          path_b = Index(Child(path, "points"), 1);
+        }
+      }
+      j.point_a = PointIndex(j.link_a, point_a, point_node_a, path_a, owner);
+      j.point_b = PointIndex(j.link_b, point_b, point_node_b, path_b, owner);
+      if (const YAML::Node axis = e.value["axis"]; axis.IsDefined()) {
+        if (j.type != JointType::kPrismatic) r_.Error(axis, Child(path, "axis"), owner + ": only a P joint has an axis");
+        if (auto v = r_.Vector(axis, Child(path, "axis"))) {
+          if (v->norm() < 1e-12) {
+            r_.Error(axis, Child(path, "axis"), owner + ": the slide axis must not be zero");
+          } else {
+            j.axis = v->normalized();
+          }
+        }
+      }
+      if (const YAML::Node angle = e.value["angle"]; angle.IsDefined()) {
+        if (j.type != JointType::kPrismatic) r_.Error(angle, Child(path, "angle"), owner + ": only a P joint has an angle");
+        if (auto v = r_.Number(angle, Child(path, "angle"))) j.angle = DegToRad(*v);
+      }
+      m_.joints.push_back(std::move(j));
+    }
+  }
+
+  void ReadDrive(const YAML::Node& node) {
+    if (!node.IsDefined() || node.IsNull() || !r_.ExpectMap(node, "drive")) return;
+    r_.CheckKeys(node, "drive", {"joint", "zero", "name"});
+    const YAML::Node joint = r_.Require(node, "joint", "drive");
+    if (joint.IsDefined() && !joint.IsNull()) {
+      if (auto name = r_.Text(joint, "drive.joint")) {
+        m_.drive.joint = m_.FindJoint(*name);
+        if (m_.drive.joint < 0) r_.Error(joint, "drive.joint", "the drive names unknown joint '" + *name + "'");
+      }
+    }
+    const bool angle = m_.drive.joint >= 0 && m_.joints[m_.drive.joint].type == JointType::kRevolute;
+    m_.drive.input_name = angle ? "phi" : "s_in";
+    if (const YAML::Node z = node["zero"]; z.IsDefined()) {
+      if (auto v = r_.Number(z, "drive.zero")) m_.drive.zero = angle ? DegToRad(*v) : *v;
+    }
+    if (const YAML::Node n = node["name"]; n.IsDefined()) {
+      if (auto v = r_.Text(n, "drive.name")) m_.drive.input_name = *v;
+    }
+  }
+
+  void ReadOutputs(const YAML::Node& node) {
+    for (const YamlReader::Entry& e : r_.Entries(node, "outputs")) {
+      const std::string path = Child("outputs", e.key);
+      const std::string owner = "output '" + e.key + "'";
+      if (!r_.ExpectMap(e.value, path)) continue;
+      r_.CheckKeys(e.value, path, {"joint", "link", "point", "distance", "direction", "transmission", "zero"});
+      Output o;
+      o.name = e.key;
+      int kinds = 0;
+      bool ok = true;
+      if (const YAML::Node v = e.value["joint"]; v.IsDefined()) {
+        ++kinds;
+        o.kind = OutputKind::kJoint;
+        const std::string name = r_.Text(v, Child(path, "joint")).value_or("");
+        o.joint = m_.FindJoint(name);
+        if (o.joint < 0) {
+          r_.Error(v, Child(path, "joint"), owner + " names unknown joint '" + name + "'");
+          ok = false;
+        }
+      }
+      if (const YAML::Node v = e.value["link"]; v.IsDefined()) {
+        ++kinds;
+        o.kind = OutputKind::kLinkAngle;
+        o.link = LinkIndex(v, Child(path, "link"), owner);
+        ok &= o.link >= 0;
+      }
+      if (const YAML::Node v = e.value["point"]; v.IsDefined()) {
+        ++kinds;
+        o.kind = OutputKind::kPoint;
+        const auto p = PointReference(v, Child(path, "point"), owner);
+        ok &= p.has_value();
+        if (p) o.p = *p;
+      }
+      for (const char* key : {"distance", "direction"}) {
+        const YAML::Node v = e.value[key];
+        if (!v.IsDefined()) continue;
+        ++kinds;
+        o.kind = std::string(key) == "distance" ? OutputKind::kDistance : OutputKind::kDirection;
+        if (!v.IsSequence() || v.size() != 2) {
+          r_.Error(v, Child(path, key), owner + ": expected two points [link.point, link.point]");
+          ok = false;
+          continue;
+        }
+        const auto p = PointReference(v[0], Index(Child(path, key), 0), owner);
+        const auto q = PointReference(v[1], Index(Child(path, key), 1), owner);
+        ok &= p.has_value() && q.has_value();
+        if (p) o.p = *p;
+        if (q) o.q = *q;
+      }
+      if (const YAML::Node v = e.value["transmission"]; v.IsDefined()) {
+        ++kinds;
+        o.kind = OutputKind::kTransmissionAngle;
+        const std::string tpath = Child(path, "transmission");
+        if (r_.ExpectMap(v, tpath)) {
+          r_.CheckKeys(v, tpath, {"coupler", "joint"});
+          const YAML::Node c = r_.Require(v, "coupler", tpath), j = r_.Require(v, "joint", tpath);
+          if (c.IsDefined() && !c.IsNull()) o.link = LinkIndex(c, Child(tpath, "coupler"), owner);
+          if (j.IsDefined() && !j.IsNull()) {
+            const std::string name = r_.Text(j, Child(tpath, "joint")).value_or("");
+            o.joint = m_.FindJoint(name);
+            if (o.joint < 0) r_.Error(j, Child(tpath, "joint"), owner + " names unknown joint '" + name + "'");
+          }
+          ok &= o.link >= 0 && o.joint >= 0;
+          if (ok) {
+            TransmissionGeometry geometry;
+            std::string error;
+            if (!ResolveTransmission(m_, o, &geometry, &error)) {
+              r_.Error(v, tpath, owner + ": " + error);
+              ok = false;
+            }
+          }
+        } else {
+          ok = false;
+        }
+      }
+      if (kinds != 1) {
+        r_.Error(e.value, path, owner + ": give exactly one of joint, link, point, distance, direction, transmission");
+        continue;
+      }
+      if (const YAML::Node z = e.value["zero"]; z.IsDefined()) {
+        const bool angle = o.IsAngle() || (o.kind == OutputKind::kJoint && o.joint >= 0 && m_.joints[o.joint].type == JointType::kRevolute);
+        if (!angle || o.kind == OutputKind::kTransmissionAngle) {
+          r_.Error(z, Child(path, "zero"), owner + ": only a joint angle, link angle or direction has a zero");
+        } else if (auto v = r_.Number(z, Child(path, "zero"))) {
+          o.offset = DegToRad(*v);
+        }
+      }
+      if (m_.FindOutput(o.name) >= 0) continue;
+      if (ok) m_.outputs.push_back(std::move(o));
+    }
+  }
+
+  void ReadAssembly(const YAML::Node& node) {
+    if (!r_.ExpectMap(node, "assembly")) return;
+    r_.CheckKeys(node, "assembly", {"input", "points"});
+    const bool angle = m_.InputIsAngle();
+    if (const YAML::Node in = node["input"]; in.IsDefined()) {
+      if (auto v = r_.Number(in, "assembly.input")) m_.hint.input = angle ? DegToRad(*v) : *v;
+    }
+    const YAML::Node points = node["points"];
+    if (!points.IsDefined() || points.IsNull()) return;
+    for (const YamlReader::Entry& e : r_.Entries(points, "assembly.points")) {
+      const std::string path = Child("assembly.points", e.key);
+      const std::optional<Eigen::Vector2d> where = r_.Vector(e.value, path);
+      if (!where) continue;
+      const auto dot = e.key.find('.');
+      if (dot != std::string::npos) {
+        const int link = m_.FindLink(e.key.substr(0, dot));
+        if (link < 0) {
+          r_.Error(e.key_node, path, "assembly hint names unknown link '" + e.key.substr(0, dot) + "'");
+          continue;
+        }
+        const int point = PointIndex(link, e.key.substr(dot + 1), e.key_node, path, "assembly hint");
+        if (point >= 0) m_.hint.points.push_back({{link, point}, *where});
+        continue;
+      }
+      // a bare point name: that point on every link that has it
+      bool found = false;
+      for (int l = 0; l < static_cast<int>(m_.links.size()); ++l) {
+        const int point = m_.links[l].FindPoint(e.key);
+        if (point < 0) continue;
+        found = true;
+        m_.hint.points.push_back({{l, point}, *where});
+      }
+      if (!found) r_.Error(e.key_node, path, "assembly hint: no link has a point '" + e.key + "'");
+    }
+  }
+
+  void ReadSweep(const YAML::Node& node) {
+    if (!r_.ExpectMap(node, "sweep")) return;
+    r_.CheckKeys(node, "sweep", {"from", "to", "step"});
+    if (const YAML::Node v = node["from"]; v.IsDefined()) out_.sweep.from = r_.Number(v, "sweep.from").value_or(out_.sweep.from);
+    if (const YAML::Node v = node["to"]; v.IsDefined()) out_.sweep.to = r_.Number(v, "sweep.to").value_or(out_.sweep.to);
+    if (const YAML::Node v = node["step"]; v.IsDefined()) {
+      out_.sweep.step = r_.Number(v, "sweep.step").value_or(out_.sweep.step);
+      if (out_.sweep.step == 0.0) r_.Error(v, "sweep.step", "the step must not be 0");
+    }
+  }
+
+  YamlReader& r_;
+  MechanismFile& out_;
+  Mechanism& m_;
+};
+
+}  // namespace
+
+std::string Diagnostic::ToString() const {
+  std::string s = file;
+  if (line > 0) s += ":" + std::to_string(line) + (column > 0 ? ":" + std::to_string(column) : "");
+  s += ": " + message;
+  if (!path.empty()) s += " (" + path + ")";
+  return s;
+}
+
+static std::string JoinDiagnostics(const std::vector<Diagnostic>& diagnostics) {
+  std::string s;
+  for (const Diagnostic& d : diagnostics) s += (s.empty() ? "" : "\n") + d.ToString();
+  return s;
+}
+
+InputError::InputError(std::vector<Diagnostic> diagnostics)
+    : std::runtime_error(JoinDiagnostics(diagnostics)), diagnostics_(std::move(diagnostics)) {}
+
+MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides) {
+  MechanismFile out;
+  out.path = file_name;
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw InputError({Diagnostic{file_name, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.is_null() ? 0 : e.mark.column + 1,
+                                 "", "YAML syntax error: " + e.msg}});
+  }
+  YamlReader reader(file_name, &out.parameters);
+  reader.set_fallback(YAML::Mark());  // line 1, column 1 for problems without a place
+  try {
+    MechanismReader(reader, out).Read(root, overrides);
+    if (reader.diagnostics().empty()) {
+      for (const std::string& problem : CheckConsistency(out.mechanism)) reader.diagnostics().push_back({file_name, 1, 1, "", problem});
+    }
+    if (reader.diagnostics().empty() && root.IsMap() && root["catalog"].IsDefined()) {
+      out.card = ReadCard(reader, root["catalog"], out);
+    }
+  } catch (const YAML::Exception& e) {
+    // yaml-cpp throws on conversions we did not guard; report it at its place, never crash
+    reader.Error(e.mark, "", "unreadable value: " + e.msg);
+  }
+  if (!reader.diagnostics().empty()) throw InputError(reader.diagnostics());
+  return out;
+}
+
+MechanismFile ReadMechanismFile(const std::string& path, const Overrides& overrides) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({Diagnostic{path, 0, 0, "", "cannot open file"}});
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return ParseMechanismText(buffer.str(), path, overrides);
+}
+
+std::pair<std::string, std::string> ParseAssignment(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+    throw InputError({Diagnostic{"--set", 0, 0, "", "expected NAME=VALUE, found '" + text + "'"}});
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+}  // namespace koppel

@@ -1,0 +1,173 @@
+#include "yaml_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace koppel {
+namespace {
+
+int EditDistance(const std::string& a, const std::string& b) {
+  std::vector<int> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = static_cast<int>(j);
+  for (size_t i = 1; i <= a.size(); ++i) {
+    int diagonal = row[0];
+    row[0] = static_cast<int>(i);
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const int up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string NodeKind(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Map: return "a map";
+    case YAML::NodeType::Sequence: return "a list";
+    case YAML::NodeType::Scalar: return "'" + node.Scalar() + "'";
+    case YAML::NodeType::Null: return "nothing";
+    default: return "nothing";
+  }
+}
+
+}  // namespace
+
+std::string Child(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+std::string Index(const std::string& path, int index) { return path + "[" + std::to_string(index) + "]"; }
+
+void YamlReader::Error(const YAML::Mark& mark, const std::string& path, const std::string& message) {
+  const YAML::Mark& m = mark.is_null() ? fallback_ : mark;
+  diagnostics_.push_back({file_, m.is_null() ? 0 : m.line + 1, m.is_null() ? 0 : m.column + 1, path, message});
+}
+
+void YamlReader::Error(const YAML::Node& node, const std::string& path, const std::string& message) {
+  Error(node.IsDefined() ? node.Mark() : YAML::Mark::null_mark(), path, message);
+}
+
+bool YamlReader::ExpectMap(const YAML::Node& node, const std::string& path) {
+  if (node.IsMap()) return true;
+  Error(node, path, "expected a map (key: value lines), found " + NodeKind(node));
+  return false;
+}
+
+bool YamlReader::ExpectSequence(const YAML::Node& node, const std::string& path) {
+  if (node.IsSequence()) return true;
+  Error(node, path, "expected a list, found " + NodeKind(node));
+  return false;
+}
+
+std::vector<YamlReader::Entry> YamlReader::Entries(const YAML::Node& map, const std::string& path) {
+  std::vector<Entry> entries;
+  if (!ExpectMap(map, path)) return entries;
+  for (auto it = map.begin(); it != map.end(); ++it) {
+    if (!it->first.IsScalar()) {
+      Error(it->first, path, "a key must be a plain name");
+      continue;
+    }
+    const std::string key = it->first.Scalar();
+    const bool duplicate = std::any_of(entries.begin(), entries.end(), [&](const Entry& e) { return e.key == key; });
+    if (duplicate) {
+      Error(it->first, Child(path, key), "duplicate key '" + key + "'");
+      continue;
+    }
+    entries.push_back({key, it->first, it->second});
+  }
+  return entries;
+}
+
+void YamlReader::CheckKeys(const YAML::Node& map, const std::string& path, std::initializer_list<const char*> allowed) {
+  if (!map.IsMap()) return;
+  for (const Entry& e : Entries(map, path)) {
+    if (std::any_of(allowed.begin(), allowed.end(), [&](const char* a) { return e.key == a; })) continue;
+    std::string message = "unknown key '" + e.key + "'";
+    int best = 3;
+    std::string suggestion;
+    for (const char* a : allowed) {
+      const int d = EditDistance(e.key, a);
+      if (d < best) {
+        best = d;
+        suggestion = a;
+      }
+    }
+    if (!suggestion.empty()) {
+      message += " (did you mean '" + suggestion + "'?)";
+    } else {
+      message += " (expected one of:";
+      for (const char* a : allowed) message += std::string(" ") + a;
+      message += ")";
+    }
+    Error(e.key_node, Child(path, e.key), message);
+  }
+}
+
+YAML::Node YamlReader::Require(const YAML::Node& map, const std::string& key, const std::string& path) {
+  if (!map.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+  const YAML::Node node = map[key];
+  if (!node.IsDefined() || node.IsNull()) Error(map, Child(path, key), "missing required key '" + key + "'");
+  return node;
+}
+
+std::optional<std::string> YamlReader::Text(const YAML::Node& node, const std::string& path) {
+  if (node.IsScalar()) return node.Scalar();
+  Error(node, path, "expected text, found " + NodeKind(node));
+  return std::nullopt;
+}
+
+std::optional<double> YamlReader::Number(const YAML::Node& node, const std::string& path) {
+  static const ParameterSet kNone;
+  return Number(node, path, parameters_ ? *parameters_ : kNone);
+}
+
+std::optional<double> YamlReader::Number(const YAML::Node& node, const std::string& path, const ParameterSet& parameters) {
+  if (!node.IsScalar()) {
+    Error(node, path, "expected a number or formula, found " + NodeKind(node));
+    return std::nullopt;
+  }
+  std::string error;
+  const std::optional<double> value = parameters.Evaluate(node.Scalar(), &error);
+  if (!value) Error(node, path, error);
+  return value;
+}
+
+std::optional<int> YamlReader::Count(const YAML::Node& node, const std::string& path) {
+  const std::optional<double> v = Number(node, path);
+  if (!v) return std::nullopt;
+  if (*v < 0 || *v > 1e6 || std::floor(*v) != *v) {
+    Error(node, path, "expected a whole number >= 0");
+    return std::nullopt;
+  }
+  return static_cast<int>(*v);
+}
+
+std::optional<Eigen::Vector2d> YamlReader::Vector(const YAML::Node& node, const std::string& path) {
+  if (!node.IsSequence() || node.size() != 2) {
+    Error(node, path, "expected a point [x, y], found " + NodeKind(node));
+    return std::nullopt;
+  }
+  const std::optional<double> x = Number(node[0], Index(path, 0));
+  const std::optional<double> y = Number(node[1], Index(path, 1));
+  if (!x || !y) return std::nullopt;
+  return Eigen::Vector2d(*x, *y);
+}
+
+std::optional<bool> YamlReader::Flag(const YAML::Node& node, const std::string& path) {
+  if (node.IsScalar()) {
+    const std::string& s = node.Scalar();
+    if (s == "true" || s == "yes") return true;
+    if (s == "false" || s == "no") return false;
+  }
+  Error(node, path, "expected true or false, found " + NodeKind(node));
+  return std::nullopt;
+}
+
+std::vector<std::string> YamlReader::TextList(const YAML::Node& node, const std::string& path) {
+  std::vector<std::string> out;
+  if (!ExpectSequence(node, path)) return out;
+  for (size_t i = 0; i < node.size(); ++i) {
+    if (auto t = Text(node[i], Index(path, static_cast<int>(i)))) out.push_back(*t);
+  }
+  return out;
+}
+
+}  // namespace koppel

@@ -1,0 +1,70 @@
+// Reading YAML nodes with diagnostics: every accessor reports what is wrong with file, line,
+// column and key path, and returns nullopt instead of throwing, so a file's problems are all
+// collected before one InputError is thrown. Private to the catalog (yaml-cpp stays in here).
+#pragma once
+
+#include "koppel/catalog/mechanism_file.hpp"
+#include "koppel/core/expression.hpp"
+
+#include <Eigen/Core>
+#include <yaml-cpp/yaml.h>
+
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+class YamlReader {
+ public:
+  YamlReader(std::string file, const ParameterSet* parameters) : file_(std::move(file)), parameters_(parameters) {}
+
+  // Reports at the node's position; a missing node (no mark) falls back to `fallback`.
+  void Error(const YAML::Node& node, const std::string& path, const std::string& message);
+  void Error(const YAML::Mark& mark, const std::string& path, const std::string& message);
+
+  bool ExpectMap(const YAML::Node& node, const std::string& path);
+  bool ExpectSequence(const YAML::Node& node, const std::string& path);
+  // Reports keys of `map` not in `allowed` (suggesting the nearest allowed key) and duplicates.
+  void CheckKeys(const YAML::Node& map, const std::string& path, std::initializer_list<const char*> allowed);
+  // A required key: reports it missing (at the map) and returns an invalid node.
+  YAML::Node Require(const YAML::Node& map, const std::string& key, const std::string& path);
+
+  std::optional<std::string> Text(const YAML::Node& node, const std::string& path);
+  // A number or a formula over the parameters.
+  std::optional<double> Number(const YAML::Node& node, const std::string& path);
+  std::optional<double> Number(const YAML::Node& node, const std::string& path, const ParameterSet& parameters);
+  std::optional<int> Count(const YAML::Node& node, const std::string& path);  // whole number >= 0
+  std::optional<Eigen::Vector2d> Vector(const YAML::Node& node, const std::string& path);
+  std::optional<bool> Flag(const YAML::Node& node, const std::string& path);
+  std::vector<std::string> TextList(const YAML::Node& node, const std::string& path);
+
+  // The node's key order (yaml-cpp keeps document order) as (key text, key node, value node).
+  struct Entry {
+    std::string key;
+    YAML::Node key_node;
+    YAML::Node value;
+  };
+  std::vector<Entry> Entries(const YAML::Node& map, const std::string& path);
+
+  const std::string& file() const { return file_; }
+  std::vector<Diagnostic>& diagnostics() { return diagnostics_; }
+  void set_parameters(const ParameterSet* parameters) { parameters_ = parameters; }
+  void set_fallback(const YAML::Mark& mark) { fallback_ = mark; }
+
+ private:
+  std::string file_;
+  const ParameterSet* parameters_;
+  std::vector<Diagnostic> diagnostics_;
+  YAML::Mark fallback_ = YAML::Mark::null_mark();
+};
+
+// Joins a key path: Child("joints", "A") = "joints.A"; Index("links", 1) = "links[1]".
+std::string Child(const std::string& path, const std::string& key);
+std::string Index(const std::string& path, int index);
+
+// Parses the `catalog` section of a mechanism file (card_reader.cpp).
+std::optional<CatalogCard> ReadCard(YamlReader& reader, const YAML::Node& node, const MechanismFile& file);
+
+}  // namespace koppel

@@ -1,0 +1,38 @@
+// Stationary points of an output (where its first-order transfer function vanishes): the
+// dead centres (Totlagen) of an output, and the extremes of any output over the input.
+// Newton on y'(input) = 0 with y'' from the exact Taylor series, moving along the assembly
+// branch by continuation.
+#pragma once
+
+#include "koppel/core/mechanism.hpp"
+
+#include <Eigen/Core>
+
+#include <string>
+
+namespace koppel {
+
+struct StationaryPoint {
+  bool found = false;
+  double input = 0.0;        // radians (R drive) or length (P drive)
+  double value = 0.0;        // the output there
+  double second = 0.0;       // y'' there: < 0 a maximum, > 0 a minimum
+  int iterations = 0;
+  Eigen::VectorXd q;         // the pose there
+  std::string message;       // why not found
+};
+
+struct StationaryOptions {
+  // |y'| small enough relative to |y''| that the input is within this of the root [rad or length]
+  double input_tolerance = 1e-12;
+  int max_iterations = 40;
+  // Largest Newton step in the input: keeps the search near the sample it started from.
+  double max_step = 0.1;
+};
+
+// Refines a stationary point of output `output` (component 0/1 for points) starting from a
+// converged pose q at `input` (e.g. a sweep sample next to a sign change of y').
+StationaryPoint RefineStationary(const Mechanism& mechanism, int output, int component, double input,
+                                 const Eigen::VectorXd& q, const StationaryOptions& options = {});
+
+}  // namespace koppel

@@ -1,0 +1,151 @@
+// `catalog check`: every entry proves itself; mutated copies of real entries show that the
+// checks can fail — a wrong declared feature, the printed (OCR) formula instead of the
+// corrected one, a wrong sign — and that malformed cards are rejected with their line.
+#include "koppel/catalog/check.hpp"
+
+#include "support/temp_file.hpp"
+
+#include <catch2/catch.hpp>
+
+namespace koppel {
+namespace {
+
+// Replaces the first occurrence of `from` (which must exist) in `text`.
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  const auto pos = text.find(from);
+  REQUIRE(pos != std::string::npos);
+  return text.replace(pos, from.size(), to);
+}
+
+// 1-based line of the first occurrence of `needle`.
+int LineOf(const std::string& text, const std::string& needle) {
+  const auto pos = text.find(needle);
+  REQUIRE(pos != std::string::npos);
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
+}
+
+const CheckOutcome& Find(const EntryReport& r, const std::string& name_part, const std::string& variant = "") {
+  for (const CheckOutcome& c : r.checks) {
+    if (c.name.find(name_part) != std::string::npos && (variant.empty() || c.variant == variant)) return c;
+  }
+  FAIL("no check named like '" << name_part << "'");
+  throw std::logic_error("unreachable");
+}
+
+std::string Messages(const InputError& e) {
+  std::string all;
+  for (const Diagnostic& d : e.diagnostics()) all += d.ToString() + "\n";
+  return all;
+}
+
+}  // namespace
+
+TEST_CASE("every catalog entry passes its own checks", "[catalog][check]") {
+  for (const std::string id : {"slider-crank-offset", "proportional-linkage", "mzc-crank-rocker"}) {
+    const EntryReport r = CheckEntry(test::CatalogEntryPath(id));
+    INFO(id);
+    for (const CheckOutcome& c : r.checks) {
+      INFO(c.variant << " " << c.name << ": worst " << c.worst << " tol " << c.tolerance << " " << c.detail);
+      CHECK((c.passed || c.pending));
+    }
+    CHECK(r.passed());
+  }
+}
+
+TEST_CASE("computed access features equal the documents' Zugriffsmerkmale", "[catalog][check]") {
+  const MechanismFile f = ReadMechanismFile(test::CatalogEntryPath("proportional-linkage"));
+  const AccessFeatures c = ComputeFeatures(f.mechanism, {"s"});
+  // seed 001: 6 links (4 binary, 2 ternary), 7 joints (4 D, 3 S), 1 drive at the frame, 1 output at the frame
+  CHECK(c.links == 6);
+  CHECK(c.links_by_degree.at(2) == 4);
+  CHECK(c.links_by_degree.at(3) == 2);
+  CHECK(c.joints == 7);
+  CHECK(c.joints_by_type.at("D") == 4);
+  CHECK(c.joints_by_type.at("S") == 3);
+  CHECK(c.drive_joints_at_frame == 1);
+  CHECK(c.output_links_at_frame == 1);
+  CHECK(CompareFeatures(f.card->declared, c).empty());
+}
+
+TEST_CASE("a declared feature that differs from the graph makes check fail", "[catalog][check]") {
+  test::TempDir dir;
+  const std::string text = test::ReadText(test::CatalogEntryPath("proportional-linkage"));
+  const std::string path = dir.Write("p.yaml", Replace(text, "links_by_degree: {binary: 4, ternary: 2}", "links_by_degree: {binary: 5, ternary: 1}"));
+  const EntryReport r = CheckEntry(path);
+  const CheckOutcome& features = Find(r, "access features");
+  CHECK_FALSE(features.passed);
+  CHECK_THAT(features.detail, Catch::Contains("ternary links: declared 1, computed 2"));
+  CHECK_FALSE(r.passed());
+}
+
+TEST_CASE("check passes only with the corrected phi_i, not the printed 2/3 pi", "[catalog][check]") {
+  test::TempDir dir;
+  const std::string text = test::ReadText(test::CatalogEntryPath("slider-crank-offset"));
+  const std::string path = dir.Write("s.yaml", Replace(text, "expected: 270 + asin((e/l2)/(1 - l1/l2))/deg", "expected: 120 + asin((e/l2)/(1 - l1/l2))/deg"));
+  const EntryReport r = CheckEntry(path);
+  const CheckOutcome& phi_i = Find(r, "phi_i", "e=0.8");
+  CHECK_FALSE(phi_i.passed);
+  CHECK_THAT(phi_i.value, Catch::Matchers::WithinAbs(300.0, 1e-8));  // asin(0.8/1.6) = 30 deg exactly
+  CHECK(phi_i.worst > 100.0);
+}
+
+TEST_CASE("a deliberately wrong equation makes check fail at the right place", "[catalog][check]") {
+  test::TempDir dir;
+  const std::string text = test::ReadText(test::CatalogEntryPath("slider-crank-offset"));
+  // the sign of the lambda term of s'' flipped
+  const std::string path = dir.Write("s.yaml", Replace(text, "-l1*(sin(phi + psi)/cos_psi + lambda*sin(phi)^2/cos_psi^3)",
+                                                      "-l1*(sin(phi + psi)/cos_psi - lambda*sin(phi)^2/cos_psi^3)"));
+  const EntryReport r = CheckEntry(path);
+  const CheckOutcome& s2 = Find(r, "s''/l1 = -[sin(phi + psi)", "e=0.8");
+  CHECK_FALSE(s2.passed);
+  CHECK(s2.worst > 0.1);
+  CHECK_FALSE(r.passed());
+}
+
+TEST_CASE("malformed catalog cards are rejected with their line", "[catalog][check]") {
+  test::TempDir dir;
+  const std::string text = test::ReadText(test::CatalogEntryPath("slider-crank-offset"));
+
+  SECTION("a missing access feature") {
+    const std::string bad = Replace(text, "    links: 4\n", "");
+    try {
+      ReadMechanismFile(dir.Write("a.yaml", bad));
+      FAIL("accepted a card without 'links'");
+    } catch (const InputError& e) {
+      CHECK_THAT(Messages(e), Catch::Contains("missing access feature 'links'"));
+      CHECK(e.diagnostics().at(0).line == LineOf(bad, "  features:") + 1);
+    }
+  }
+  SECTION("a formula naming an unknown parameter") {
+    const std::string bad = Replace(text, "formula: l1*cos(phi + psi)/cos_psi", "formula: l7*cos(phi + psi)/cos_psi");
+    try {
+      ReadMechanismFile(dir.Write("b.yaml", bad));
+      FAIL("accepted an unknown parameter");
+    } catch (const InputError& e) {
+      CHECK_THAT(Messages(e), Catch::Contains("l7"));
+      CHECK(e.diagnostics().at(0).line == LineOf(bad, "l7*cos"));
+    }
+  }
+  SECTION("an output the file does not declare") {
+    const std::string bad = Replace(text, "  outputs: [s]", "  outputs: [stroke]");
+    try {
+      ReadMechanismFile(dir.Write("c.yaml", bad));
+      FAIL("accepted an undeclared output");
+    } catch (const InputError& e) {
+      CHECK_THAT(Messages(e), Catch::Contains("does not declare"));
+      CHECK(e.diagnostics().at(0).line == LineOf(bad, "  outputs: [stroke]"));
+    }
+  }
+  SECTION("an unknown card key") {
+    const std::string bad = Replace(text, "  motion:", "  motoin:");
+    try {
+      ReadMechanismFile(dir.Write("d.yaml", bad));
+      FAIL("accepted an unknown key");
+    } catch (const InputError& e) {
+      CHECK_THAT(Messages(e), Catch::Contains("did you mean 'motion'"));
+      CHECK(e.diagnostics().at(0).line == LineOf(bad, "motoin"));
+    }
+  }
+}
+
+}  // namespace koppel

@@ -292,7 +292,8 @@ class MechanismReader {
             if (o.joint < 0) r_.Error(j, Child(tpath, "joint"), owner + " names unknown joint '" + name + "'");
           }
           ok &= o.link >= 0 && o.joint >= 0;
-          if (ok) {
+          // the coupler's joints are only meaningful once the rest of the file is sound
+          if (ok && r_.diagnostics().empty() && CheckConsistency(m_).empty()) {
             TransmissionGeometry geometry;
             std::string error;
             if (!ResolveTransmission(m_, o, &geometry, &error)) {

@@ -1,0 +1,47 @@
+#include "support/closed_forms.hpp"
+
+#include <cmath>
+
+namespace koppel::test {
+
+SliderCrankValues SliderCrank(double l1, double l2, double e, double phi) {
+  const double lambda = l1 / l2, eps = e / l2;
+  const double sin_psi = -lambda * std::cos(phi) - eps;
+  const double cos_psi = std::sqrt(1.0 - sin_psi * sin_psi);
+  const double psi = std::atan2(sin_psi, cos_psi);
+  SliderCrankValues v;
+  v.s = l1 * (std::sin(phi) + cos_psi / lambda);
+  v.s1 = l1 * std::cos(phi + psi) / cos_psi;
+  v.s2 = -l1 * (std::sin(phi + psi) / cos_psi + lambda * std::pow(std::sin(phi), 2) / std::pow(cos_psi, 3));
+  v.mu = M_PI / 2 - std::abs(psi);
+  return v;
+}
+
+double SliderCrankPhiA(double l1, double l2, double e) { return M_PI / 2 + std::asin((e / l2) / (1 + l1 / l2)); }
+double SliderCrankPhiI(double l1, double l2, double e) { return 3 * M_PI / 2 + std::asin((e / l2) / (1 - l1 / l2)); }
+
+double ProportionalS(double l6, double l1, double h, double phi) {
+  const double lambda = l1 / l6;
+  return l1 * h / l6 * std::sin(phi) / (1 - lambda * std::cos(phi));
+}
+
+ProportionalValues Proportional(double l6, double l1, double h, double phi) {
+  const double lambda = l1 / l6, c = l1 * h / l6, d = 1 - lambda * std::cos(phi);
+  return {c * std::sin(phi) / d, c * (std::cos(phi) - lambda) / (d * d),
+          -c * std::sin(phi) * (1 - 2 * lambda * lambda + lambda * std::cos(phi)) / (d * d * d)};
+}
+
+Eigen::Vector2d FourBarCouplerPoint(double l1, double l2, double l3, double l4, double k, double kappa, double phi, int side) {
+  const Eigen::Vector2d a(l1 * std::cos(phi), l1 * std::sin(phi)), b0(l4, 0.0);
+  const Eigen::Vector2d ab0 = b0 - a;
+  const double d = ab0.norm();
+  const double along = (l2 * l2 - l3 * l3 + d * d) / (2 * d);
+  const double across = std::sqrt(l2 * l2 - along * along);
+  const Eigen::Vector2d u = ab0 / d, n(-u.y(), u.x());
+  const Eigen::Vector2d b = a + along * u + side * across * n;
+  const Eigen::Vector2d w = (b - a).normalized();
+  const Eigen::Vector2d turned(std::cos(kappa) * w.x() - std::sin(kappa) * w.y(), std::sin(kappa) * w.x() + std::cos(kappa) * w.y());
+  return a + k * turned;
+}
+
+}  // namespace koppel::test

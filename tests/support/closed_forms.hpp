@@ -1,0 +1,36 @@
+// Closed-form references for the tests, each citing its source. Angles in radians.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace koppel::test {
+
+// Seed 000 (Ebene Schubkurbel mit einstellbarer Versetzung), "Übertragungsfunktionen":
+// lambda = l1/l2, eps = e/l2, sin psi = -lambda cos phi - eps, cos psi = +sqrt(1 - (...)^2),
+// s/l1 = sin phi + cos psi/lambda, s'/l1 = cos(phi + psi)/cos psi,
+// s''/l1 = -[sin(phi + psi)/cos psi + lambda sin^2 phi / cos^3 psi], mu = pi/2 - |psi|.
+// Convention (catalog/entries/slider-crank-offset.yaml): A0 = (0, -e), A = A0 + l1 (sin phi, -cos phi).
+struct SliderCrankValues {
+  double s, s1, s2, mu;
+};
+SliderCrankValues SliderCrank(double l1, double l2, double e, double phi);
+// Dead centres (seed 000, "Totlagen-Größen", phi_i with the corrected 3/2 pi):
+double SliderCrankPhiA(double l1, double l2, double e);  // pi/2 + asin(eps/(1 + lambda))
+double SliderCrankPhiI(double l1, double l2, double e);  // 3 pi/2 + asin(eps/(1 - lambda))
+
+// Seed 001 (Proportionalgetriebe), "Übertragungsfunktionen": lambda = l1/l6, c = l1 h/l6,
+// s = c sin phi/(1 - lambda cos phi), s' = c (cos phi - lambda)/(1 - lambda cos phi)^2,
+// s'' = -c sin phi (1 - 2 lambda^2 + lambda cos phi)/(1 - lambda cos phi)^3.
+struct ProportionalValues {
+  double s, s1, s2;
+};
+ProportionalValues Proportional(double l6, double l1, double h, double phi);
+// s itself, for high-order finite differences of the closed form.
+double ProportionalS(double l6, double l1, double h, double phi);
+
+// An independent four-bar model (seed 003 dimensions): A0 = 0, B0 = (l4, 0),
+// A = l1 (cos phi, sin phi); B the intersection of circle(A, l2) and circle(B0, l3) to the left
+// (side = +1) or right (side = -1) of A -> B0; K = A + k R(kappa) (B - A)/|B - A|.
+Eigen::Vector2d FourBarCouplerPoint(double l1, double l2, double l3, double l4, double k, double kappa, double phi, int side);
+
+}  // namespace koppel::test

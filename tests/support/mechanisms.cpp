@@ -1,0 +1,146 @@
+#include "support/mechanisms.hpp"
+
+#include <cmath>
+
+namespace koppel::test {
+namespace {
+
+Joint Revolute(const Mechanism& m, const std::string& name, const std::string& a, const std::string& b) {
+  Joint j;
+  j.name = name;
+  j.type = JointType::kRevolute;
+  j.link_a = m.FindLink(a);
+  j.link_b = m.FindLink(b);
+  j.point_a = m.links[j.link_a].FindPoint(name);
+  j.point_b = m.links[j.link_b].FindPoint(name);
+  return j;
+}
+
+Joint Prismatic(const Mechanism& m, const std::string& name, const std::string& guide, const std::string& on_guide,
+                const std::string& block, const std::string& on_block, Eigen::Vector2d axis) {
+  Joint j;
+  j.name = name;
+  j.type = JointType::kPrismatic;
+  j.link_a = m.FindLink(guide);
+  j.link_b = m.FindLink(block);
+  j.point_a = m.links[j.link_a].FindPoint(on_guide);
+  j.point_b = m.links[j.link_b].FindPoint(on_block);
+  j.axis = axis.normalized();
+  return j;
+}
+
+Output JointOutput(const Mechanism& m, const std::string& name, const std::string& joint) {
+  Output o;
+  o.name = name;
+  o.kind = OutputKind::kJoint;
+  o.joint = m.FindJoint(joint);
+  return o;
+}
+
+void Hint(Mechanism& m, const std::string& link, const std::string& point, Eigen::Vector2d where) {
+  const int l = m.FindLink(link);
+  m.hint.points.push_back({{l, m.links[l].FindPoint(point)}, where});
+}
+
+}  // namespace
+
+Mechanism SliderCrank(double l1, double l2, double e) {
+  Mechanism m;
+  m.name = "slider-crank";
+  m.links = {{"frame", true, {{"A0", {0, -e}}, {"F", {0, 0}}}},
+             {"crank", false, {{"A0", {0, 0}}, {"A", {0, -l1}}}},
+             {"coupler", false, {{"A", {0, 0}}, {"B", {l2, 0}}}},
+             {"slider", false, {{"B", {0, 0}}}}};
+  m.joints = {Revolute(m, "A0", "frame", "crank"), Revolute(m, "A", "crank", "coupler"), Revolute(m, "B", "coupler", "slider"),
+              Prismatic(m, "S", "frame", "F", "slider", "B", {1, 0})};
+  m.drive.joint = 0;
+  Output mu;
+  mu.name = "mu";
+  mu.kind = OutputKind::kTransmissionAngle;
+  mu.link = 2;
+  mu.joint = 2;
+  m.outputs = {JointOutput(m, "s", "S"), mu};
+  Hint(m, "slider", "B", {l1 + l2, 0});
+  return m;
+}
+
+Mechanism ProportionalLinkage(double l6, double l1, double h) {
+  Mechanism m;
+  m.name = "proportional-linkage";
+  m.links = {{"frame", true, {{"A0", {0, 0}}, {"B0", {l6, 0}}, {"G", {l6 - h, 0}}}},
+             {"crank", false, {{"A0", {0, 0}}, {"A", {l1, 0}}}},
+             {"block2", false, {{"A", {0, 0}}}},
+             {"slot", false, {{"B0", {0, 0}}}},
+             {"block4", false, {{"D", {0, 0}}}},
+             {"slider", false, {{"D", {0, 0}}}}};
+  m.joints = {Revolute(m, "A0", "frame", "crank"),
+              Revolute(m, "A", "crank", "block2"),
+              Prismatic(m, "S23", "slot", "B0", "block2", "A", {1, 0}),
+              Revolute(m, "B0", "frame", "slot"),
+              Prismatic(m, "S34", "slot", "B0", "block4", "D", {1, 0}),
+              Revolute(m, "D", "block4", "slider"),
+              Prismatic(m, "S50", "frame", "G", "slider", "D", {0, 1})};
+  m.drive.joint = 0;
+  m.outputs = {JointOutput(m, "s", "S50")};
+  Hint(m, "slider", "D", {l6 - h, 0});
+  return m;
+}
+
+Mechanism FourBar(double l1, double l2, double l3, double l4, double k, double kappa, int side, bool drive_at_rocker) {
+  Mechanism m;
+  m.name = "four-bar";
+  m.links = {{"frame", true, {{"A0", {0, 0}}, {"B0", {l4, 0}}}},
+             {"crank", false, {{"A0", {0, 0}}, {"A", {l1, 0}}}},
+             {"coupler", false, {{"A", {0, 0}}, {"B", {l2, 0}}, {"K", {k * std::cos(kappa), k * std::sin(kappa)}}}},
+             {"rocker", false, {{"B0", {0, 0}}, {"B", {l3, 0}}}}};
+  m.joints = {Revolute(m, "A0", "frame", "crank"), Revolute(m, "A", "crank", "coupler"), Revolute(m, "B", "coupler", "rocker"),
+              Revolute(m, "B0", "frame", "rocker")};
+  m.drive.joint = drive_at_rocker ? 3 : 0;
+  Output k_out;
+  k_out.name = "K";
+  k_out.kind = OutputKind::kPoint;
+  k_out.p = {2, 2};
+  Output psi;
+  psi.name = "psi";
+  psi.kind = OutputKind::kLinkAngle;
+  psi.link = 3;
+  m.outputs = {k_out, psi, JointOutput(m, "phi", "A0")};
+  if (!drive_at_rocker) {
+    Output mu;
+    mu.name = "mu";
+    mu.kind = OutputKind::kTransmissionAngle;
+    mu.link = 2;
+    mu.joint = 2;
+    m.outputs.push_back(mu);
+  }
+  // at input 0 the crank points along +x: B lies roughly above/below the middle of A B0
+  const double mid = 0.5 * (l1 + l4);
+  const double height = std::sqrt(std::max(l2 * l2 - std::pow(0.5 * (l4 - l1), 2), 0.25));
+  Hint(m, "coupler", "B", {mid, side * height});
+  return m;
+}
+
+Mechanism WattSixBar() {
+  Mechanism m;
+  m.name = "watt-six-bar";
+  m.links = {{"frame", true, {{"A0", {0, 0}}, {"B0", {4, 0}}, {"D0", {7, 1}}}},
+             {"crank", false, {{"A0", {0, 0}}, {"A", {1, 0}}}},
+             {"coupler", false, {{"A", {0, 0}}, {"B", {4, 0}}}},
+             {"rocker", false, {{"B0", {0, 0}}, {"B", {3.5, 0}}, {"C", {2.5, 1.0}}}},
+             {"link5", false, {{"C", {0, 0}}, {"D", {3.0, 0}}}},
+             {"link6", false, {{"D0", {0, 0}}, {"D", {2.5, 0}}}}};
+  m.joints = {Revolute(m, "A0", "frame", "crank"), Revolute(m, "A", "crank", "coupler"), Revolute(m, "B", "coupler", "rocker"),
+              Revolute(m, "B0", "frame", "rocker"), Revolute(m, "C", "rocker", "link5"), Revolute(m, "D", "link5", "link6"),
+              Revolute(m, "D0", "frame", "link6")};
+  m.drive.joint = 0;
+  Output chi;
+  chi.name = "chi";
+  chi.kind = OutputKind::kLinkAngle;
+  chi.link = 5;
+  m.outputs = {chi};
+  Hint(m, "rocker", "B", {3, 3});
+  Hint(m, "link6", "D", {7, 3.5});
+  return m;
+}
+
+}  // namespace koppel::test

@@ -1,0 +1,103 @@
+// `koppel analyze` end to end: the catalog files print their tables, the columns are the
+// interface scripts rely on, bad input exits 2 with file:line, a stopped sweep exits 1.
+#include "support/run.hpp"
+#include "support/temp_file.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <sstream>
+
+namespace koppel {
+namespace {
+
+std::vector<std::string> Lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<double> Numbers(const std::string& line) {
+  std::vector<double> v;
+  std::istringstream in(line);
+  for (std::string cell; std::getline(in, cell, ',');) v.push_back(std::stod(cell));
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("analyze prints the documented columns for the three catalog files", "[cli]") {
+  const test::RunResult sc = test::RunKoppel("analyze " + test::CatalogEntryPath("slider-crank-offset"));
+  REQUIRE(sc.exit_code == 0);
+  const auto lines = Lines(sc.out);
+  REQUIRE(lines.size() == 362);  // header + 0..360 step 1
+  CHECK(lines[0] == "phi,s,s_d1,s_d2,mu,mu_d1,mu_d2");
+  // row phi = 0 (e = 0.8): s = l1 (sin 0 + cos psi / lambda), sin psi = -(lambda + eps) (seed 000)
+  const auto row0 = Numbers(lines[1]);
+  CHECK(row0[0] == 0.0);
+  CHECK(row0[1] == Approx(2.6 * std::sqrt(1 - std::pow(1.8 / 2.6, 2))).epsilon(1e-11));
+  // mu printed in degrees: mu(0) = 90 - asin(1.8/2.6) in degrees
+  CHECK(row0[4] == Approx(90 - std::asin(1.8 / 2.6) * 180 / M_PI).epsilon(1e-11));
+
+  const test::RunResult k = test::RunKoppel("analyze " + test::CatalogEntryPath("mzc-crank-rocker") + " --step 90 --order 3");
+  REQUIRE(k.exit_code == 0);
+  CHECK(Lines(k.out)[0].rfind("phi,K_x,K_x_d1,K_x_d2,K_x_d3,K_y,K_y_d1,K_y_d2,K_y_d3,", 0) == 0);
+  const test::RunResult p = test::RunKoppel("analyze " + test::CatalogEntryPath("proportional-linkage") + " --from 180 --to 180");
+  REQUIRE(p.exit_code == 0);
+  const auto prow = Numbers(Lines(p.out).at(1));
+  CHECK(prow[1] == Approx(0.0).margin(1e-12));  // s(180) = 0
+  CHECK(prow[2] == Approx(0.5 * 1.83 * (-1 - 0.5) / (1.5 * 1.5)).epsilon(1e-11));  // s'(180), seed 001
+}
+
+TEST_CASE("analyze --set, --format json and -o", "[cli]") {
+  test::TempDir dir;
+  const std::string out = (dir.path() / "t.json").string();
+  const test::RunResult r = test::RunKoppel("analyze " + test::CatalogEntryPath("slider-crank-offset") +
+                                            " --set e=0 --from 90 --to 90 --format json -o " + out);
+  REQUIRE(r.exit_code == 0);
+  const std::string json = test::ReadText(out);
+  CHECK_THAT(json, Catch::Contains("\"complete\": true"));
+  CHECK_THAT(json, Catch::Contains("\"unit\": \"deg\""));
+  CHECK_THAT(json, Catch::Contains("3.6"));  // e = 0, phi = 90 deg: s = l1 + l2 (extended)
+}
+
+TEST_CASE("analyze: bad input exits 2 naming file and line; nothing is written", "[cli]") {
+  test::TempDir dir;
+  std::string text = test::ReadText(test::CatalogEntryPath("slider-crank-offset"));
+  text.replace(text.find("{type: R, links: [crank, coupler]}"), 34, "{type: X, links: [crank, coupler]}");
+  const std::string bad = dir.Write("bad.yaml", text);
+  const std::string out = (dir.path() / "never.csv").string();
+  const test::RunResult r = test::RunKoppel("analyze " + bad + " -o " + out);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.err, Catch::Contains("bad.yaml:") && Catch::Contains("unknown type 'X'"));
+  CHECK(r.out.empty());
+  CHECK_FALSE(std::filesystem::exists(out));
+  CHECK(test::RunKoppel("analyze " + test::CatalogEntryPath("slider-crank-offset") + " --set nope=1").exit_code == 2);
+  CHECK(test::RunKoppel("analyze " + test::CatalogEntryPath("slider-crank-offset") + " --step 0").exit_code == 2);
+  CHECK(test::RunKoppel("analyze " + test::CatalogEntryPath("slider-crank-offset") + " --from 1/0").exit_code == 2);
+  CHECK(test::RunKoppel("analyze /nonexistent.yaml").exit_code == 2);
+  CHECK(test::RunKoppel("analyze").exit_code == 2);  // missing argument: usage error
+}
+
+TEST_CASE("analyze: a sweep through a dead centre of the drive stops with exit 1 and says where", "[cli]") {
+  test::TempDir dir;
+  std::string text = test::ReadText(test::CatalogEntryPath("mzc-crank-rocker"));
+  // drive the rocker instead of the crank; assemble at rocker angle 110 deg with B above A0B0
+  text.replace(text.find("  joint: A0\n"), 12, "  joint: B0\n");
+  text.replace(text.find("  input: 180\n"), 13, "  input: 110\n");
+  const std::string file = dir.Write("rocker.yaml", text);
+  const test::RunResult r = test::RunKoppel("analyze " + file + " --from 110 --to 180");
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.err, Catch::Contains("singular") && Catch::Contains("133.0795"));
+  CHECK(Lines(r.out).size() == 25);  // header + 110 .. 133 deg: the rows that exist, no NaN
+  CHECK(r.out.find("nan") == std::string::npos);
+}
+
+TEST_CASE("--help teaches", "[cli]") {
+  const test::RunResult r = test::RunKoppel("analyze --help");
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.out, Catch::Contains("NAME_d1") && Catch::Contains("degrees") && Catch::Contains("Example"));
+}
+
+}  // namespace koppel

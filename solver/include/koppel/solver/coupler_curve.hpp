@@ -1,0 +1,61 @@
+// Coupler curves (Koppelkurven) of any point of any link, with arc length and curvature, and
+// the straight-line analysis of seed 003 (Geradführung): the tolerance band of a stretch
+// measured against the tangent g at a reference point K_I, Q_G = Δy/L, and for a given Q_G the
+// longest stretch that contains K_I.
+#pragma once
+
+#include "koppel/core/mechanism.hpp"
+#include "koppel/solver/position.hpp"
+#include "koppel/solver/sweep.hpp"
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+struct CouplerCurve {
+  SolveStatus status = SolveStatus::kConverged;
+  std::string message;
+  std::vector<double> inputs;
+  std::vector<Eigen::Vector2d> points;       // global position
+  std::vector<Eigen::Vector2d> d1, d2;       // d/dinput, d2/dinput2
+  std::vector<double> arc_length;            // from the first sample, along the curve
+  std::vector<double> curvature;             // signed, 1/length; 0 where the point stands still
+};
+
+// Traces `point` over the sweep. Arc length integrates |dK/dinput| over each interval by
+// 3-point Gauss on the cubic Hermite interpolant of the exact positions and derivatives.
+CouplerCurve TraceCurve(const Mechanism& mechanism, const PointRef& point, const SweepOptions& range);
+
+struct StraightStretch {
+  bool found = false;
+  std::string message;
+  double reference = 0;                // input of K_I
+  Eigen::Vector2d reference_point = Eigen::Vector2d::Zero();
+  Eigen::Vector2d tangent = Eigen::Vector2d::UnitX();  // unit direction of g
+  double phi_a = 0, phi_e = 0;         // start and end of the stretch (inputs)
+  double phi_g = 0;                    // phi_e - phi_a
+  double length = 0;                   // L: extent of the stretch along g
+  double band = 0;                     // Δy: width of the band parallel to g that holds the stretch
+  double qg = 0;                       // band / length
+};
+
+// Band of a given stretch [from, to] against the tangent at `reference`.
+StraightStretch StretchBand(const Mechanism& mechanism, const PointRef& point, double reference, double from, double to,
+                            double resolution);
+
+// The longest stretch around `reference` (default: the input of least |curvature| over the
+// range) with Q_G <= qg, searched over [reference - half_range, reference + half_range] at
+// `resolution` (inputs in radians for R drives). Q_G is not monotonic in the end point, so every
+// end point is tried, not only the first crossing.
+StraightStretch LongestStraightStretch(const Mechanism& mechanism, const PointRef& point, double qg,
+                                       std::optional<double> reference, double half_range, double resolution);
+
+// The input of least |curvature| on a traced curve (the best reference point for straight-line
+// guidance); -1 index when the curve is empty.
+int FlattestSample(const CouplerCurve& curve);
+
+}  // namespace koppel

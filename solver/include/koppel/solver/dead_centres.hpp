@@ -1,0 +1,47 @@
+// Dead centres (Totlagen) of a scalar output: the inputs where its first-order transfer
+// function vanishes, found along a sweep (sign changes of y') and refined by Newton on y' with
+// y'' to 1e-12. Where the drive link (crank) and the link it drives (coupler) line up, the dead
+// centre is classified extended (Strecklage, äußere Totlage) or folded (Decklage, innere).
+#pragma once
+
+#include "koppel/core/mechanism.hpp"
+#include "koppel/solver/position.hpp"
+#include "koppel/solver/sweep.hpp"
+
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+enum class DeadCentreKind { kExtended, kFolded, kUnclassified };
+const char* ToString(DeadCentreKind kind);
+
+struct DeadCentre {
+  double input = 0;   // radians (R drive) or length
+  double value = 0;   // output there (radians for angle outputs)
+  double second = 0;  // y'' there: < 0 a maximum, > 0 a minimum
+  DeadCentreKind kind = DeadCentreKind::kUnclassified;
+};
+
+struct DeadCentreReport {
+  SolveStatus status = SolveStatus::kConverged;
+  std::string message;
+  std::vector<DeadCentre> points;  // in input order
+  // For an output with one extended and one folded dead centre per turn (the classic crank
+  // mechanisms; otherwise the maximum and minimum stand in for them): phi_a, phi_i, s_a, s_i,
+  // stroke s_H = |s_a - s_i|, the crank angle of the forward stroke phi_H from phi_a to phi_i in
+  // the positive sense, and the phase ratio phi_H / (2 pi - phi_H).
+  bool has_stroke = false;
+  bool classified = false;  // phi_a / phi_i from the crank–coupler line-up, not from max/min
+  double phi_a = 0, phi_i = 0, s_a = 0, s_i = 0, stroke = 0, phi_h = 0, phase_ratio = 0;
+};
+
+// Sweeps `range` (its step sets the search resolution) and refines every dead centre of output
+// `output` (component 0/1 for a point).
+DeadCentreReport FindDeadCentres(const Mechanism& mechanism, int output, int component, const SweepOptions& range);
+
+// The crank–coupler line-up at pose q: kExtended, kFolded, or kUnclassified when the mechanism
+// has no crank (binary drive link) with a coupler joined by R joints, or they are not aligned.
+DeadCentreKind ClassifyLineUp(const Mechanism& mechanism, const Eigen::VectorXd& q);
+
+}  // namespace koppel

@@ -1,0 +1,34 @@
+// Proportionality deviation (seed 001, "Antriebsbezogene Proportionalitätsabweichung"): over an
+// input range phi_P, how far an output s departs from proportionality to the input.
+//
+// Reference line: the tangent of s at the reference input (by default the flattest point of s',
+// i.e. the least |s''| in the range: the Flachpunkt). Δs is the width of the band parallel to
+// that line that holds s over the range (max - min of s - tangent). This is the definition that
+// reproduces the document's reading example (112.5..247.5 deg: Δs = 0.018, Q_P = 1.5e-2); the
+// deviation from the chord (0.0050) or from the best minimax line (0.0030) do not.
+// Q_P = (Δs / l) / phi_P with phi_P in radians and l the reference length.
+#pragma once
+
+#include "koppel/core/mechanism.hpp"
+#include "koppel/solver/position.hpp"
+
+#include <optional>
+#include <string>
+
+namespace koppel {
+
+struct Proportionality {
+  bool ok = false;
+  std::string message;
+  double reference = 0;   // input of the tangent point
+  double slope = 0;       // s' there
+  double delta_s = 0;     // band width about the tangent
+  double chord_deviation = 0;    // max |s - chord through the end points|, for comparison
+  double phi_p = 0;       // range in radians (or length)
+  double qp = 0;          // (delta_s / reference_length) / phi_p
+};
+
+Proportionality ProportionalityDeviation(const Mechanism& mechanism, int output, double from, double to, double reference_length,
+                                         std::optional<double> reference, double resolution);
+
+}  // namespace koppel

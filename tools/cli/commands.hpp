@@ -7,5 +7,9 @@ namespace koppel::cli {
 
 void AddAnalyzeCommand(CLI::App& app);
 void AddCatalogCommand(CLI::App& app);
+void AddDeadCentresCommand(CLI::App& app);
+void AddCurveCommand(CLI::App& app);
+void AddProportionalCommand(CLI::App& app);
+void AddCognatesCommand(CLI::App& app);
 
 }  // namespace koppel::cli

@@ -95,6 +95,57 @@ nlohmann::json Table::ToJson() const {
   return j;
 }
 
+PointRef ResolvePoint(const Mechanism& m, const std::string& text) {
+  const int output = m.FindOutput(text);
+  if (output >= 0 && m.outputs[output].kind == OutputKind::kPoint) return m.outputs[output].p;
+  const auto dot = text.find('.');
+  if (dot != std::string::npos) {
+    const int link = m.FindLink(text.substr(0, dot));
+    if (link >= 0) {
+      const int point = m.links[link].FindPoint(text.substr(dot + 1));
+      if (point >= 0) return {link, point};
+    }
+  } else {
+    std::vector<PointRef> found;
+    for (int l = 0; l < static_cast<int>(m.links.size()); ++l) {
+      if (const int p = m.links[l].FindPoint(text); p >= 0) found.push_back({l, p});
+    }
+    if (found.size() == 1) return found[0];
+    if (found.size() > 1) {
+      std::string links;
+      for (const PointRef& r : found) links += " " + m.links[r.link].name + "." + text;
+      Complain("point '" + text + "' is on several links; name one:" + links);
+      throw Exit{kExitBadInput};
+    }
+  }
+  Complain("no point '" + text + "' (give a point output, link.point, or a point name)");
+  throw Exit{kExitBadInput};
+}
+
+int ResolveScalarOutput(const Mechanism& m, const std::string& name) {
+  for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
+    if (m.outputs[o].Components() != 1) continue;
+    if (name.empty() || m.outputs[o].name == name) return o;
+  }
+  Complain(name.empty() ? "the mechanism declares no scalar output" : "no scalar output '" + name + "'");
+  throw Exit{kExitBadInput};
+}
+
+std::string Summary::ToCsv() const {
+  std::string out = "quantity,value,unit\n";
+  for (size_t i = 0; i < quantity.size(); ++i) out += quantity[i] + "," + FormatNumber(value[i]) + "," + unit[i] + "\n";
+  return out;
+}
+
+nlohmann::json Summary::ToJson() const {
+  nlohmann::json j = nlohmann::json::object();
+  for (size_t i = 0; i < quantity.size(); ++i) {
+    FormatNumber(value[i]);
+    j[quantity[i]] = {{"value", value[i]}, {"unit", unit[i]}};
+  }
+  return j;
+}
+
 void CheckFormat(const std::string& format) {
   if (format != "csv" && format != "json") {
     Complain("--format must be csv or json, not '" + format + "'");

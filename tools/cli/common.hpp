@@ -46,6 +46,26 @@ struct Table {
 // Prints "koppel: message" on stderr.
 void Complain(const std::string& message);
 
+// A point of the mechanism named on the command line: a point output (`K`), `link.point`, or a
+// point name that only one link has. Exit{2} with the candidates otherwise.
+PointRef ResolvePoint(const Mechanism& mechanism, const std::string& text);
+
+// A scalar output by name; empty: the first scalar output. Exit{2} otherwise.
+int ResolveScalarOutput(const Mechanism& mechanism, const std::string& name);
+
+// A one-column-of-names table for summaries: quantity, value, unit.
+struct Summary {
+  std::vector<std::string> quantity, unit;
+  std::vector<double> value;
+  void Add(const std::string& q, double v, const std::string& u) {
+    quantity.push_back(q);
+    value.push_back(v);
+    unit.push_back(u);
+  }
+  std::string ToCsv() const;
+  nlohmann::json ToJson() const;  // {"quantity": {"value": v, "unit": u}, ...}
+};
+
 // Validates --format: "csv" or "json". Exit{2} otherwise.
 void CheckFormat(const std::string& format);
 

@@ -16,6 +16,10 @@ int main(int argc, char** argv) {
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
   koppel::cli::AddAnalyzeCommand(app);
   koppel::cli::AddCatalogCommand(app);
+  koppel::cli::AddDeadCentresCommand(app);
+  koppel::cli::AddCurveCommand(app);
+  koppel::cli::AddProportionalCommand(app);
+  koppel::cli::AddCognatesCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

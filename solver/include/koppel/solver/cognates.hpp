@@ -1,0 +1,43 @@
+// Cognates (Ersatzgetriebe, Satz von Roberts–Chebyshev): the two other four-bars whose coupler
+// point traces the same coupler curve as a given four-bar A0 A B B0 with coupler point K.
+//
+// With the coupler point written K = A + r (B - A) (r complex: |r| = AK/AB, arg r = angle BAK),
+// the third frame pivot is C0 = A0 + r (B0 - A0): triangle A0 B0 C0 is similar to A B K.
+//   cognate 1 (pivots A0, C0): crank A0 A1 = r (B - A), coupler A1 K = A - A0 with
+//     A1 C1 = r (A - A0), rocker C0 C1 = r (B - B0); its coupler turns with the original crank.
+//   cognate 2 (pivots C0, B0): crank C0 C2 = (1 - r)(A - A0) turns with the original crank,
+//     coupler B2 K = B - B0 with B2 C2 = (1 - r)(B - B0), rocker B0 B2 = (r - 1)(B - A).
+// Each cognate is built at the original's assembled pose, with an assembly hint there, so it
+// starts on the branch that traces the same curve. Cognate 2 is driven at C0 with its input
+// equal to the original's crank angle; cognate 1 at A0 (its input follows the original coupler).
+#pragma once
+
+#include "koppel/core/mechanism.hpp"
+
+#include <string>
+
+namespace koppel {
+
+struct FourBarJoints {
+  int frame = -1, crank = -1, coupler = -1, rocker = -1;
+  int a0 = -1, a = -1, b = -1, b0 = -1;  // joints
+};
+
+// Recognises a four-bar of R joints driven at a frame joint; false and *error otherwise.
+bool IdentifyFourBar(const Mechanism& m, FourBarJoints* joints, std::string* error);
+
+struct Cognates {
+  bool ok = false;
+  std::string message;
+  Mechanism first;   // pivots A0, C0
+  Mechanism second;  // pivots C0, B0
+  double frame_first = 0, crank_first = 0, coupler_first = 0, rocker_first = 0;  // A0C0, A0A1, A1C1, C0C1
+  double k_first = 0, l_first = 0;                                                // A1K, C1K
+  double frame_second = 0, crank_second = 0, coupler_second = 0, rocker_second = 0;  // C0B0, C0C2, C2B2, B0B2
+  double k_second = 0, l_second = 0;                                                  // B2K, C2K
+};
+
+// `point` is the coupler point (on the coupler link). Assembles the original at its hint.
+Cognates RobertsCognates(const Mechanism& m, const PointRef& point);
+
+}  // namespace koppel

@@ -1,0 +1,169 @@
+#include "koppel/solver/cognates.hpp"
+
+#include "koppel/solver/position.hpp"
+
+#include <cmath>
+#include <complex>
+
+namespace koppel {
+namespace {
+
+using Complex = std::complex<double>;
+
+Complex Z(const Eigen::Vector2d& v) { return {v.x(), v.y()}; }
+Eigen::Vector2d V(Complex z) { return {z.real(), z.imag()}; }
+
+// A binary link with its body frame at `from`, x along `from -> to`, and extra points.
+Link LinkAlong(const std::string& name, const std::string& from_name, Complex from, const std::string& to_name, Complex to,
+               const std::vector<std::pair<std::string, Complex>>& extra = {}) {
+  const Complex axis = (to - from) / std::abs(to - from);
+  Link link;
+  link.name = name;
+  link.points.push_back({from_name, Eigen::Vector2d::Zero()});
+  link.points.push_back({to_name, Eigen::Vector2d(std::abs(to - from), 0.0)});
+  for (const auto& [n, z] : extra) link.points.push_back({n, V((z - from) / axis)});
+  return link;
+}
+
+Joint Pin(const Mechanism& m, const std::string& name, int a, int b) {
+  Joint j;
+  j.name = name;
+  j.link_a = a;
+  j.link_b = b;
+  j.point_a = m.links[a].FindPoint(name);
+  j.point_b = m.links[b].FindPoint(name);
+  return j;
+}
+
+// Frame, crank, coupler (with K), rocker, pinned in a loop; drive at the crank's frame pivot.
+Mechanism BuildFourBar(const std::string& name, const std::string& p0, Complex z0, const std::string& p1, Complex z1,
+                       const std::string& p2, Complex z2, const std::string& p3, Complex z3, Complex k, double input) {
+  Mechanism m;
+  m.name = name;
+  Link frame;
+  frame.name = "frame";
+  frame.is_frame = true;
+  frame.points = {{p0, V(z0)}, {p3, V(z3)}};
+  m.links = {frame, LinkAlong("crank", p0, z0, p1, z1), LinkAlong("coupler", p1, z1, p2, z2, {{"K", k}}),
+             LinkAlong("rocker", p3, z3, p2, z2)};
+  m.joints = {Pin(m, p0, 0, 1), Pin(m, p1, 1, 2), Pin(m, p2, 2, 3), Pin(m, p3, 0, 3)};
+  m.drive.joint = 0;
+  // joint angle = crank direction; the input reads `input` at this pose
+  m.drive.zero = std::arg(z1 - z0) - input;
+  m.drive.input_name = "phi";
+  Output out;
+  out.name = "K";
+  out.kind = OutputKind::kPoint;
+  out.p = {2, 2};
+  m.outputs = {out};
+  m.hint.input = input;
+  for (int l = 1; l <= 3; ++l) {
+    for (int p = 0; p < static_cast<int>(m.links[l].points.size()); ++p) {
+      const std::string& pn = m.links[l].points[p].name;
+      const Complex z = pn == p1 ? z1 : pn == p2 ? z2 : pn == "K" ? k : (pn == p0 ? z0 : z3);
+      m.hint.points.push_back({{l, p}, V(z)});
+    }
+  }
+  return m;
+}
+
+}  // namespace
+
+bool IdentifyFourBar(const Mechanism& m, FourBarJoints* f, std::string* error) {
+  if (m.links.size() != 4 || m.joints.size() != 4) {
+    *error = "cognates need a four-bar: 4 links and 4 joints";
+    return false;
+  }
+  for (const Joint& j : m.joints) {
+    if (j.type != JointType::kRevolute) {
+      *error = "cognates need a four-bar of revolute joints (joint '" + j.name + "' is prismatic)";
+      return false;
+    }
+  }
+  f->frame = m.FrameLink();
+  f->a0 = m.drive.joint;
+  const Joint& drive = m.joints[f->a0];
+  if (drive.link_a != f->frame && drive.link_b != f->frame) {
+    *error = "the drive must be a frame joint (the crank's pivot)";
+    return false;
+  }
+  f->crank = drive.link_a == f->frame ? drive.link_b : drive.link_a;
+  auto other_joint = [&](int link, int joint) {
+    for (int k = 0; k < 4; ++k) {
+      if (k != joint && (m.joints[k].link_a == link || m.joints[k].link_b == link)) return k;
+    }
+    return -1;
+  };
+  auto other_link = [&](int joint, int link) { return m.joints[joint].link_a == link ? m.joints[joint].link_b : m.joints[joint].link_a; };
+  f->a = other_joint(f->crank, f->a0);
+  f->coupler = other_link(f->a, f->crank);
+  f->b = other_joint(f->coupler, f->a);
+  f->rocker = other_link(f->b, f->coupler);
+  f->b0 = other_joint(f->rocker, f->b);
+  if (f->b0 < 0 || other_link(f->b0, f->rocker) != f->frame) {
+    *error = "the links do not form one loop frame-crank-coupler-rocker";
+    return false;
+  }
+  return true;
+}
+
+Cognates RobertsCognates(const Mechanism& m, const PointRef& point) {
+  Cognates c;
+  FourBarJoints f;
+  if (!IdentifyFourBar(m, &f, &c.message)) return c;
+  if (point.link != f.coupler) {
+    c.message = "the point must lie on the coupler '" + m.links[f.coupler].name + "'";
+    return c;
+  }
+  PositionSolver solver(m);
+  Eigen::VectorXd q(solver.NumCoordinates());
+  const SolveReport assembled = solver.Assemble(q);
+  if (!assembled.ok()) {
+    c.message = "cannot assemble the original: " + assembled.message;
+    return c;
+  }
+  auto at = [&](int joint, int link) {
+    const Joint& j = m.joints[joint];
+    const PointRef ref = j.link_a == link ? PointRef{j.link_a, j.point_a} : PointRef{j.link_b, j.point_b};
+    double xy[2];
+    solver.system().GlobalPoint(ref, q.data(), xy);
+    return Complex(xy[0], xy[1]);
+  };
+  const Complex a0 = at(f.a0, f.crank), a = at(f.a, f.crank), b = at(f.b, f.coupler), b0 = at(f.b0, f.rocker);
+  double xy[2];
+  solver.system().GlobalPoint(point, q.data(), xy);
+  const Complex k(xy[0], xy[1]);
+  if (std::abs(b - a) == 0) {
+    c.message = "the coupler joints coincide";
+    return c;
+  }
+  const Complex r = (k - a) / (b - a);
+  const Complex c0 = a0 + r * (b0 - a0);
+  const Complex a1 = a0 + r * (b - a), c1 = a1 + r * (a - a0);
+  const Complex c2 = c0 + (1.0 - r) * (a - a0), b2 = b0 + (r - 1.0) * (b - a);
+  if (std::abs(1.0 - r) < 1e-12 || std::abs(r) < 1e-12) {
+    c.message = "the coupler point coincides with a coupler joint: its cognates degenerate";
+    return c;
+  }
+  const double input = m.hint.input;
+  // cognate 1's crank turns with the original coupler: its input is that coupler's direction
+  c.first = BuildFourBar(m.name + "-cognate-1", "A0", a0, "A1", a1, "C1", c1, "C0", c0, k, std::arg(a1 - a0));
+  // cognate 2's crank turns with the original crank: the same input as the original
+  c.second = BuildFourBar(m.name + "-cognate-2", "C0", c0, "C2", c2, "B2", b2, "B0", b0, k, input);
+  c.frame_first = std::abs(c0 - a0);
+  c.crank_first = std::abs(a1 - a0);
+  c.coupler_first = std::abs(c1 - a1);
+  c.rocker_first = std::abs(c1 - c0);
+  c.k_first = std::abs(k - a1);
+  c.l_first = std::abs(k - c1);
+  c.frame_second = std::abs(b0 - c0);
+  c.crank_second = std::abs(c2 - c0);
+  c.coupler_second = std::abs(b2 - c2);
+  c.rocker_second = std::abs(b2 - b0);
+  c.k_second = std::abs(k - b2);
+  c.l_second = std::abs(k - c2);
+  c.ok = true;
+  return c;
+}
+
+}  // namespace koppel

@@ -1,0 +1,134 @@
+// koppel curve: the coupler curve of a point, with arc length and curvature; --straight adds
+// the straight-line analysis (Geradführung) of seed 003.
+#include "commands.hpp"
+#include "common.hpp"
+
+#include "koppel/core/angles.hpp"
+#include "koppel/solver/coupler_curve.hpp"
+
+namespace koppel::cli {
+namespace {
+
+struct Args {
+  std::string file, point, from, to, step, at, qg = "0.005", stretch, resolution = "0.02";
+  std::vector<std::string> sets;
+  bool straight = false;
+  std::string format = "csv", out;
+};
+
+void Run(const Args& args) {
+  CheckFormat(args.format);
+  const MechanismFile file = LoadMechanism(args.file, args.sets);
+  const Mechanism& m = file.mechanism;
+  const PointRef point = ResolvePoint(m, args.point);
+  const bool angle = m.InputIsAngle();
+  auto in = [&](double v) { return angle ? DegToRad(v) : v; };
+  auto shown = [&](double v) { return angle ? RadToDeg(v) : v; };
+  const std::string unit = angle ? "deg" : "length";
+  if (!args.straight) {
+    SweepOptions range;
+    range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
+    range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
+    range.step = in(args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step));
+    if (range.step == 0) {
+      Complain("--step must not be 0");
+      throw Exit{kExitBadInput};
+    }
+    const CouplerCurve c = TraceCurve(m, point, range);
+    Table t;
+    t.columns = {m.drive.input_name, "x", "y", "dx", "dy", "arc", "curvature"};
+    for (size_t i = 0; i < c.inputs.size(); ++i)
+      t.rows.push_back({shown(c.inputs[i]), c.points[i].x(), c.points[i].y(), c.d1[i].x(), c.d1[i].y(), c.arc_length[i], c.curvature[i]});
+    if (args.format == "json") {
+      nlohmann::json j = t.ToJson();
+      j["mechanism"] = m.name;
+      j["point"] = m.links[point.link].name + "." + m.links[point.link].points[point.point].name;
+      j["complete"] = c.message.empty();
+      if (!c.message.empty()) j["message"] = c.message;
+      WriteOutput(args.out, j.dump(1) + "\n");
+    } else {
+      WriteOutput(args.out, t.ToCsv());
+    }
+    if (!c.message.empty()) {
+      Complain(args.file + ": " + c.message);
+      throw Exit{kExitFailed};
+    }
+    return;
+  }
+  if (!angle) {
+    Complain("--straight needs a rotating drive (an R joint)");
+    throw Exit{kExitBadInput};
+  }
+  const double resolution = DegToRad(ParseNumberFlag("--resolution", args.resolution));
+  if (resolution <= 0) {
+    Complain("--resolution must be positive");
+    throw Exit{kExitBadInput};
+  }
+  std::optional<double> reference;
+  if (!args.at.empty()) reference = DegToRad(ParseNumberFlag("--at", args.at));
+  StraightStretch s;
+  if (!args.stretch.empty()) {
+    const auto colon = args.stretch.find(':');
+    if (colon == std::string::npos || !reference) {
+      Complain("--stretch A:E needs the form A:E (degrees) and a reference point --at");
+      throw Exit{kExitBadInput};
+    }
+    s = StretchBand(m, point, *reference, DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(0, colon))),
+                    DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(colon + 1))), resolution);
+  } else {
+    const double qg = ParseNumberFlag("--qg", args.qg);
+    if (qg <= 0) {
+      Complain("--qg must be positive");
+      throw Exit{kExitBadInput};
+    }
+    s = LongestStraightStretch(m, point, qg, reference, kPi, resolution);
+  }
+  if (!s.found) {
+    Complain(args.file + ": " + s.message);
+    throw Exit{kExitFailed};
+  }
+  Summary sum;
+  sum.Add(m.drive.input_name + "_I", RadToDeg(s.reference), "deg");
+  sum.Add("K_I_x", s.reference_point.x(), "length");
+  sum.Add("K_I_y", s.reference_point.y(), "length");
+  sum.Add("tangent_angle", RadToDeg(std::atan2(s.tangent.y(), s.tangent.x())), "deg");
+  sum.Add(m.drive.input_name + "_A", RadToDeg(s.phi_a), "deg");
+  sum.Add(m.drive.input_name + "_E", RadToDeg(s.phi_e), "deg");
+  sum.Add(m.drive.input_name + "_G", RadToDeg(s.phi_g), "deg");
+  sum.Add("L", s.length, "length");
+  sum.Add("delta_y", s.band, "length");
+  sum.Add("Q_G", s.qg, "1");
+  WriteOutput(args.out, args.format == "json" ? sum.ToJson().dump(1) + "\n" : sum.ToCsv());
+}
+
+}  // namespace
+
+void AddCurveCommand(CLI::App& app) {
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "curve",
+      "The coupler curve (Koppelkurve) of a point: x, y, dx/dinput, dy/dinput, arc length from the first row, and\n"
+      "the signed curvature, over the sweep.\n"
+      "--straight: straight-line guidance (Geradführung) as in the Meyer zur Capellen description. The tangent g at the\n"
+      "reference point K_I (--at, default: the point of least curvature); Δy is the width of the band parallel to g that\n"
+      "holds the stretch K_A..K_E, L its extent along g, Q_G = Δy/L. With --qg the longest stretch through K_I with\n"
+      "Q_G <= qg (every end point is tried: Q_G is not monotonic); with --stretch A:E the band of that stretch.\n"
+      "Prints phi_I, K_I, the tangent's angle, phi_A, phi_E, phi_G = phi_E - phi_A, L, delta_y, Q_G.\n"
+      "Example: koppel curve catalog/entries/mzc-crank-rocker.yaml --point K --straight --qg 0.005 --at 180");
+  cmd->add_option("file", args->file, "Mechanism YAML file")->required();
+  cmd->add_option("--point", args->point, "The point: a point output (K), link.point, or a point name")->required();
+  cmd->add_option("--from", args->from, "First input (default: the file's sweep)");
+  cmd->add_option("--to", args->to, "Last input (default: the file's sweep)");
+  cmd->add_option("--step", args->step, "Input step (default: the file's sweep)");
+  cmd->add_flag("--straight", args->straight, "Straight-line analysis instead of the curve table");
+  cmd->add_option("--qg", args->qg, "Allowed Q_G = delta_y/L for --straight (default 0.005)");
+  cmd->add_option("--at", args->at, "Input of the reference point K_I [deg] (default: least curvature)");
+  cmd->add_option("--stretch", args->stretch, "A:E — measure this stretch [deg] instead of searching");
+  cmd->add_option("--resolution", args->resolution, "Input resolution of the search [deg] (default 0.02)");
+  cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
+  cmd->add_option("--format", args->format, "csv (default) or json");
+  cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout");
+  cmd->callback([args] { Run(*args); });
+}
+
+}  // namespace koppel::cli

@@ -1,0 +1,91 @@
+// koppel proportional: proportionality deviation of an output over an input range (seed 001).
+#include "commands.hpp"
+#include "common.hpp"
+
+#include "koppel/core/angles.hpp"
+#include "koppel/solver/proportionality.hpp"
+
+namespace koppel::cli {
+namespace {
+
+struct Args {
+  std::string file, output, from, to, at, length, resolution = "0.05";
+  std::vector<std::string> sets;
+  std::string format = "csv", out;
+};
+
+// The crank length: the distance between the drive link's two joint points (l1 of the seeds).
+double CrankLength(const Mechanism& m) {
+  const Joint& drive = m.joints[m.drive.joint];
+  const int crank = m.links[drive.link_a].is_frame ? drive.link_b : drive.link_a;
+  const int pivot = drive.link_a == crank ? drive.point_a : drive.point_b;
+  for (const Joint& j : m.joints) {
+    if (&j == &drive || (j.link_a != crank && j.link_b != crank)) continue;
+    const int p = j.link_a == crank ? j.point_a : j.point_b;
+    return (m.links[crank].points[p].local - m.links[crank].points[pivot].local).norm();
+  }
+  return 0.0;
+}
+
+void Run(const Args& args) {
+  CheckFormat(args.format);
+  const MechanismFile file = LoadMechanism(args.file, args.sets);
+  const Mechanism& m = file.mechanism;
+  const int output = ResolveScalarOutput(m, args.output);
+  const bool angle = m.InputIsAngle();
+  auto in = [&](double v) { return angle ? DegToRad(v) : v; };
+  const double from = in(ParseNumberFlag("--from", args.from)), to = in(ParseNumberFlag("--to", args.to));
+  const double length = args.length.empty() ? CrankLength(m) : ParseNumberFlag("--length", args.length);
+  if (length <= 0 || from == to) {
+    Complain(length <= 0 ? "no reference length: give --length" : "--from and --to must differ");
+    throw Exit{kExitBadInput};
+  }
+  std::optional<double> at;
+  if (!args.at.empty()) at = in(ParseNumberFlag("--at", args.at));
+  const Proportionality p = ProportionalityDeviation(m, output, from, to, length, at, in(ParseNumberFlag("--resolution", args.resolution)));
+  if (!p.ok) {
+    Complain(args.file + ": " + p.message);
+    throw Exit{kExitFailed};
+  }
+  const std::string unit = angle ? "deg" : "length";
+  auto shown = [&](double v) { return angle ? RadToDeg(v) : v; };
+  Summary s;
+  s.Add("from", shown(from), unit);
+  s.Add("to", shown(to), unit);
+  s.Add("phi_P", shown(p.phi_p), unit);
+  s.Add("reference", shown(p.reference), unit);
+  s.Add("slope", p.slope, angle ? "length/rad" : "1");
+  s.Add("delta_s", p.delta_s, "length");
+  s.Add("reference_length", length, "length");
+  s.Add("Q_P", p.qp, angle ? "1/rad" : "1/length");
+  s.Add("chord_deviation", p.chord_deviation, "length");
+  WriteOutput(args.out, args.format == "json" ? s.ToJson().dump(1) + "\n" : s.ToCsv());
+}
+
+}  // namespace
+
+void AddProportionalCommand(CLI::App& app) {
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "proportional",
+      "Proportionality deviation (Proportionalitätsabweichung) of an output over an input range phi_P.\n"
+      "The ideal proportional line is the tangent of the output at the reference input (--at, default: the\n"
+      "flat point, least |s''| in the range); delta_s is the width of the band parallel to it that holds the\n"
+      "output over the range; Q_P = (delta_s / l) / phi_P with phi_P in radians and l the reference length\n"
+      "(--length, default the crank length l1). This definition reproduces the proportional linkage's reading\n"
+      "example; the chord deviation is printed for comparison.\n"
+      "Example: koppel proportional catalog/entries/proportional-linkage.yaml --output s --from 112.5 --to 247.5");
+  cmd->add_option("file", args->file, "Mechanism YAML file")->required();
+  cmd->add_option("--output", args->output, "Scalar output (default: the first)");
+  cmd->add_option("--from", args->from, "Start of the range [deg or length]")->required();
+  cmd->add_option("--to", args->to, "End of the range [deg or length]")->required();
+  cmd->add_option("--at", args->at, "Reference input of the tangent (default: the flat point)");
+  cmd->add_option("--length", args->length, "Reference length l (default: crank length)");
+  cmd->add_option("--resolution", args->resolution, "Sampling step [deg or length] (default 0.05)");
+  cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
+  cmd->add_option("--format", args->format, "csv (default) or json");
+  cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout");
+  cmd->callback([args] { Run(*args); });
+}
+
+}  // namespace koppel::cli

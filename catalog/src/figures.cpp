@@ -1,7 +1,12 @@
 #include "figures.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/structure.hpp"
 #include "koppel/core/expression.hpp"
+#include "koppel/solver/cognates.hpp"
+#include "koppel/solver/coupler_curve.hpp"
+#include "koppel/solver/dead_centres.hpp"
+#include "koppel/solver/proportionality.hpp"
 #include "koppel/solver/stationary.hpp"
 #include "koppel/solver/sweep.hpp"
 
@@ -130,6 +135,40 @@ CheckOutcome EvaluateFigure(const MechanismFile& file, const CatalogCard& card, 
     }
     const double v = sweep.outputs(0, OutputColumn(m, f.output, f.component, options.order, options.order));
     value = (q == "value" && angle_output) ? in_unit(v) : v;
+  } else if (q == "proportionality_ds" || q == "proportionality_qp") {
+    // seed 001's reading example: band about the flat-point tangent (proportionality.hpp)
+    const auto from = f.args.find("from"), to = f.args.find("to");
+    if (from == f.args.end() || to == f.args.end()) Fail(file, f, "quantity '" + q + "' needs 'from' and 'to'");
+    const std::optional<double> a = file.parameters.Evaluate(from->second, &error), b = file.parameters.Evaluate(to->second, &error);
+    if (!a || !b) Fail(file, f, error);
+    const Proportionality p = ProportionalityDeviation(m, output, input_internal(*a), input_internal(*b), CrankLength(m), std::nullopt,
+                                                       input_internal(card.step) / 20);
+    if (!p.ok) {
+      out.detail = p.message;
+      return out;
+    }
+    value = q == "proportionality_ds" ? p.delta_s : p.qp;
+  } else if (q == "straightline_phi_g" || q == "straightline_phi_a" || q == "straightline_length") {
+    // seed 003's reading example: longest stretch through K_I with Q_G <= qg (coupler_curve.hpp)
+    const auto qg = f.args.find("qg");
+    if (qg == f.args.end()) Fail(file, f, "quantity '" + q + "' needs 'qg'");
+    const std::optional<double> limit = file.parameters.Evaluate(qg->second, &error);
+    if (!limit) Fail(file, f, error);
+    std::optional<double> at;
+    if (const auto a = f.args.find("at"); a != f.args.end()) at = input_internal(file.parameters.Evaluate(a->second, &error).value_or(0));
+    const StraightStretch s = LongestStraightStretch(m, m.outputs[output].p, *limit, at, kPi, DegToRad(0.02));
+    if (!s.found) {
+      out.detail = s.message;
+      return out;
+    }
+    value = q == "straightline_phi_g" ? in_unit(s.phi_g) : q == "straightline_phi_a" ? in_unit(s.phi_a) : s.length;
+  } else if (q == "cognate_frame") {
+    const Cognates c = RobertsCognates(m, m.outputs[output].p);
+    if (!c.ok) {
+      out.detail = c.message;
+      return out;
+    }
+    value = c.frame_first;
   } else {
     out.pending = true;
     out.detail = "pending: quantity '" + q + "' needs an analysis koppel does not have yet";

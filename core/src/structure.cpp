@@ -47,6 +47,19 @@ int OutputLink(const Mechanism& m, const Output& output) {
   return -1;
 }
 
+double CrankLength(const Mechanism& m) {
+  const Joint& drive = m.joints[m.drive.joint];
+  const int crank = m.links[drive.link_a].is_frame ? drive.link_b : drive.link_a;
+  const int pivot = drive.link_a == crank ? drive.point_a : drive.point_b;
+  for (int k = 0; k < static_cast<int>(m.joints.size()); ++k) {
+    const Joint& j = m.joints[k];
+    if (k == m.drive.joint || (j.link_a != crank && j.link_b != crank)) continue;
+    const int p = j.link_a == crank ? j.point_a : j.point_b;
+    return (m.links[crank].points[p].local - m.links[crank].points[pivot].local).norm();
+  }
+  return 0.0;
+}
+
 std::string DegreeName(int degree) {
   static const char* kNames[] = {"isolated", "unary", "binary", "ternary", "quaternary", "quinary", "senary"};
   if (degree >= 0 && degree <= 6) return kNames[degree];

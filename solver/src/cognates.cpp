@@ -1,6 +1,7 @@
 #include "koppel/solver/cognates.hpp"
 
 #include "koppel/solver/position.hpp"
+#include "koppel/solver/sweep.hpp"
 
 #include <cmath>
 #include <complex>
@@ -162,6 +163,34 @@ Cognates RobertsCognates(const Mechanism& m, const PointRef& point) {
   c.rocker_second = std::abs(b2 - b0);
   c.k_second = std::abs(k - b2);
   c.l_second = std::abs(k - c2);
+  // cognate 1's input over a turn of the original: the direction of r (B - A)
+  SweepOptions turn;
+  turn.from = input;
+  turn.to = input + 2 * 3.14159265358979323846;
+  turn.step = 3.14159265358979323846 / 360;
+  Mechanism traced = m;
+  traced.outputs.clear();
+  Output coupler;
+  coupler.name = "coupler";
+  coupler.kind = OutputKind::kDirection;
+  auto on_coupler = [&](int joint) {
+    const Joint& j = m.joints[joint];
+    return PointRef{f.coupler, j.link_a == f.coupler ? j.point_a : j.point_b};
+  };
+  coupler.p = on_coupler(f.a);
+  coupler.q = on_coupler(f.b);
+  traced.outputs = {coupler};
+  const SweepResult sweep = Sweep(traced, turn);
+  c.first_input_min = c.first_input_max = std::arg(a1 - a0);
+  double previous = std::arg(b - a), unwrapped = std::arg(a1 - a0);
+  for (size_t i = 0; i < sweep.inputs.size(); ++i) {
+    // unwrap the sampled direction so a full turn of the coupler shows as one
+    const double d = std::remainder(sweep.outputs(i, 0) - previous, 2 * 3.14159265358979323846);
+    previous += d;
+    unwrapped += d;
+    c.first_input_min = std::min(c.first_input_min, unwrapped);
+    c.first_input_max = std::max(c.first_input_max, unwrapped);
+  }
   c.ok = true;
   return c;
 }

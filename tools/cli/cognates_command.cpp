@@ -3,6 +3,7 @@
 #include "common.hpp"
 
 #include "koppel/catalog/mechanism_writer.hpp"
+#include "koppel/core/angles.hpp"
 #include "koppel/solver/cognates.hpp"
 
 #include <filesystem>
@@ -29,9 +30,13 @@ void Run(const Args& args) {
   std::filesystem::create_directories(args.dir, ec);
   const std::string note = "Roberts–Chebyshev cognate of " + file.path + " (koppel cognates): traces the same curve of K.\n";
   const SweepDefaults sweep = file.sweep;
+  // cognate 1 is driven by a link that follows the original coupler: sweep its own input range,
+  // a hundredth of a degree inside the dead centres at its ends
+  const double lo = RadToDeg(c.first_input_min) + 0.01, hi = RadToDeg(c.first_input_max) - 0.01;
+  const SweepDefaults sweep_first{lo, hi, hi > lo ? (hi - lo) / 180 : 1.0};
   const std::string first = (std::filesystem::path(args.dir) / (c.first.name + ".yaml")).string();
   const std::string second = (std::filesystem::path(args.dir) / (c.second.name + ".yaml")).string();
-  WriteOutput(first, WriteMechanismYaml(c.first, note + "Pivots A0 and C0; its crank A0A1 turns with the original coupler.", sweep));
+  WriteOutput(first, WriteMechanismYaml(c.first, note + "Pivots A0 and C0; its crank A0A1 turns with the original coupler.", sweep_first));
   WriteOutput(second, WriteMechanismYaml(c.second, note + "Pivots C0 and B0; its crank C0C2 turns with the original crank: same input.", sweep));
   Summary s;
   s.Add("cognate1_A0C0", c.frame_first, "length");
@@ -40,6 +45,8 @@ void Run(const Args& args) {
   s.Add("cognate1_C0C1", c.rocker_first, "length");
   s.Add("cognate1_A1K", c.k_first, "length");
   s.Add("cognate1_C1K", c.l_first, "length");
+  s.Add("cognate1_input_min", RadToDeg(c.first_input_min), "deg");
+  s.Add("cognate1_input_max", RadToDeg(c.first_input_max), "deg");
   s.Add("cognate2_C0B0", c.frame_second, "length");
   s.Add("cognate2_C0C2", c.crank_second, "length");
   s.Add("cognate2_C2B2", c.coupler_second, "length");

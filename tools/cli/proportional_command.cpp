@@ -2,6 +2,8 @@
 #include "commands.hpp"
 #include "common.hpp"
 
+#include "koppel/core/structure.hpp"
+
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/proportionality.hpp"
 
@@ -13,19 +15,6 @@ struct Args {
   std::vector<std::string> sets;
   std::string format = "csv", out;
 };
-
-// The crank length: the distance between the drive link's two joint points (l1 of the seeds).
-double CrankLength(const Mechanism& m) {
-  const Joint& drive = m.joints[m.drive.joint];
-  const int crank = m.links[drive.link_a].is_frame ? drive.link_b : drive.link_a;
-  const int pivot = drive.link_a == crank ? drive.point_a : drive.point_b;
-  for (const Joint& j : m.joints) {
-    if (&j == &drive || (j.link_a != crank && j.link_b != crank)) continue;
-    const int p = j.link_a == crank ? j.point_a : j.point_b;
-    return (m.links[crank].points[p].local - m.links[crank].points[pivot].local).norm();
-  }
-  return 0.0;
-}
 
 void Run(const Args& args) {
   CheckFormat(args.format);

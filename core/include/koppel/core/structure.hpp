@@ -30,6 +30,11 @@ StructureSummary AnalyseStructure(const Mechanism& mechanism);
 // span several links (distance, direction between links) or a transmission angle.
 int OutputLink(const Mechanism& mechanism, const Output& output);
 
+// The crank length l1: the distance between the drive link's drive joint point and its other
+// joint point (the reference length of the seeds' relative figures). 0 when the drive link has
+// no second joint.
+double CrankLength(const Mechanism& mechanism);
+
 // "binary", "ternary", "quaternary", ... for a link with `degree` joints.
 std::string DegreeName(int degree);
 

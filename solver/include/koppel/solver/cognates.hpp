@@ -35,6 +35,9 @@ struct Cognates {
   double k_first = 0, l_first = 0;                                                // A1K, C1K
   double frame_second = 0, crank_second = 0, coupler_second = 0, rocker_second = 0;  // C0B0, C0C2, C2B2, B0B2
   double k_second = 0, l_second = 0;                                                  // B2K, C2K
+  // the input range of cognate 1 (its crank follows the original coupler, so for a crank-rocker
+  // original it is a rocker): [min, max] over one turn of the original, radians
+  double first_input_min = 0, first_input_max = 0;
 };
 
 // `point` is the coupler point (on the coupler link). Assembles the original at its hint.

@@ -1,0 +1,35 @@
+// Seed 001's reading example: 112.5..247.5 deg -> Q_P = 1.5e-2, Δs = 0.018 (printed rounding).
+#include "koppel/solver/proportionality.hpp"
+
+#include "koppel/core/angles.hpp"
+#include "support/closed_forms.hpp"
+#include "support/mechanisms.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+namespace koppel {
+
+TEST_CASE("proportional linkage reading example", "[proportionality]") {
+  const Mechanism m = test::ProportionalLinkage(1.0, 0.5, 1.83);
+  const Proportionality p = ProportionalityDeviation(m, 0, DegToRad(112.5), DegToRad(247.5), 0.5, std::nullopt, DegToRad(0.05));
+  REQUIRE(p.ok);
+  CHECK(RadToDeg(p.reference) == Approx(180).margin(1e-9));  // the flat point
+  CHECK(p.slope == Approx(test::Proportional(1.0, 0.5, 1.83, kPi).s1).margin(1e-12));
+  CHECK(p.delta_s == Approx(0.018).margin(0.0005));
+  CHECK(p.qp == Approx(1.5e-2).margin(0.05e-2));
+  // independent check of Δs: band of the closed form about its tangent at 180 deg, 0.001 deg samples
+  double lo = 0, hi = 0;
+  for (int i = 0; i <= 135000; ++i) {
+    const double phi = DegToRad(112.5 + i * 0.001);
+    const double d = test::ProportionalS(1.0, 0.5, 1.83, phi) - p.slope * (phi - kPi);
+    lo = std::min(lo, d);
+    hi = std::max(hi, d);
+  }
+  CHECK(p.delta_s == Approx(hi - lo).margin(1e-9));
+  // the chord deviation is a different, smaller measure that does not reproduce the document
+  CHECK(p.chord_deviation < 0.006);
+}
+
+}  // namespace koppel

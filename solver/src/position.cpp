@@ -346,6 +346,12 @@ void PositionSolver::OutputDerivatives(const Eigen::MatrixXd& coefficients, int 
   }
 }
 
+Eigen::VectorXd PositionSolver::SolveWithJacobian(const Eigen::VectorXd& rhs) const {
+  Eigen::VectorXd x(NumCoordinates());
+  SolveFactorized(rhs, x);
+  return x;
+}
+
 int PositionSolver::ConstraintRank(const Eigen::VectorXd& q) const {
   Eigen::MatrixXd jac(system_.NumEquations(), system_.NumCoordinates());
   system_.Jacobian(q.data(), jac);

@@ -11,5 +11,7 @@ void AddDeadCentresCommand(CLI::App& app);
 void AddCurveCommand(CLI::App& app);
 void AddProportionalCommand(CLI::App& app);
 void AddCognatesCommand(CLI::App& app);
+void AddSynthCommand(CLI::App& app);
+void AddFitSubcommand(CLI::App& synth);  // koppel synth fit
 
 }  // namespace koppel::cli

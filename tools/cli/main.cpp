@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   koppel::cli::AddCurveCommand(app);
   koppel::cli::AddProportionalCommand(app);
   koppel::cli::AddCognatesCommand(app);
+  koppel::cli::AddSynthCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

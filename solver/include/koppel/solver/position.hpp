@@ -78,6 +78,10 @@ class PositionSolver {
   // Smallest |U_ii| / largest |U_ii| of the last LU: a cheap distance-to-singularity gauge.
   double PivotRatio() const { return pivot_ratio_; }
 
+  // x = J^-1 rhs with the factorisation of the last converged pose (implicit-function theorem:
+  // dq/dp = -J^-1 dF/dp). Precondition: the last Correct/Assemble succeeded.
+  Eigen::VectorXd SolveWithJacobian(const Eigen::VectorXd& rhs) const;
+
   // Rank of the constraint rows (drive row excluded) at q, and the actual mobility
   // NumCoordinates() - rank.
   int ConstraintRank(const Eigen::VectorXd& q) const;

@@ -1,0 +1,36 @@
+// The YAML problem file of `koppel synth fit`:
+//
+//   mechanism: four-bar.yaml        # relative to the problem file
+//   parameters:                     # the free ones; the others keep the file's values
+//     l3: {start: 4, lower: 3, upper: 6}       # start defaults to the file's value
+//   starts: 4                       # optional: more starts, random within the bounds
+//   require: {from: 0, to: 360}     # optional: the design must assemble over this input range
+//   targets:
+//     - {point: K, input: 0, at: [1.65, 8.31]}              # precision point at a prescribed input
+//     - {point: K, input: 40, at: [3.4, 8.6], free_input: true}  # input free, 40 the start
+//     - {output: psi, input: 90, value: 104.4, weight: 2}   # function generation (angles in degrees)
+//
+// Inputs are in degrees for an R drive. Every problem is reported with file:line like the reader.
+#pragma once
+
+#include "koppel/catalog/mechanism_file.hpp"
+#include "koppel/solver/fit.hpp"
+
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+struct FitProblem {
+  std::string path;
+  std::string mechanism_path;
+  MechanismFile base;                // the mechanism with its own parameter values
+  std::vector<FitParameter> parameters;
+  std::vector<FitTarget> targets;
+  FitOptions options;
+  MechanismBuilder builder;          // rebuilds `base` with parameter values as overrides
+};
+
+FitProblem ReadFitProblem(const std::string& path);
+
+}  // namespace koppel

@@ -1,0 +1,132 @@
+#include "koppel/catalog/fit_problem.hpp"
+
+#include "koppel/core/angles.hpp"
+#include "yaml_reader.hpp"
+
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace koppel {
+
+FitProblem ReadFitProblem(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({Diagnostic{path, 0, 0, "", "cannot open file"}});
+  std::stringstream text;
+  text << in.rdbuf();
+  YAML::Node root;
+  try {
+    root = YAML::Load(text.str());
+  } catch (const YAML::Exception& e) {
+    throw InputError({Diagnostic{path, e.mark.line + 1, e.mark.column + 1, "", "YAML syntax error: " + e.msg}});
+  }
+  FitProblem problem;
+  problem.path = path;
+  YamlReader r(path, nullptr);
+  r.set_fallback(YAML::Mark());
+  if (!r.ExpectMap(root, "")) throw InputError(r.diagnostics());
+  r.CheckKeys(root, "", {"mechanism", "parameters", "starts", "require", "targets"});
+  const YAML::Node mech = r.Require(root, "mechanism", "");
+  if (!r.diagnostics().empty()) throw InputError(r.diagnostics());
+  const std::string relative = r.Text(mech, "mechanism").value_or("");
+  problem.mechanism_path = (std::filesystem::path(path).parent_path() / relative).string();
+  try {
+    problem.base = ReadMechanismFile(problem.mechanism_path);
+  } catch (const InputError& e) {
+    std::vector<Diagnostic> all = {{path, mech.Mark().line + 1, mech.Mark().column + 1, "mechanism", "the mechanism file has problems:"}};
+    all.insert(all.end(), e.diagnostics().begin(), e.diagnostics().end());
+    throw InputError(all);
+  }
+  const Mechanism& m = problem.base.mechanism;
+  const bool angle = m.InputIsAngle();
+  r.set_parameters(&problem.base.parameters);
+  auto input_of = [&](double v) { return angle ? DegToRad(v) : v; };
+
+  const YAML::Node params = r.Require(root, "parameters", "");
+  for (const YamlReader::Entry& e : r.Entries(params, "parameters")) {
+    const std::string ppath = Child("parameters", e.key);
+    if (!problem.base.parameters.Has(e.key)) {
+      r.Error(e.key_node, ppath, "'" + e.key + "' is not a parameter of " + relative);
+      continue;
+    }
+    FitParameter p;
+    p.name = e.key;
+    p.start = problem.base.parameters.Value(e.key);
+    if (e.value.IsMap()) {
+      r.CheckKeys(e.value, ppath, {"start", "lower", "upper"});
+      if (e.value["start"].IsDefined()) p.start = r.Number(e.value["start"], Child(ppath, "start")).value_or(p.start);
+      if (e.value["lower"].IsDefined()) p.lower = r.Number(e.value["lower"], Child(ppath, "lower")).value_or(p.lower);
+      if (e.value["upper"].IsDefined()) p.upper = r.Number(e.value["upper"], Child(ppath, "upper")).value_or(p.upper);
+      if (p.lower > p.upper || p.start < p.lower || p.start > p.upper) r.Error(e.value, ppath, "needs lower <= start <= upper");
+    } else if (!e.value.IsNull()) {
+      r.Error(e.value, ppath, "expected {start, lower, upper} or nothing");
+    }
+    problem.parameters.push_back(p);
+  }
+  if (const YAML::Node s = root["starts"]; s.IsDefined()) problem.options.starts = std::max(1, r.Count(s, "starts").value_or(1));
+  if (const YAML::Node q = root["require"]; q.IsDefined() && r.ExpectMap(q, "require")) {
+    r.CheckKeys(q, "require", {"from", "to"});
+    problem.options.require_from = input_of(r.Number(r.Require(q, "from", "require"), "require.from").value_or(0));
+    problem.options.require_to = input_of(r.Number(r.Require(q, "to", "require"), "require.to").value_or(0));
+  }
+  const YAML::Node targets = r.Require(root, "targets", "");
+  if (targets.IsDefined() && r.ExpectSequence(targets, "targets")) {
+    for (size_t i = 0; i < targets.size(); ++i) {
+      const YAML::Node t = targets[i];
+      const std::string tpath = Index("targets", static_cast<int>(i));
+      if (!r.ExpectMap(t, tpath)) continue;
+      r.CheckKeys(t, tpath, {"point", "output", "input", "at", "value", "weight", "free_input", "name"});
+      FitTarget target;
+      if (t["input"].IsDefined()) target.input = input_of(r.Number(t["input"], Child(tpath, "input")).value_or(0));
+      else r.Error(t, Child(tpath, "input"), "missing required key 'input' (the start value when free_input)");
+      if (t["weight"].IsDefined()) target.weight = r.Number(t["weight"], Child(tpath, "weight")).value_or(1);
+      if (t["free_input"].IsDefined()) target.input_free = r.Flag(t["free_input"], Child(tpath, "free_input")).value_or(false);
+      const std::string name = t["point"].IsDefined() ? r.Text(t["point"], Child(tpath, "point")).value_or("")
+                                                      : t["output"].IsDefined() ? r.Text(t["output"], Child(tpath, "output")).value_or("") : "";
+      target.output = m.FindOutput(name);
+      if (target.output < 0) {
+        r.Error(t, tpath, "names no output '" + name + "' of " + relative + " (give point: or output:)");
+        continue;
+      }
+      target.name = t["name"].IsDefined() ? r.Text(t["name"], Child(tpath, "name")).value_or(name) : name;
+      if (t["point"].IsDefined()) {
+        target.point = true;
+        if (m.outputs[target.output].kind != OutputKind::kPoint) r.Error(t["point"], Child(tpath, "point"), "'" + name + "' is not a point output");
+        const YAML::Node at = r.Require(t, "at", tpath);
+        if (at.IsDefined() && !at.IsNull()) target.position = r.Vector(at, Child(tpath, "at")).value_or(Eigen::Vector2d::Zero());
+      } else {
+        if (m.outputs[target.output].Components() != 1) r.Error(t["output"], Child(tpath, "output"), "use point: for a point output");
+        const YAML::Node v = r.Require(t, "value", tpath);
+        if (v.IsDefined() && !v.IsNull()) {
+          const double value = r.Number(v, Child(tpath, "value")).value_or(0);
+          const Output& o = m.outputs[target.output];
+          const bool angle_out = o.IsAngle() || (o.kind == OutputKind::kJoint && m.joints[o.joint].type == JointType::kRevolute);
+          target.value = angle_out ? DegToRad(value) : value;
+        }
+      }
+      problem.targets.push_back(target);
+    }
+  }
+  if (problem.targets.empty() && r.diagnostics().empty()) r.Error(root, "targets", "no targets");
+  if (!r.diagnostics().empty()) throw InputError(r.diagnostics());
+
+  // the builder: the mechanism file again with the free parameters as overrides
+  const std::string mechanism_path = problem.mechanism_path;
+  const std::vector<FitParameter> free = problem.parameters;
+  problem.builder = [mechanism_path, free](const std::vector<double>& values, Mechanism* out, std::string* error) {
+    Overrides overrides;
+    for (size_t j = 0; j < free.size(); ++j) overrides.emplace_back(free[j].name, fmt::format("{:.17g}", values[j]));
+    try {
+      *out = ReadMechanismFile(mechanism_path, overrides).mechanism;
+      return true;
+    } catch (const InputError& e) {
+      *error = e.what();
+      return false;
+    }
+  };
+  return problem;
+}
+
+}  // namespace koppel

@@ -93,6 +93,23 @@ SolveReport Continuation::AdvanceTo(double target, double max_step) {
   return last.ok() ? last : SolveReport{SolveStatus::kConverged, 0.0, 0, -1, ""};
 }
 
+InputRange DrivableRange(const Mechanism& mechanism, double span, double step) {
+  InputRange range;
+  SweepOptions options;
+  options.order = 0;
+  options.step = step;
+  options.from = mechanism.hint.input;
+  options.to = mechanism.hint.input + span;
+  const SweepResult up = Sweep(mechanism, options);
+  range.high = up.complete() ? options.to : up.stopped_at;
+  range.high_limited = !up.complete();
+  options.to = mechanism.hint.input - span;
+  const SweepResult down = Sweep(mechanism, options);
+  range.low = down.complete() ? options.to : down.stopped_at;
+  range.low_limited = !down.complete();
+  return range;
+}
+
 int SampleCount(double from, double to, double step) {
   if (step == 0.0) return 1;
   const double n = std::floor(std::abs(to - from) / std::abs(step) + 1e-9);

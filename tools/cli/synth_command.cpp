@@ -8,6 +8,7 @@
 #include "koppel/solver/cognates.hpp"
 #include "koppel/solver/deadcentre_synthesis.hpp"
 #include "koppel/solver/mzc_synthesis.hpp"
+#include "koppel/solver/sweep.hpp"
 
 #include <fmt/core.h>
 
@@ -181,11 +182,15 @@ void RunMzc(const Args& args) {
     s.Add("crank_rocker_l4", c.frame_first, "length");
     s.Add("crank_rocker_AK", c.k_first, "length");
   }
-  if (!args.yaml.empty())
+  if (!args.yaml.empty()) {
+    // the double rocker's own input range, a hundredth of a degree inside its limit positions
+    const InputRange range = DrivableRange(m, kPi, DegToRad(1));
+    const double lo = RadToDeg(range.low) + 0.01, hi = RadToDeg(range.high) - 0.01;
     WriteOutput(args.yaml, WriteMechanismYaml(m, fmt::format("Meyer zur Capellen straight-line linkage (koppel synth mzc): lambda = {}, D = {}.\n"
                                                              "Assembled in the crossed symmetric position; K is the inflection pole there.",
                                                              d.lambda, d.D),
-                                              {RadToDeg(m.hint.input) - 10, RadToDeg(m.hint.input) + 10, 0.1}));
+                                              {lo, hi, (hi - lo) / 200}));
+  }
   if (!args.cognates_dir.empty() && c.ok) {
     WriteOutput(args.cognates_dir + "/" + c.first.name + ".yaml",
                 WriteMechanismYaml(c.first, "Crank-rocker cognate of a Meyer zur Capellen linkage (koppel synth mzc).", {0, 360, 1}));

@@ -79,6 +79,14 @@ struct SweepResult {
 // Precondition: CheckConsistency(mechanism) is empty and options.step != 0.
 SweepResult Sweep(const Mechanism& mechanism, const SweepOptions& options);
 
+// The input interval the drive can reach from the assembly hint, following the branch up to
+// `span` either way (radians or length): for a double rocker, its two limit positions.
+struct InputRange {
+  double low = 0, high = 0;
+  bool low_limited = false, high_limited = false;  // stopped before `span`
+};
+InputRange DrivableRange(const Mechanism& mechanism, double span, double step);
+
 // Number of samples of from..to in steps of |step| (the last one at most `to`).
 int SampleCount(double from, double to, double step);
 

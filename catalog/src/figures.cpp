@@ -135,6 +135,21 @@ CheckOutcome EvaluateFigure(const MechanismFile& file, const CatalogCard& card, 
     }
     const double v = sweep.outputs(0, OutputColumn(m, f.output, f.component, options.order, options.order));
     value = (q == "value" && angle_output) ? in_unit(v) : v;
+  } else if (q == "deadcentre_span" || q == "deadcentre_phi_a" || q == "deadcentre_phi_i") {
+    // dead centres of the output (dead_centres.hpp): the crank angle from the folded to the
+    // extended dead centre, counter-clockwise, or either dead centre's input
+    SweepOptions options;
+    options.from = input_internal(card.from);
+    options.to = input_internal(card.to);
+    options.step = input_internal(card.step);
+    const DeadCentreReport r = FindDeadCentres(m, output, f.component, options);
+    if (!r.has_stroke || !r.classified) {
+      out.detail = r.message.empty() ? "no extended and folded dead centre found" : r.message;
+      return out;
+    }
+    const double turn = 2 * kPi;
+    const double span = std::fmod(std::fmod(r.phi_a - r.phi_i, turn) + turn, turn);
+    value = in_unit(q == "deadcentre_span" ? span : q == "deadcentre_phi_a" ? std::fmod(r.phi_a + turn, turn) : std::fmod(r.phi_i + turn, turn));
   } else if (q == "proportionality_ds" || q == "proportionality_qp") {
     // seed 001's reading example: band about the flat-point tangent (proportionality.hpp)
     const auto from = f.args.find("from"), to = f.args.find("to");

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <optional>
 
 namespace koppel {
 namespace {
@@ -76,6 +77,40 @@ TEST_CASE("catalog lookup by each access feature returns exactly the documented 
   CHECK(Ids(catalog, text) == Ids_t{"proportional-linkage"});
   text.text = "Versetzung";  // German title
   CHECK(Ids(catalog, text) == Ids_t{"slider-crank-offset"});
+}
+
+TEST_CASE("every access feature filters on its own", "[catalog]") {
+  const Catalog catalog = Catalog::Load(KOPPEL_CATALOG_DIR);
+  // for each feature: a value only the proportional linkage (seed 001) has, and one it lacks
+  struct Case {
+    std::optional<CountRange> FeatureQuery::*field;
+    const char* only_seed_001;
+    const char* not_seed_001;
+  };
+  const Case cases[] = {{&FeatureQuery::links, "6", "4"},    {&FeatureQuery::binary, "4", "0"}, {&FeatureQuery::ternary, "2", "0"},
+                        {&FeatureQuery::joints, "7", "4"},   {&FeatureQuery::revolute, "4", "3"}, {&FeatureQuery::prismatic, "3", "1"}};
+  for (const Case& c : cases) {
+    FeatureQuery q;
+    q.*(c.field) = CountRange::Parse(c.only_seed_001);
+    const auto ids = Ids(catalog, q);
+    INFO(c.only_seed_001);
+    CHECK(std::find(ids.begin(), ids.end(), "proportional-linkage") != ids.end());
+    q.*(c.field) = CountRange::Parse(c.not_seed_001);
+    const auto other = Ids(catalog, q);
+    CHECK(std::find(other.begin(), other.end(), "proportional-linkage") == other.end());
+  }
+  // drives, outputs, quaternary: every entry has one drive at the frame, none a quaternary link
+  FeatureQuery drives;
+  drives.drives = CountRange::Parse("1");
+  drives.drives_at_frame = CountRange::Parse("1");
+  drives.outputs = CountRange::Parse("1");
+  CHECK(Ids(catalog, drives).size() == catalog.entries().size());
+  FeatureQuery quaternary;
+  quaternary.quaternary = CountRange::Parse("1..");
+  CHECK(Ids(catalog, quaternary).empty());
+  FeatureQuery two_drives;
+  two_drives.drives = CountRange::Parse("2");
+  CHECK(Ids(catalog, two_drives).empty());
 }
 
 TEST_CASE("catalog lookup by ranges", "[catalog]") {

@@ -43,6 +43,31 @@ bool Mechanism::InputIsAngle() const {
   return drive.joint >= 0 && joints[drive.joint].type == JointType::kRevolute;
 }
 
+Joint PinJoint(const Mechanism& m, const std::string& name, int link_a, int link_b) {
+  Joint j;
+  j.name = name;
+  j.type = JointType::kRevolute;
+  j.link_a = link_a;
+  j.link_b = link_b;
+  j.point_a = m.links[link_a].FindPoint(name);
+  j.point_b = m.links[link_b].FindPoint(name);
+  return j;
+}
+
+PointRef JointPointOn(const Joint& j, int link) {
+  return j.link_a == link ? PointRef{j.link_a, j.point_a} : PointRef{j.link_b, j.point_b};
+}
+
+int OtherJointOfBinaryLink(const Mechanism& m, int link, int joint) {
+  int other = -1, count = 0;
+  for (int k = 0; k < static_cast<int>(m.joints.size()); ++k) {
+    if (m.joints[k].link_a != link && m.joints[k].link_b != link) continue;
+    ++count;
+    if (k != joint) other = k;
+  }
+  return count == 2 ? other : -1;
+}
+
 std::vector<std::string> CheckConsistency(const Mechanism& m) {
   std::vector<std::string> problems;
   const int n_links = static_cast<int>(m.links.size());

@@ -11,7 +11,6 @@ namespace {
 
 using Complex = std::complex<double>;
 
-Complex Z(const Eigen::Vector2d& v) { return {v.x(), v.y()}; }
 Eigen::Vector2d V(Complex z) { return {z.real(), z.imag()}; }
 
 // A binary link with its body frame at `from`, x along `from -> to`, and extra points.
@@ -26,16 +25,6 @@ Link LinkAlong(const std::string& name, const std::string& from_name, Complex fr
   return link;
 }
 
-Joint Pin(const Mechanism& m, const std::string& name, int a, int b) {
-  Joint j;
-  j.name = name;
-  j.link_a = a;
-  j.link_b = b;
-  j.point_a = m.links[a].FindPoint(name);
-  j.point_b = m.links[b].FindPoint(name);
-  return j;
-}
-
 // Frame, crank, coupler (with K), rocker, pinned in a loop; drive at the crank's frame pivot.
 Mechanism BuildFourBar(const std::string& name, const std::string& p0, Complex z0, const std::string& p1, Complex z1,
                        const std::string& p2, Complex z2, const std::string& p3, Complex z3, Complex k, double input) {
@@ -47,7 +36,7 @@ Mechanism BuildFourBar(const std::string& name, const std::string& p0, Complex z
   frame.points = {{p0, V(z0)}, {p3, V(z3)}};
   m.links = {frame, LinkAlong("crank", p0, z0, p1, z1), LinkAlong("coupler", p1, z1, p2, z2, {{"K", k}}),
              LinkAlong("rocker", p3, z3, p2, z2)};
-  m.joints = {Pin(m, p0, 0, 1), Pin(m, p1, 1, 2), Pin(m, p2, 2, 3), Pin(m, p3, 0, 3)};
+  m.joints = {PinJoint(m, p0, 0, 1), PinJoint(m, p1, 1, 2), PinJoint(m, p2, 2, 3), PinJoint(m, p3, 0, 3)};
   m.drive.joint = 0;
   // joint angle = crank direction; the input reads `input` at this pose
   m.drive.zero = std::arg(z1 - z0) - input;

@@ -13,22 +13,6 @@ Eigen::Vector2d Rotate(double theta, const Eigen::Vector2d& v) {
 // v turned by +90 degrees: the derivative of R(theta) v with respect to theta.
 Eigen::Vector2d Perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
-// The other joint of a binary link, or -1 when the link is not binary.
-int OtherJoint(const Mechanism& m, int link, int joint) {
-  int other = -1, count = 0;
-  for (int k = 0; k < static_cast<int>(m.joints.size()); ++k) {
-    const Joint& j = m.joints[k];
-    if (j.link_a != link && j.link_b != link) continue;
-    ++count;
-    if (k != joint) other = k;
-  }
-  return count == 2 ? other : -1;
-}
-
-PointRef PointOn(const Joint& j, int link) {
-  return j.link_a == link ? PointRef{j.link_a, j.point_a} : PointRef{j.link_b, j.point_b};
-}
-
 }  // namespace
 
 bool ResolveTransmission(const Mechanism& m, const Output& o, TransmissionGeometry* g, std::string* error) {
@@ -38,7 +22,7 @@ bool ResolveTransmission(const Mechanism& m, const Output& o, TransmissionGeomet
     *error = "joint '" + out.name + "' does not belong to coupler '" + m.links[coupler].name + "'";
     return false;
   }
-  const int other = OtherJoint(m, coupler, o.joint);
+  const int other = OtherJointOfBinaryLink(m, coupler, o.joint);
   if (other < 0) {
     *error = "coupler '" + m.links[coupler].name + "' must be a binary link (exactly two joints)";
     return false;
@@ -49,8 +33,8 @@ bool ResolveTransmission(const Mechanism& m, const Output& o, TransmissionGeomet
     *error = "the coupler's joints '" + m.joints[other].name + "' and '" + out.name + "' must be revolute";
     return false;
   }
-  g->coupler_from = PointOn(m.joints[other], coupler);
-  g->coupler_to = PointOn(out, coupler);
+  g->coupler_from = JointPointOn(m.joints[other], coupler);
+  g->coupler_to = JointPointOn(out, coupler);
   const int output_link = out.link_a == coupler ? out.link_b : out.link_a;
   const int frame = m.FrameLink();
   for (int k = 0; k < static_cast<int>(m.joints.size()); ++k) {
@@ -59,7 +43,7 @@ bool ResolveTransmission(const Mechanism& m, const Output& o, TransmissionGeomet
     const bool joins_frame = (j.link_a == frame && j.link_b == output_link) || (j.link_b == frame && j.link_a == output_link);
     if (!joins_frame) continue;
     if (j.type == JointType::kRevolute) {
-      g->pivot = PointOn(j, output_link);
+      g->pivot = JointPointOn(j, output_link);
       return true;
     }
     if (j.link_a == frame) {  // the slide line belongs to the frame: its direction is fixed

@@ -13,20 +13,6 @@ constexpr double kTwoPi = 2 * 3.14159265358979323846;
 // dead centre is refined to 1e-12, so a true line-up is at roundoff level.
 constexpr double kLineUp = 1e-7;
 
-int OtherJointOf(const Mechanism& m, int link, int joint) {
-  int other = -1, count = 0;
-  for (int k = 0; k < static_cast<int>(m.joints.size()); ++k) {
-    if (m.joints[k].link_a != link && m.joints[k].link_b != link) continue;
-    ++count;
-    if (k != joint) other = k;
-  }
-  return count == 2 ? other : -1;
-}
-
-PointRef PointOn(const Joint& j, int link) {
-  return j.link_a == link ? PointRef{j.link_a, j.point_a} : PointRef{j.link_b, j.point_b};
-}
-
 }  // namespace
 
 const char* ToString(DeadCentreKind kind) {
@@ -42,17 +28,17 @@ DeadCentreKind ClassifyLineUp(const Mechanism& m, const Eigen::VectorXd& q) {
   const Joint& drive = m.joints[m.drive.joint];
   if (drive.type != JointType::kRevolute) return DeadCentreKind::kUnclassified;
   const int crank = m.links[drive.link_a].is_frame ? drive.link_b : drive.link_a;
-  const int crank_coupler = OtherJointOf(m, crank, m.drive.joint);
+  const int crank_coupler = OtherJointOfBinaryLink(m, crank, m.drive.joint);
   if (crank_coupler < 0 || m.joints[crank_coupler].type != JointType::kRevolute) return DeadCentreKind::kUnclassified;
   const Joint& cc = m.joints[crank_coupler];
   const int coupler = cc.link_a == crank ? cc.link_b : cc.link_a;
-  const int coupler_far = OtherJointOf(m, coupler, crank_coupler);
+  const int coupler_far = OtherJointOfBinaryLink(m, coupler, crank_coupler);
   if (coupler_far < 0) return DeadCentreKind::kUnclassified;
   const ConstraintSystem system(m);
   double pivot[2], joint[2], far[2];
-  system.GlobalPoint(PointOn(drive, crank), q.data(), pivot);
-  system.GlobalPoint(PointOn(cc, crank), q.data(), joint);
-  system.GlobalPoint(PointOn(m.joints[coupler_far], coupler), q.data(), far);
+  system.GlobalPoint(JointPointOn(drive, crank), q.data(), pivot);
+  system.GlobalPoint(JointPointOn(cc, crank), q.data(), joint);
+  system.GlobalPoint(JointPointOn(m.joints[coupler_far], coupler), q.data(), far);
   const Eigen::Vector2d u(joint[0] - pivot[0], joint[1] - pivot[1]), v(far[0] - joint[0], far[1] - joint[1]);
   if (u.norm() == 0 || v.norm() == 0) return DeadCentreKind::kUnclassified;
   const double cross = (u.x() * v.y() - u.y() * v.x()) / (u.norm() * v.norm());

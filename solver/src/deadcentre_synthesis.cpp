@@ -146,18 +146,6 @@ SliderCrankDesign BestSliderCrank(double phi0, double stroke) {
   return r;
 }
 
-namespace {
-Joint Pin(const Mechanism& m, const std::string& name, int a, int b) {
-  Joint j;
-  j.name = name;
-  j.link_a = a;
-  j.link_b = b;
-  j.point_a = m.links[a].FindPoint(name);
-  j.point_b = m.links[b].FindPoint(name);
-  return j;
-}
-}  // namespace
-
 Mechanism CrankRockerMechanism(const CrankRockerDesign& d) {
   Mechanism m;
   m.name = "crank-rocker";
@@ -165,7 +153,7 @@ Mechanism CrankRockerMechanism(const CrankRockerDesign& d) {
              {"crank", false, {{"A0", {0, 0}}, {"A", {d.l1, 0}}}},
              {"coupler", false, {{"A", {0, 0}}, {"B", {d.l2, 0}}}},
              {"rocker", false, {{"B0", {0, 0}}, {"B", {d.l3, 0}}}}};
-  m.joints = {Pin(m, "A0", 0, 1), Pin(m, "A", 1, 2), Pin(m, "B", 2, 3), Pin(m, "B0", 0, 3)};
+  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3), PinJoint(m, "B0", 0, 3)};
   m.drive.joint = 0;
   Output psi;
   psi.name = "psi";
@@ -191,7 +179,7 @@ Mechanism SliderCrankMechanism(const SliderCrankDesign& d) {
              {"crank", false, {{"A0", {0, 0}}, {"A", {0, -d.l1}}}},
              {"coupler", false, {{"A", {0, 0}}, {"B", {d.l2, 0}}}},
              {"slider", false, {{"B", {0, 0}}}}};
-  m.joints = {Pin(m, "A0", 0, 1), Pin(m, "A", 1, 2), Pin(m, "B", 2, 3)};
+  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3)};
   Joint s;
   s.name = "S";
   s.type = JointType::kPrismatic;

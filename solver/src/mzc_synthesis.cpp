@@ -72,16 +72,7 @@ Mechanism MzcMechanism(const MzcDesign& d) {
              {"rocker1", false, {{"A0", {0, 0}}, {"A", {d.l1, 0}}}},
              {"coupler", false, {{"A", {0, 0}}, {"B", {d.l2, 0}}, {"K", along(a, b, k)}}},
              {"rocker2", false, {{"B0", {0, 0}}, {"B", {d.l3, 0}}}}};
-  auto pin = [&](const char* name, int la, int lb) {
-    Joint j;
-    j.name = name;
-    j.link_a = la;
-    j.link_b = lb;
-    j.point_a = m.links[la].FindPoint(name);
-    j.point_b = m.links[lb].FindPoint(name);
-    return j;
-  };
-  m.joints = {pin("A0", 0, 1), pin("A", 1, 2), pin("B", 2, 3), pin("B0", 0, 3)};
+  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3), PinJoint(m, "B0", 0, 3)};
   m.drive.joint = 0;
   Output out;
   out.name = "K";

@@ -25,15 +25,7 @@ Mechanism OverconstrainedParallelogram() {
              {"coupler", false, {{"A", {0, 0}}, {"B", {4, 0}}, {"E", {2, 0}}}},
              {"rocker", false, {{"B0", {0, 0}}, {"B", {1, 0}}}},
              {"extra", false, {{"E0", {0, 0}}, {"E", {1, 0}}}}};
-  auto r = [&](const char* name, int a, int b) {
-    Joint j;
-    j.name = name;
-    j.link_a = a;
-    j.link_b = b;
-    j.point_a = m.links[a].FindPoint(name);
-    j.point_b = m.links[b].FindPoint(name);
-    return j;
-  };
+  auto r = [&](const char* name, int a, int b) { return PinJoint(m, name, a, b); };
   m.joints = {r("A0", 0, 1), r("A", 1, 2), r("B", 2, 3), r("B0", 0, 3), r("E", 2, 4), r("E0", 0, 4)};
   m.drive.joint = 0;
   m.hint.input = DegToRad(60);

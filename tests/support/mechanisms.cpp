@@ -6,14 +6,7 @@ namespace koppel::test {
 namespace {
 
 Joint Revolute(const Mechanism& m, const std::string& name, const std::string& a, const std::string& b) {
-  Joint j;
-  j.name = name;
-  j.type = JointType::kRevolute;
-  j.link_a = m.FindLink(a);
-  j.link_b = m.FindLink(b);
-  j.point_a = m.links[j.link_a].FindPoint(name);
-  j.point_b = m.links[j.link_b].FindPoint(name);
-  return j;
+  return PinJoint(m, name, m.FindLink(a), m.FindLink(b));
 }
 
 Joint Prismatic(const Mechanism& m, const std::string& name, const std::string& guide, const std::string& on_guide,

@@ -114,6 +114,16 @@ struct Mechanism {
   bool InputIsAngle() const;
 };
 
+// An R joint named `name` between links a and b at the point of that name on each (the usual
+// way to pin two links in code). Point indices are -1 where a link lacks the point.
+Joint PinJoint(const Mechanism& mechanism, const std::string& name, int link_a, int link_b);
+
+// The point of joint j on `link` (one of its two links).
+PointRef JointPointOn(const Joint& joint, int link);
+
+// The other joint of a binary link (exactly two joints), or -1.
+int OtherJointOfBinaryLink(const Mechanism& mechanism, int link, int joint);
+
 // Empty when the mechanism is consistent; otherwise one message per problem. The solver
 // requires a consistent mechanism (exactly one frame link, indices in range, unit P axes,
 // a drive on an existing joint).

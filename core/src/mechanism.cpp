@@ -68,6 +68,28 @@ int OtherJointOfBinaryLink(const Mechanism& m, int link, int joint) {
   return count == 2 ? other : -1;
 }
 
+Mechanism MirrorMechanism(const Mechanism& original) {
+  // global reflection M = diag(1, -1): pose (x, y, theta) -> (x, -y, -theta), and with body
+  // points reflected too, R(-theta) M p = M R(theta) p keeps every joint closed
+  Mechanism m = original;
+  auto flip = [](Eigen::Vector2d v) { return Eigen::Vector2d(v.x(), -v.y()); };
+  for (Link& link : m.links) {
+    for (NamedPoint& p : link.points) p.local = flip(p.local);
+  }
+  for (Joint& j : m.joints) {
+    j.axis = flip(j.axis);
+    j.angle = -j.angle;
+  }
+  const bool angle_input = m.InputIsAngle();
+  if (angle_input) {
+    m.drive.zero = -m.drive.zero;
+    m.hint.input = -m.hint.input;
+  }
+  for (Output& o : m.outputs) o.offset = -o.offset;
+  for (AssemblyHint::Entry& e : m.hint.points) e.global = flip(e.global);
+  return m;
+}
+
 std::vector<std::string> CheckConsistency(const Mechanism& m) {
   std::vector<std::string> problems;
   const int n_links = static_cast<int>(m.links.size());

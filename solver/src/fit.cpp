@@ -121,6 +121,19 @@ class FitCost : public ceres::CostFunction {
   int n_params_;
 };
 
+bool AssemblesOver(const MechanismBuilder& builder, const std::vector<double>& values, const FitOptions& options) {
+  if (options.require_to == options.require_from) return true;
+  Mechanism m;
+  std::string error;
+  if (!builder(values, &m, &error)) return false;
+  SweepOptions range;
+  range.from = options.require_from;
+  range.to = options.require_to;
+  range.step = (options.require_to - options.require_from) / 360;
+  range.order = 0;
+  return Sweep(m, range).complete();
+}
+
 }  // namespace
 
 FitReport Fit(const MechanismBuilder& builder, const std::vector<FitParameter>& parameters, const std::vector<FitTarget>& targets,
@@ -162,7 +175,10 @@ FitReport Fit(const MechanismBuilder& builder, const std::vector<FitParameter>& 
     if (!model.Evaluate(x.data(), n, r.data(), nullptr)) continue;
     double cost = 0;
     for (double v : r) cost += 0.5 * v * v;
-    if (best.ok && cost >= best.cost) continue;
+    // designs that assemble over the required input range win over any that do not
+    const bool assembles = AssemblesOver(builder, std::vector<double>(x.begin(), x.begin() + n), options);
+    if (best.ok && (assembles < best.assembles_over_range || (assembles == best.assembles_over_range && cost >= best.cost))) continue;
+    best.assembles_over_range = assembles;
     best.ok = true;
     best.cost = cost;
     best.iterations = static_cast<int>(summary.iterations.size());
@@ -181,18 +197,6 @@ FitReport Fit(const MechanismBuilder& builder, const std::vector<FitParameter>& 
   if (!best.ok) {
     best.message = "no start gave a design that assembles at every target";
     return best;
-  }
-  // the required input range: the fitted design must assemble over it
-  Mechanism m;
-  std::string error;
-  best.assembles_over_range = true;
-  if (options.require_to != options.require_from && builder(best.values, &m, &error)) {
-    SweepOptions range;
-    range.from = options.require_from;
-    range.to = options.require_to;
-    range.step = (options.require_to - options.require_from) / 360;
-    range.order = 0;
-    best.assembles_over_range = Sweep(m, range).complete();
   }
   return best;
 }

@@ -43,6 +43,17 @@ TEST_CASE("synthesised crank-rockers have exactly the requested dead-centre angl
   }
 }
 
+TEST_CASE("the mirrored design turns the other way with the same angles", "[synthesis]") {
+  const CrankRockerDesign d = CrankRockerFromDeadCentres(DegToRad(164), DegToRad(60), DegToRad(30));
+  REQUIRE(d.ok);
+  const DeadCentreReport r = Reanalyse(MirrorMechanism(CrankRockerMechanism(d)), 0);
+  REQUIRE(r.classified);
+  // clockwise from the folded to the extended dead centre: phi_i - phi_a = phi0 (mod 360)
+  CHECK(std::abs(Wrap2Pi(r.phi_i - r.phi_a) - DegToRad(164)) < kReanalysed);
+  CHECK(std::abs(r.stroke - DegToRad(60)) < kReanalysed);
+  CHECK(r.s_a > r.s_i);  // and the rocker counter-clockwise
+}
+
 TEST_CASE("mu_min of a synthesised crank-rocker equals the re-analysed smallest transmission angle", "[synthesis]") {
   const CrankRockerDesign d = CrankRockerFromDeadCentres(DegToRad(164), DegToRad(60), DegToRad(30));
   REQUIRE(d.ok);

@@ -197,6 +197,11 @@ void RunShow(const CatalogArgs& args) {
   std::string formula = s.formula;
   for (size_t pos = 0; (pos = formula.find('\n', pos)) != std::string::npos && pos + 1 < formula.size(); pos += 3) formula.replace(pos, 1, "\n  ");
   t += "  " + formula;
+  // the output links (Abtriebsglieder, marked with a double arrow in the Strukturbild)
+  for (const std::string& o : c.outputs) {
+    const int link = OutputLink(m, m.outputs[m.FindOutput(o)]);
+    if (link >= 0) t += "  output link (Abtrieb): " + m.links[link].name + " (output '" + o + "')\n";
+  }
   t += "\nParameters\n";
   for (const auto& [n, v] : e.file.parameters.Values()) t += "  " + n + " = " + FormatNumber(v) + "\n";
   t += "\nConventions\n  input " + m.drive.input_name + " = joint '" + m.joints[m.drive.joint].name + "' value" +

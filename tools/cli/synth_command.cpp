@@ -23,6 +23,7 @@ struct Args {
   std::string lambda, kappa, diameter = "1";
   std::string out, yaml, cognates_dir;
   std::string format = "csv";
+  std::string sense = "ccw";
   bool quiet = false;
 };
 
@@ -75,11 +76,19 @@ void RunDeadCentre(const Args& args) {
     s.Add("l4", d.l4, "length");
     s.Add("mu_min", RadToDeg(d.mu_min), "deg");
     s.Add("mu_min_at", RadToDeg(d.mu_min_at), "deg");
+    if (args.sense != "ccw" && args.sense != "cw") {
+      Complain("--sense must be ccw or cw");
+      throw Exit{kExitBadInput};
+    }
+    s.Add("sense", args.sense == "cw" ? -1 : 1, "ccw=1");
+    const Mechanism designed = args.sense == "cw" ? MirrorMechanism(CrankRockerMechanism(d)) : CrankRockerMechanism(d);
     if (!args.yaml.empty())
-      WriteOutput(args.yaml, WriteMechanismYaml(CrankRockerMechanism(d),
+      WriteOutput(args.yaml, WriteMechanismYaml(designed,
                                                 fmt::format("Crank-rocker from dead-centre synthesis (koppel synth): phi0 = {} deg, psi0 = {} deg, beta = {} deg.\n"
-                                                            "Input phi: crank angle against A0B0, counter-clockwise; extended dead centre at phi = beta.",
-                                                            RadToDeg(d.phi0), RadToDeg(d.psi0), RadToDeg(d.beta)),
+                                                            "Input phi: crank angle against A0B0, counter-clockwise; extended dead centre at phi = {}beta.\n"
+                                                            "The crank turns {} by phi0 from the folded to the extended dead centre, the rocker the other way by psi0.",
+                                                            RadToDeg(d.phi0), RadToDeg(d.psi0), RadToDeg(d.beta), args.sense == "cw" ? "-" : "",
+                                                            args.sense == "cw" ? "clockwise" : "counter-clockwise"),
                                                 {0, 360, 1}));
   } else if (args.type == "slider-crank") {
     const double stroke = Required("--stroke", args.stroke);
@@ -223,6 +232,8 @@ void AddSynthCommand(CLI::App& app) {
   dc->add_option("--psi0", args->psi0, "Rocker swing angle [deg] (crank-rocker)");
   dc->add_option("--beta", args->beta, "Angle B0 A0 B_a [deg] (crank-rocker; default: best mu_min)");
   dc->add_option("--frame", args->frame, "Frame length A0B0 (crank-rocker, default 1)");
+  dc->add_option("--sense", args->sense, "ccw (default) or cw: the crank's sense from the folded to the extended dead centre\n"
+                                         "(cw is the mirror image, the document's 'mathematisch negativ')");
   dc->add_option("--stroke", args->stroke, "Stroke s0 (slider-crank)");
   dc->add_option("--offset", args->offset, "Offset e (slider-crank; default: best mu_min)");
   dc->add_option("-o,--yaml", args->yaml, "Write the mechanism as a YAML file");

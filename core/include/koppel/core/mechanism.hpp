@@ -124,6 +124,11 @@ PointRef JointPointOn(const Joint& joint, int link);
 // The other joint of a binary link (exactly two joints), or -1.
 int OtherJointOfBinaryLink(const Mechanism& mechanism, int link, int joint);
 
+// The mirror image in the global x axis: every sense of rotation reversed (a crank turning
+// counter-clockwise turns clockwise). R joint values, link angles and R-drive inputs change sign;
+// slide displacements keep theirs.
+Mechanism MirrorMechanism(const Mechanism& mechanism);
+
 // Empty when the mechanism is consistent; otherwise one message per problem. The solver
 // requires a consistent mechanism (exactly one frame link, indices in range, unit P axes,
 // a drive on an existing joint).

@@ -57,7 +57,7 @@ struct FitReport {
   double cost = 0;                       // Ceres cost: 1/2 sum of weighted squares
   int iterations = 0;
   int start_index = 0;                   // which start gave the result
-  bool assembles_over_range = false;
+  bool assembles_over_range = false;     // over FitOptions' required range; preferred among starts
 };
 
 FitReport Fit(const MechanismBuilder& builder, const std::vector<FitParameter>& parameters, const std::vector<FitTarget>& targets,

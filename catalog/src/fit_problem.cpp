@@ -77,21 +77,25 @@ FitProblem ReadFitProblem(const std::string& path) {
       const YAML::Node t = targets[i];
       const std::string tpath = Index("targets", static_cast<int>(i));
       if (!r.ExpectMap(t, tpath)) continue;
-      r.CheckKeys(t, tpath, {"point", "output", "input", "at", "value", "weight", "free_input", "name"});
+      r.CheckKeys(t, tpath, {"point", "output", "deadcentre", "input", "at", "value", "weight", "free_input", "name"});
       FitTarget target;
       if (t["input"].IsDefined()) target.input = input_of(r.Number(t["input"], Child(tpath, "input")).value_or(0));
       else r.Error(t, Child(tpath, "input"), "missing required key 'input' (the start value when free_input)");
       if (t["weight"].IsDefined()) target.weight = r.Number(t["weight"], Child(tpath, "weight")).value_or(1);
       if (t["free_input"].IsDefined()) target.input_free = r.Flag(t["free_input"], Child(tpath, "free_input")).value_or(false);
-      const std::string name = t["point"].IsDefined() ? r.Text(t["point"], Child(tpath, "point")).value_or("")
-                                                      : t["output"].IsDefined() ? r.Text(t["output"], Child(tpath, "output")).value_or("") : "";
+      const char* kind = t["point"].IsDefined() ? "point" : t["deadcentre"].IsDefined() ? "deadcentre" : "output";
+      const std::string name = t[kind].IsDefined() ? r.Text(t[kind], Child(tpath, kind)).value_or("") : "";
       target.output = m.FindOutput(name);
       if (target.output < 0) {
         r.Error(t, tpath, "names no output '" + name + "' of " + relative + " (give point: or output:)");
         continue;
       }
       target.name = t["name"].IsDefined() ? r.Text(t["name"], Child(tpath, "name")).value_or(name) : name;
-      if (t["point"].IsDefined()) {
+      if (t["deadcentre"].IsDefined()) {
+        // the output's dead centre next to `input` must lie at `input`
+        target.deadcentre = true;
+        if (m.outputs[target.output].Components() != 1) r.Error(t["deadcentre"], Child(tpath, "deadcentre"), "needs a scalar output");
+      } else if (t["point"].IsDefined()) {
         target.point = true;
         if (m.outputs[target.output].kind != OutputKind::kPoint) r.Error(t["point"], Child(tpath, "point"), "'" + name + "' is not a point output");
         const YAML::Node at = r.Require(t, "at", tpath);

@@ -2,6 +2,7 @@
 #include "koppel/solver/fit.hpp"
 
 #include "koppel/solver/position.hpp"
+#include "koppel/solver/stationary.hpp"
 #include "koppel/solver/sweep.hpp"
 
 #include <ceres/ceres.h>
@@ -36,6 +37,11 @@ class TargetModel {
     const int n_unknowns = n_params + FreeInputs();
     int row = 0, free_index = 0;
     for (const FitTarget& t : targets_) {
+      if (t.deadcentre) {
+        if (!DeadCentre(m, solver, q, p, t, residuals + row, jacobian ? jacobian + row * n_unknowns : nullptr, n_unknowns)) return false;
+        ++row;
+        continue;
+      }
       const double input = t.input_free ? unknowns[n_params + free_index] : t.input;
       Continuation path(solver);
       if (!path.Start(m.hint.input, q).ok() || !path.AdvanceTo(input, 0.05).ok()) return false;
@@ -86,6 +92,52 @@ class TargetModel {
       }
       row += comps;
       if (t.input_free) ++free_index;
+    }
+    return true;
+  }
+
+  // One dead-centre target: residual = (input of the dead centre next to t.input) - t.input.
+  bool DeadCentre(const Mechanism& m, PositionSolver& solver, const Eigen::VectorXd& q_hint, const std::vector<double>& p,
+                  const FitTarget& t, double* residual, double* jacobian_row, int n_unknowns) const {
+    Continuation path(solver);
+    if (!path.Start(m.hint.input, q_hint).ok() || !path.AdvanceTo(t.input, 0.05).ok()) return false;
+    const StationaryPoint dc = RefineStationary(m, t.output, t.component, path.input(), path.q());
+    if (!dc.found || dc.second == 0.0) return false;
+    *residual = t.weight * (dc.input - t.input);
+    if (!jacobian_row) return true;
+    std::fill(jacobian_row, jacobian_row + n_unknowns, 0.0);
+    // dq/dp at the dead centre needs the Jacobian factorised there
+    Eigen::VectorXd q = dc.q;
+    if (!solver.Correct(dc.input, q).ok()) return false;
+    const ConstraintSystem& system = solver.system();
+    Eigen::VectorXd r_plus(system.NumEquations()), r_minus(system.NumEquations());
+    std::string error;
+    for (size_t j = 0; j < p.size(); ++j) {
+      const double h = kParameterStep * std::max(1.0, std::abs(p[j]));
+      std::vector<double> pp = p, pm = p;
+      pp[j] += h;
+      pm[j] -= h;
+      Mechanism mp, mm;
+      if (!builder_(pp, &mp, &error) || !builder_(pm, &mm, &error)) return false;
+      ConstraintSystem(mp).Residuals(q.data(), dc.input, r_plus.data());
+      ConstraintSystem(mm).Residuals(q.data(), dc.input, r_minus.data());
+      const Eigen::VectorXd dq = -solver.SolveWithJacobian((r_plus - r_minus) / (2 * h));
+      // y' of each perturbed mechanism at the same input, from its predicted pose
+      double slope[2];
+      for (int side = 0; side < 2; ++side) {
+        const Mechanism& perturbed = side == 0 ? mp : mm;
+        PositionSolver ps(perturbed);
+        Eigen::VectorXd qs = q + (side == 0 ? h : -h) * dq;
+        if (!ps.Correct(dc.input, qs).ok()) return false;
+        Eigen::MatrixXd series;
+        ps.Series(1, series);
+        std::vector<double> d(ps.OutputWidth(1));
+        ps.OutputDerivatives(series, 1, d.data());
+        int column = 0;
+        for (int o = 0; o < t.output; ++o) column += perturbed.outputs[o].Components() * 2;
+        slope[side] = d[column + t.component * 2 + 1];
+      }
+      jacobian_row[j] = -t.weight * ((slope[0] - slope[1]) / (2 * h)) / dc.second;
     }
     return true;
   }

@@ -107,3 +107,32 @@ TEST_CASE("targets that cannot all be met: the residuals say so", "[fit]") {
 }
 
 }  // namespace koppel
+
+namespace koppel {
+
+TEST_CASE("dead-centre targets: a crank-rocker whose rocker has its dead centres where asked", "[fit]") {
+  // reference: the dead-centre synthesis answer for phi0 = 164 deg, psi0 = 60 deg, beta = 30 deg has
+  // its extended dead centre at phi = 30 deg and the folded one at 30 - 164 = -134 deg; start from
+  // other rocker and coupler lengths and ask for dead centres there (plus the swing as a value)
+  const MechanismBuilder builder = [](const std::vector<double>& p, Mechanism* m, std::string*) {
+    *m = test::FourBar(0.33200614543343, p[0], p[1], 1.0, 0.1, 0.0, 1);
+    return true;
+  };
+  std::vector<FitTarget> targets(2);
+  targets[0].name = "extended";
+  targets[0].output = 1;  // psi
+  targets[0].deadcentre = true;
+  targets[0].input = DegToRad(30);
+  targets[1] = targets[0];
+  targets[1].name = "folded";
+  targets[1].input = DegToRad(-134 + 360);
+  const FitReport r = Fit(builder, {{"l2", 1.0, 0.5, 2.0}, {"l3", 0.8, 0.3, 1.5}}, targets, FitOptions{});
+  REQUIRE(r.ok);
+  // the answer of the synthesis (re-analysed there to 1e-9): l2 = 1.05178..., l3 = 0.71977...
+  CHECK(r.values[0] == Approx(1.0517844152462932).margin(1e-7));
+  CHECK(r.values[1] == Approx(0.7197782698128629).margin(1e-7));
+  for (double residual : r.target_residuals) CHECK(residual < 1e-9);
+  CHECK(r.iterations < 25);
+}
+
+}  // namespace koppel

@@ -8,6 +8,9 @@
 // factorised; dF/dp is one central difference of the residual function at the fixed pose (no
 // Newton inside a difference), and the output's total derivative is one directional difference
 // along (dq/dp, e_p). A free input adds dy/dinput, the exact first-order transfer function.
+// A dead-centre target differentiates y' = 0 implicitly: dy'/dp at the fixed input comes from
+// the poses q +- h dq/dp (first-order IFT predictions, polished by the factorisation's Newton
+// step) of the perturbed mechanisms.
 #pragma once
 
 #include "koppel/core/mechanism.hpp"
@@ -33,6 +36,9 @@ struct FitTarget {
   int output = -1;       // output index in the built mechanism
   int component = 0;     // 0 or 1 (point x, y); a point target uses both
   bool point = false;    // true: both components against `position`
+  // true: the output's dead centre nearest `input` must lie at `input` (Totlage at a prescribed
+  // crank angle); its sensitivity is d(input_dc)/dp = -(d y'/dp) / y'' at the dead centre
+  bool deadcentre = false;
   double input = 0;      // radians (R drive) or length; the start value when free
   bool input_free = false;
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // point targets

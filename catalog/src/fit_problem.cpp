@@ -77,13 +77,21 @@ FitProblem ReadFitProblem(const std::string& path) {
       const YAML::Node t = targets[i];
       const std::string tpath = Index("targets", static_cast<int>(i));
       if (!r.ExpectMap(t, tpath)) continue;
-      r.CheckKeys(t, tpath, {"point", "output", "deadcentre", "input", "at", "value", "weight", "free_input", "name"});
+      r.CheckKeys(t, tpath, {"point", "output", "deadcentre", "straight", "input", "from", "to", "samples", "at", "value", "weight",
+                             "free_input", "name"});
       FitTarget target;
-      if (t["input"].IsDefined()) target.input = input_of(r.Number(t["input"], Child(tpath, "input")).value_or(0));
+      if (t["straight"].IsDefined()) {
+        // a straight line over [from, to]: `input` is `from`
+        target.straight = true;
+        target.input = input_of(r.Number(r.Require(t, "from", tpath), Child(tpath, "from")).value_or(0));
+        target.to = input_of(r.Number(r.Require(t, "to", tpath), Child(tpath, "to")).value_or(0));
+        target.samples = t["samples"].IsDefined() ? r.Count(t["samples"], Child(tpath, "samples")).value_or(0) : 21;
+        if (target.samples < 3) r.Error(t, Child(tpath, "samples"), "a straight line needs at least 3 samples");
+      } else if (t["input"].IsDefined()) target.input = input_of(r.Number(t["input"], Child(tpath, "input")).value_or(0));
       else r.Error(t, Child(tpath, "input"), "missing required key 'input' (the start value when free_input)");
       if (t["weight"].IsDefined()) target.weight = r.Number(t["weight"], Child(tpath, "weight")).value_or(1);
       if (t["free_input"].IsDefined()) target.input_free = r.Flag(t["free_input"], Child(tpath, "free_input")).value_or(false);
-      const char* kind = t["point"].IsDefined() ? "point" : t["deadcentre"].IsDefined() ? "deadcentre" : "output";
+      const char* kind = t["point"].IsDefined() ? "point" : t["deadcentre"].IsDefined() ? "deadcentre" : t["straight"].IsDefined() ? "straight" : "output";
       const std::string name = t[kind].IsDefined() ? r.Text(t[kind], Child(tpath, kind)).value_or("") : "";
       target.output = m.FindOutput(name);
       if (target.output < 0) {
@@ -91,7 +99,9 @@ FitProblem ReadFitProblem(const std::string& path) {
         continue;
       }
       target.name = t["name"].IsDefined() ? r.Text(t["name"], Child(tpath, "name")).value_or(name) : name;
-      if (t["deadcentre"].IsDefined()) {
+      if (target.straight) {
+        if (m.outputs[target.output].kind != OutputKind::kPoint) r.Error(t["straight"], Child(tpath, "straight"), "'" + name + "' is not a point output");
+      } else if (t["deadcentre"].IsDefined()) {
         // the output's dead centre next to `input` must lie at `input`
         target.deadcentre = true;
         if (m.outputs[target.output].Components() != 1) r.Error(t["deadcentre"], Child(tpath, "deadcentre"), "needs a scalar output");

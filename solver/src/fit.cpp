@@ -6,6 +6,7 @@
 #include "koppel/solver/sweep.hpp"
 
 #include <ceres/ceres.h>
+#include <Eigen/Eigenvalues>
 
 #include <cmath>
 #include <iostream>
@@ -42,6 +43,11 @@ class TargetModel {
         ++row;
         continue;
       }
+      if (t.straight) {
+        if (!Straight(m, solver, q, p, t, residuals + row, jacobian ? jacobian + row * n_unknowns : nullptr, n_unknowns)) return false;
+        row += t.samples;
+        continue;
+      }
       const double input = t.input_free ? unknowns[n_params + free_index] : t.input;
       Continuation path(solver);
       if (!path.Start(m.hint.input, q).ok() || !path.AdvanceTo(input, 0.05).ok()) return false;
@@ -57,28 +63,12 @@ class TargetModel {
       if (jacobian) {
         for (int c = 0; c < comps; ++c) std::fill(jacobian + (row + c) * n_unknowns, jacobian + (row + c + 1) * n_unknowns, 0.0);
         // parameters: IFT
-        const ConstraintSystem& system = solver.system();
-        Eigen::VectorXd r_plus(system.NumEquations()), r_minus(system.NumEquations()), dq(system.NumCoordinates());
-        for (int j = 0; j < n_params; ++j) {
-          const double h = kParameterStep * std::max(1.0, std::abs(p[j]));
-          std::vector<double> pp = p, pm = p;
-          pp[j] += h;
-          pm[j] -= h;
-          Mechanism mp, mm;
-          if (!builder_(pp, &mp, &error) || !builder_(pm, &mm, &error)) return false;
-          const ConstraintSystem sp(mp), sm(mm);
-          sp.Residuals(qt.data(), input, r_plus.data());
-          sm.Residuals(qt.data(), input, r_minus.data());
-          const Eigen::VectorXd dF = (r_plus - r_minus) / (2 * h);
-          dq = -solver.SolveWithJacobian(dF);
-          // total derivative of the output along (dq/dp_j, e_j): one directional difference
-          const Eigen::VectorXd q_plus = qt + h * dq, q_minus = qt - h * dq;
-          for (int c = 0; c < comps; ++c) {
-            const int comp = t.point ? c : t.component;
-            const double d = (sp.Output(t.output, comp, q_plus.data()) - sm.Output(t.output, comp, q_minus.data())) / (2 * h);
-            jacobian[(row + c) * n_unknowns + j] = t.weight * d;
-          }
+        Eigen::MatrixXd d;
+        if (!OutputSensitivity(solver, qt, input, p, t.output, t.point ? 0 : t.component, comps, &d)) return false;
+        for (int c = 0; c < comps; ++c) {
+          for (int j = 0; j < n_params; ++j) jacobian[(row + c) * n_unknowns + j] = t.weight * d(c, j);
         }
+        const ConstraintSystem& system = solver.system();
         if (t.input_free) {
           // dy/dinput: the exact first-order transfer function, through the output's gradient
           const double h = 1e-7;
@@ -96,6 +86,89 @@ class TargetModel {
     return true;
   }
 
+  // dq/dp_j at a converged pose (the solver's factorisation is at q): -J^-1 dF/dp_j, with dF/dp_j
+  // one central difference of the residuals of the rebuilt mechanisms at the fixed pose.
+  bool PoseSensitivity(const PositionSolver& solver, const Eigen::VectorXd& q, double input, const std::vector<double>& p, int j,
+                       Mechanism* plus, Mechanism* minus, Eigen::VectorXd* dq, double* h) const {
+    *h = kParameterStep * std::max(1.0, std::abs(p[j]));
+    std::vector<double> pp = p, pm = p;
+    pp[j] += *h;
+    pm[j] -= *h;
+    std::string error;
+    if (!builder_(pp, plus, &error) || !builder_(pm, minus, &error)) return false;
+    Eigen::VectorXd r_plus(solver.system().NumEquations()), r_minus(solver.system().NumEquations());
+    ConstraintSystem(*plus).Residuals(q.data(), input, r_plus.data());
+    ConstraintSystem(*minus).Residuals(q.data(), input, r_minus.data());
+    *dq = -solver.SolveWithJacobian((r_plus - r_minus) / (2 * *h));
+    return true;
+  }
+
+  // d(output components)/dp at a converged pose: one directional difference of the output along
+  // (dq/dp_j, e_j) per parameter. `d` is comps x parameters.
+  bool OutputSensitivity(const PositionSolver& solver, const Eigen::VectorXd& q, double input, const std::vector<double>& p,
+                         int output, int first_component, int comps, Eigen::MatrixXd* d) const {
+    d->resize(comps, static_cast<int>(p.size()));
+    for (int j = 0; j < static_cast<int>(p.size()); ++j) {
+      Mechanism mp, mm;
+      Eigen::VectorXd dq;
+      double h = 0;
+      if (!PoseSensitivity(solver, q, input, p, j, &mp, &mm, &dq, &h)) return false;
+      const ConstraintSystem sp(mp), sm(mm);
+      const Eigen::VectorXd q_plus = q + h * dq, q_minus = q - h * dq;
+      for (int c = 0; c < comps; ++c)
+        (*d)(c, j) = (sp.Output(output, first_component + c, q_plus.data()) - sm.Output(output, first_component + c, q_minus.data())) / (2 * h);
+    }
+    return true;
+  }
+
+  // One straight-line target: distances of the samples from their total-least-squares line.
+  bool Straight(const Mechanism& m, PositionSolver& solver, const Eigen::VectorXd& q_hint, const std::vector<double>& p,
+                const FitTarget& t, double* residuals, double* jacobian, int n_unknowns) const {
+    const int n = t.samples;
+    std::vector<Eigen::Vector2d> points(n);
+    std::vector<Eigen::MatrixXd> sensitivity(n);
+    Continuation path(solver);
+    if (!path.Start(m.hint.input, q_hint).ok()) return false;
+    for (int i = 0; i < n; ++i) {
+      const double input = t.input + (t.to - t.input) * i / (n - 1);
+      if (!path.AdvanceTo(input, 0.05).ok()) return false;
+      const Eigen::VectorXd& qi = path.q();
+      points[i] = {solver.system().Output(t.output, 0, qi.data()), solver.system().Output(t.output, 1, qi.data())};
+      if (jacobian && !OutputSensitivity(solver, qi, input, p, t.output, 0, 2, &sensitivity[i])) return false;
+    }
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (const Eigen::Vector2d& x : points) centre += x / n;
+    Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+    for (const Eigen::Vector2d& x : points) scatter += (x - centre) * (x - centre).transpose();
+    // the line's normal: the eigenvector of the smallest eigenvalue of the scatter matrix
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(scatter);
+    const Eigen::Vector2d normal = eigen.eigenvectors().col(0), along = eigen.eigenvectors().col(1);
+    for (int i = 0; i < n; ++i) residuals[i] = t.weight * normal.dot(points[i] - centre);
+    if (!jacobian) return true;
+    // the line moves with the points: its centroid by the mean sensitivity, its angle by
+    // d theta = sum(a_i n.e_i + b_i u.e_i) / sum(a_i^2 - b_i^2) (first-order change of the
+    // total-least-squares direction), so d b_i = n.e_i - a_i d theta with e_i = dK_i - mean dK
+    double spread = 0;
+    for (const Eigen::Vector2d& x : points) spread += std::pow(along.dot(x - centre), 2) - std::pow(normal.dot(x - centre), 2);
+    for (int j = 0; j < static_cast<int>(p.size()); ++j) {
+      Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+      for (int i = 0; i < n; ++i) mean += sensitivity[i].col(j) / n;
+      double turn = 0;
+      for (int i = 0; i < n; ++i) {
+        const Eigen::Vector2d e = sensitivity[i].col(j) - mean, x = points[i] - centre;
+        turn += (along.dot(x) * normal.dot(e) + normal.dot(x) * along.dot(e)) / spread;
+      }
+      for (int i = 0; i < n; ++i) {
+        const Eigen::Vector2d e = sensitivity[i].col(j) - mean;
+        jacobian[i * n_unknowns + j] = t.weight * (normal.dot(e) - along.dot(points[i] - centre) * turn);
+      }
+    }
+    for (int i = 0; i < n; ++i) {
+      for (int j = static_cast<int>(p.size()); j < n_unknowns; ++j) jacobian[i * n_unknowns + j] = 0.0;
+    }
+    return true;
+  }
+
   // One dead-centre target: residual = (input of the dead centre next to t.input) - t.input.
   bool DeadCentre(const Mechanism& m, PositionSolver& solver, const Eigen::VectorXd& q_hint, const std::vector<double>& p,
                   const FitTarget& t, double* residual, double* jacobian_row, int n_unknowns) const {
@@ -109,19 +182,11 @@ class TargetModel {
     // dq/dp at the dead centre needs the Jacobian factorised there
     Eigen::VectorXd q = dc.q;
     if (!solver.Correct(dc.input, q).ok()) return false;
-    const ConstraintSystem& system = solver.system();
-    Eigen::VectorXd r_plus(system.NumEquations()), r_minus(system.NumEquations());
-    std::string error;
     for (size_t j = 0; j < p.size(); ++j) {
-      const double h = kParameterStep * std::max(1.0, std::abs(p[j]));
-      std::vector<double> pp = p, pm = p;
-      pp[j] += h;
-      pm[j] -= h;
       Mechanism mp, mm;
-      if (!builder_(pp, &mp, &error) || !builder_(pm, &mm, &error)) return false;
-      ConstraintSystem(mp).Residuals(q.data(), dc.input, r_plus.data());
-      ConstraintSystem(mm).Residuals(q.data(), dc.input, r_minus.data());
-      const Eigen::VectorXd dq = -solver.SolveWithJacobian((r_plus - r_minus) / (2 * h));
+      Eigen::VectorXd dq;
+      double h = 0;
+      if (!PoseSensitivity(solver, q, dc.input, p, static_cast<int>(j), &mp, &mm, &dq, &h)) return false;
       // y' of each perturbed mechanism at the same input, from its predicted pose
       double slope[2];
       for (int side = 0; side < 2; ++side) {
@@ -144,7 +209,7 @@ class TargetModel {
 
   int Residuals() const {
     int n = 0;
-    for (const FitTarget& t : targets_) n += t.point ? 2 : 1;
+    for (const FitTarget& t : targets_) n += t.straight ? t.samples : t.point ? 2 : 1;
     return n;
   }
   int FreeInputs() const {
@@ -241,9 +306,11 @@ FitReport Fit(const MechanismBuilder& builder, const std::vector<FitParameter>& 
     int row = 0, free_index = 0;
     for (const FitTarget& t : targets) {
       const double w = t.weight != 0 ? t.weight : 1;
-      best.target_residuals.push_back(t.point ? std::hypot(r[row], r[row + 1]) / std::abs(w) : std::abs(r[row]) / std::abs(w));
+      double residual = t.point ? std::hypot(r[row], r[row + 1]) : std::abs(r[row]);
+      for (int k = 1; t.straight && k < t.samples; ++k) residual = std::max(residual, std::abs(r[row + k]));
+      best.target_residuals.push_back(residual / std::abs(w));
       best.fitted_inputs.push_back(t.input_free ? x[n + free_index++] : t.input);
-      row += t.point ? 2 : 1;
+      row += t.straight ? t.samples : t.point ? 2 : 1;
     }
   }
   if (!best.ok) {

@@ -39,6 +39,12 @@ struct FitTarget {
   // true: the output's dead centre nearest `input` must lie at `input` (Totlage at a prescribed
   // crank angle); its sensitivity is d(input_dc)/dp = -(d y'/dp) / y'' at the dead centre
   bool deadcentre = false;
+  // true: the point output over [input, to] (`samples` samples) must lie on a straight line: the
+  // residuals are the samples' distances from their total-least-squares line (differentiated with
+  // the line's first-order motion: centroid and direction follow the samples)
+  bool straight = false;
+  double to = 0;
+  int samples = 0;
   double input = 0;      // radians (R drive) or length; the start value when free
   bool input_free = false;
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // point targets
@@ -58,7 +64,7 @@ struct FitReport {
   bool ok = false;
   std::string message;
   std::vector<double> values;            // fitted parameters
-  std::vector<double> target_residuals;  // per target: |error| (point: distance), unweighted
+  std::vector<double> target_residuals;  // per target: |error| (point: distance; straight: the largest deviation), unweighted
   std::vector<double> fitted_inputs;     // per target (free ones moved)
   double cost = 0;                       // Ceres cost: 1/2 sum of weighted squares
   int iterations = 0;

@@ -23,6 +23,7 @@ Continuation::Continuation(PositionSolver& solver, ContinuationOptions options)
     : solver_(solver), options_(options) {
   q_.resize(solver.NumCoordinates());
   q_trial_.resize(solver.NumCoordinates());
+  predicted_.resize(solver.NumCoordinates());
 }
 
 SolveReport Continuation::Start(double input, const Eigen::VectorXd& q) {
@@ -59,11 +60,11 @@ SolveReport Continuation::AdvanceTo(double target, double max_step) {
     const Eigen::MatrixXd& c = Series(std::max(series_order_, 2));
     q_trial_ = c.col(0) + h * c.col(1) + (h * h) * c.col(2);
     const int sign_before = solver_.JacobianSign();
-    const Eigen::VectorXd predicted = q_trial_;
+    predicted_ = q_trial_;  // a member: no allocation inside a sweep
     SolveReport report = solver_.Correct(next, q_trial_);
     const bool flipped = report.ok() && sign_before != 0 && solver_.JacobianSign() != sign_before;
     const bool accepted = report.ok() && !flipped && report.iterations <= options_.max_corrector_iterations &&
-                          (q_trial_ - predicted).lpNorm<Eigen::Infinity>() <= options_.max_correction * scale;
+                          (q_trial_ - predicted_).lpNorm<Eigen::Infinity>() <= options_.max_correction * scale;
     if (accepted) {
       q_ = q_trial_;
       input_ = next;

@@ -47,7 +47,7 @@ class Continuation {
   PositionSolver& solver_;
   ContinuationOptions options_;
   double input_ = 0.0;
-  Eigen::VectorXd q_, q_trial_;
+  Eigen::VectorXd q_, q_trial_, predicted_;
   Eigen::MatrixXd series_;
   int series_order_ = -1;
 };

@@ -1,0 +1,45 @@
+// "No heap allocation inside a sweep": the number of allocations of a sweep must not grow with
+// its number of samples. Counts every operator new of this test executable (harmless for the
+// other tests, which only see a counter go up).
+#include "koppel/core/angles.hpp"
+#include "koppel/solver/sweep.hpp"
+#include "support/mechanisms.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+namespace {
+std::atomic<long> g_allocations{0};
+}
+
+void* operator new(std::size_t size) {
+  ++g_allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace koppel {
+
+TEST_CASE("a sweep allocates the same whether it has 361 or 3601 samples", "[sweep][allocation]") {
+  const Mechanism m = test::ProportionalLinkage(1.0, 0.5, 1.83);  // 15 coordinates, two loops
+  long counts[2];
+  int k = 0;
+  for (double step : {1.0, 0.1}) {
+    SweepOptions o;
+    o.step = DegToRad(step);
+    o.order = 4;
+    const long before = g_allocations;
+    const SweepResult r = Sweep(m, o);
+    counts[k++] = g_allocations - before;
+    REQUIRE(r.complete());
+  }
+  INFO("allocations: " << counts[0] << " and " << counts[1]);
+  CHECK(counts[0] == counts[1]);
+}
+
+}  // namespace koppel

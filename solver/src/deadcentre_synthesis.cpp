@@ -146,6 +146,20 @@ SliderCrankDesign BestSliderCrank(double phi0, double stroke) {
   return r;
 }
 
+SliderCrankDesign SliderCrankFromBeta(double phi0, double stroke, double beta) {
+  const double theta = std::abs(phi0 - kPi);
+  const double denominator = 1 / std::tan(beta) - 1 / std::tan(beta + theta);
+  if (!(beta > 0) || !(beta + theta < kPi / 2) || !(denominator > 0)) {
+    SliderCrankDesign r;
+    r.phi0 = phi0;
+    r.stroke = stroke;
+    r.beta = beta;
+    r.message = "beta must be positive and beta + |phi0 - 180 deg| below 90 deg";
+    return r;
+  }
+  return SliderCrankFromDeadCentres(phi0, stroke, stroke / denominator);
+}
+
 Mechanism CrankRockerMechanism(const CrankRockerDesign& d) {
   Mechanism m;
   m.name = "crank-rocker";

@@ -91,6 +91,21 @@ TEST_CASE("synthesised slider-cranks have exactly the requested phi0 and stroke"
   }
 }
 
+TEST_CASE("slider-crank with beta free instead of the offset", "[synthesis]") {
+  const SliderCrankDesign by_e = SliderCrankFromDeadCentres(DegToRad(120), 1.0, 0.16);
+  REQUIRE(by_e.ok);
+  // the same design from its beta: the offset, and so every length, comes back
+  const SliderCrankDesign by_beta = SliderCrankFromBeta(DegToRad(120), 1.0, by_e.beta);
+  REQUIRE(by_beta.ok);
+  CHECK(by_beta.e == Approx(0.16).margin(1e-12));
+  CHECK(by_beta.l1 == Approx(by_e.l1).margin(1e-12));
+  CHECK(by_beta.l2 == Approx(by_e.l2).margin(1e-12));
+  const DeadCentreReport r = Reanalyse(SliderCrankMechanism(by_beta), 0);
+  CHECK(std::abs(Wrap2Pi(r.phi_a - r.phi_i) - DegToRad(120)) < kReanalysed);
+  CHECK(std::abs(r.stroke - 1.0) < kReanalysed);
+  CHECK_FALSE(SliderCrankFromBeta(DegToRad(120), 1.0, DegToRad(40)).ok);  // beta + 60 deg >= 90 deg
+}
+
 TEST_CASE("seed 002 chart reading: phi0 = 120 -> e/s0 = 0.16, mu_min about 12 deg", "[synthesis]") {
   const SliderCrankDesign best = BestSliderCrank(DegToRad(120), 1.0);
   REQUIRE(best.ok);

@@ -92,8 +92,13 @@ void RunDeadCentre(const Args& args) {
                                                 {0, 360, 1}));
   } else if (args.type == "slider-crank") {
     const double stroke = Required("--stroke", args.stroke);
-    const SliderCrankDesign d = args.offset.empty() ? BestSliderCrank(phi0, stroke)
-                                                    : SliderCrankFromDeadCentres(phi0, stroke, ParseNumberFlag("--offset", args.offset));
+    if (!args.offset.empty() && !args.beta.empty()) {
+      Complain("give --offset or --beta, not both");
+      throw Exit{kExitBadInput};
+    }
+    const SliderCrankDesign d = !args.offset.empty() ? SliderCrankFromDeadCentres(phi0, stroke, ParseNumberFlag("--offset", args.offset))
+                                : !args.beta.empty() ? SliderCrankFromBeta(phi0, stroke, DegToRad(ParseNumberFlag("--beta", args.beta)))
+                                                     : BestSliderCrank(phi0, stroke);
     if (!d.ok) {
       Complain(d.message);
       throw Exit{kExitFailed};
@@ -230,7 +235,8 @@ void AddSynthCommand(CLI::App& app) {
   dc->add_option("type", args->type, "crank-rocker or slider-crank")->required();
   dc->add_option("--phi0", args->phi0, "Crank angle between the dead centres [deg]")->required();
   dc->add_option("--psi0", args->psi0, "Rocker swing angle [deg] (crank-rocker)");
-  dc->add_option("--beta", args->beta, "Angle B0 A0 B_a [deg] (crank-rocker; default: best mu_min)");
+  dc->add_option("--beta", args->beta, "crank-rocker: angle B0 A0 B_a; slider-crank: angle between the slide line and A0B_a\n"
+                                       "[deg] (default: best mu_min)");
   dc->add_option("--frame", args->frame, "Frame length A0B0 (crank-rocker, default 1)");
   dc->add_option("--sense", args->sense, "ccw (default) or cw: the crank's sense from the folded to the extended dead centre\n"
                                          "(cw is the mirror image, the document's 'mathematisch negativ')");

@@ -46,6 +46,9 @@ struct SliderCrankDesign {
 
 SliderCrankDesign SliderCrankFromDeadCentres(double phi0, double stroke, double offset);
 SliderCrankDesign BestSliderCrank(double phi0, double stroke);
+// With beta (angle between the slide line and A0B_a) free instead of e: B_a = (e cot beta, e),
+// B_i = (e cot(beta + theta), e), so e = s0 / (cot beta - cot(beta + theta)).
+SliderCrankDesign SliderCrankFromBeta(double phi0, double stroke, double beta);
 
 // Mechanisms in koppel's conventions: the crank-rocker with A0 = 0, B0 = (l4, 0), input = crank
 // angle against A0B0, assembled with B on the side the synthesis put B_a; outputs psi (rocker

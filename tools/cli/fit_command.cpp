@@ -82,7 +82,8 @@ void AddFitSubcommand(CLI::App& synth) {
   CLI::App* cmd = synth.add_subcommand(
       "fit",
       "Least-squares fit of any mechanism file to targets with Ceres: precision points of a point output (inputs\n"
-      "prescribed or free) and values of a scalar output (function generation). The problem file names the\n"
+      "prescribed or free), values of a scalar output (function generation), dead centres at given inputs, and a\n"
+      "point on a straight line over an input range. The problem file names the\n"
       "mechanism, the free parameters with bounds and starts, and the targets (see catalog/include/koppel/catalog/\n"
       "fit_problem.hpp or README). Gradients through the solver by the implicit-function theorem. Prints per target\n"
       "its residual, the fitted parameters, whether the drive turns fully, and mu_min for transmission outputs.\n"

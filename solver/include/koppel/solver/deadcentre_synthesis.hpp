@@ -7,8 +7,10 @@
 // rotation of B about B0 by psi0 give a linear system for A0B_a and A0B_i; this is the
 // document's construction (pole P, circles k_a, k_b) written as algebra, and every beta on the
 // arc LE gives a crank-rocker with exactly phi0 and psi0.
-// Conventions (checked by re-analysis in the tests): the crank turns counter-clockwise from the
-// extended through phi0 to the folded dead centre... see CrankRockerSenses in the .cpp.
+// Senses (checked by re-analysis in the tests): from the folded to the extended dead centre the
+// crank turns counter-clockwise by phi0 and the rocker clockwise by psi0; the extended dead centre
+// lies at crank angle beta. MirrorMechanism gives the opposite senses (the document's negative
+// rotation). This pairing is the one whose best beta reproduces the document's max mu_min.
 //
 // Slider-crank: A0 = (0, 0), slide line y = e. The rays A0B_a and A0B_i enclose |phi0 - 180 deg|;
 // with the stroke s0 = B_a - B_i and the offset e this fixes l1 and l2.

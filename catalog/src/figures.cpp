@@ -90,7 +90,7 @@ CheckOutcome EvaluateFigure(const MechanismFile& file, const CatalogCard& card, 
 
   std::optional<double> value;
   const std::string& q = f.quantity;
-  if (q == "min" || q == "max" || q == "argmin" || q == "argmax" || q == "stroke" || q == "phase_ratio") {
+  if (q == "min" || q == "max" || q == "argmin" || q == "argmax" || q == "stroke") {
     SweepOptions options;
     options.from = input_internal(card.from);
     options.to = input_internal(card.to);
@@ -111,14 +111,6 @@ CheckOutcome EvaluateFigure(const MechanismFile& file, const CatalogCard& card, 
     if (q == "argmin") value = in_unit(lo->input);
     if (q == "argmax") value = in_unit(hi->input);
     if (q == "stroke") value = in_unit(hi->value - lo->value);
-    if (q == "phase_ratio") {
-      // crank angle of the forward stroke, from the maximum (extended dead centre of a slider)
-      // to the minimum in the positive sense, and its ratio to the return stroke
-      const double turn = angle_input ? 2 * kPi : 0.0;
-      if (turn == 0.0) Fail(file, f, "a phase ratio needs a rotating drive");
-      const double forward = std::fmod(std::fmod(lo->input - hi->input, turn) + turn, turn);
-      value = forward / (turn - forward);
-    }
   } else if (q == "value" || q == "derivative") {
     const auto at_text = f.args.find("at");
     if (at_text == f.args.end()) Fail(file, f, "quantity '" + q + "' needs 'at'");
@@ -135,7 +127,7 @@ CheckOutcome EvaluateFigure(const MechanismFile& file, const CatalogCard& card, 
     }
     const double v = sweep.outputs(0, OutputColumn(m, f.output, f.component, options.order, options.order));
     value = (q == "value" && angle_output) ? in_unit(v) : v;
-  } else if (q == "deadcentre_span" || q == "deadcentre_phi_a" || q == "deadcentre_phi_i") {
+  } else if (q == "deadcentre_span" || q == "deadcentre_phi_a" || q == "deadcentre_phi_i" || q == "phase_ratio") {
     // dead centres of the output (dead_centres.hpp): the crank angle from the folded to the
     // extended dead centre, counter-clockwise, or either dead centre's input
     SweepOptions options;
@@ -149,7 +141,12 @@ CheckOutcome EvaluateFigure(const MechanismFile& file, const CatalogCard& card, 
     }
     const double turn = 2 * kPi;
     const double span = std::fmod(std::fmod(r.phi_a - r.phi_i, turn) + turn, turn);
-    value = in_unit(q == "deadcentre_span" ? span : q == "deadcentre_phi_a" ? std::fmod(r.phi_a + turn, turn) : std::fmod(r.phi_i + turn, turn));
+    if (q == "phase_ratio") {
+      if (!angle_input) Fail(file, f, "a phase ratio needs a rotating drive");
+      value = r.phase_ratio;  // phi_H / (360 deg - phi_H), phi_H from phi_a to phi_i counter-clockwise
+    } else {
+      value = in_unit(q == "deadcentre_span" ? span : q == "deadcentre_phi_a" ? std::fmod(r.phi_a + turn, turn) : std::fmod(r.phi_i + turn, turn));
+    }
   } else if (q == "proportionality_ds" || q == "proportionality_qp") {
     // seed 001's reading example: band about the flat-point tangent (proportionality.hpp)
     const auto from = f.args.find("from"), to = f.args.find("to");

@@ -6,17 +6,6 @@
 namespace koppel {
 namespace {
 
-// The mechanism with one output: the traced point.
-Mechanism WithPointOutput(const Mechanism& m, const PointRef& point) {
-  Mechanism copy = m;
-  Output o;
-  o.name = "curve";
-  o.kind = OutputKind::kPoint;
-  o.p = point;
-  copy.outputs = {o};
-  return copy;
-}
-
 // |dK| over one interval: 3-point Gauss–Legendre on the derivative of the cubic Hermite
 // interpolant through (p0, h d0) and (p1, h d1), in the interval's own parameter s in [0, 1].
 double ArcOfInterval(const Eigen::Vector2d& p0, const Eigen::Vector2d& d0, const Eigen::Vector2d& p1, const Eigen::Vector2d& d1, double h) {
@@ -33,6 +22,16 @@ double ArcOfInterval(const Eigen::Vector2d& p0, const Eigen::Vector2d& d0, const
 }
 
 }  // namespace
+
+Mechanism WithPointOutput(const Mechanism& m, const PointRef& point) {
+  Mechanism copy = m;
+  Output o;
+  o.name = "curve";
+  o.kind = OutputKind::kPoint;
+  o.p = point;
+  copy.outputs = {o};
+  return copy;
+}
 
 CouplerCurve TraceCurve(const Mechanism& m, const PointRef& point, const SweepOptions& range) {
   const Mechanism traced = WithPointOutput(m, point);

@@ -1,5 +1,6 @@
 #include "koppel/solver/mzc_synthesis.hpp"
 
+#include "koppel/solver/coupler_curve.hpp"
 #include "koppel/solver/sweep.hpp"
 
 #include <cmath>
@@ -85,12 +86,7 @@ Mechanism MzcMechanism(const MzcDesign& d) {
 }
 
 int TangentContactOrder(const Mechanism& m, const PointRef& point, double at, double tolerance) {
-  Mechanism traced = m;
-  Output o;
-  o.name = "K";
-  o.kind = OutputKind::kPoint;
-  o.p = point;
-  traced.outputs = {o};
+  const Mechanism traced = WithPointOutput(m, point);
   SweepOptions here;
   here.from = here.to = at;
   here.order = kMaxOrder;

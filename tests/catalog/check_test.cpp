@@ -4,25 +4,15 @@
 #include "koppel/catalog/check.hpp"
 
 #include "support/temp_file.hpp"
+#include "support/text.hpp"
 
 #include <catch2/catch.hpp>
 
 namespace koppel {
 namespace {
 
-// Replaces the first occurrence of `from` (which must exist) in `text`.
-std::string Replace(std::string text, const std::string& from, const std::string& to) {
-  const auto pos = text.find(from);
-  REQUIRE(pos != std::string::npos);
-  return text.replace(pos, from.size(), to);
-}
-
-// 1-based line of the first occurrence of `needle`.
-int LineOf(const std::string& text, const std::string& needle) {
-  const auto pos = text.find(needle);
-  REQUIRE(pos != std::string::npos);
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
-}
+using test::LineOf;
+using test::Replace;
 
 const CheckOutcome& Find(const EntryReport& r, const std::string& name_part, const std::string& variant = "") {
   for (const CheckOutcome& c : r.checks) {

@@ -4,6 +4,7 @@
 
 #include "koppel/core/angles.hpp"
 #include "support/temp_file.hpp"
+#include "support/text.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -11,6 +12,9 @@
 
 namespace koppel {
 namespace {
+
+using test::LineOf;
+using test::Replace;
 
 const char* kGood = R"(koppel: 1
 name: four-bar
@@ -56,18 +60,6 @@ std::vector<Diagnostic> Bad(const std::string& text, const Overrides& overrides 
   }
   FAIL("the reader accepted:\n" << text);
   return {};
-}
-
-std::string Replace(std::string text, const std::string& from, const std::string& to) {
-  const auto pos = text.find(from);
-  REQUIRE(pos != std::string::npos);
-  return text.replace(pos, from.size(), to);
-}
-
-int LineOf(const std::string& text, const std::string& needle) {
-  const auto pos = text.find(needle);
-  REQUIRE(pos != std::string::npos);
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
 }
 
 // The first diagnostic must sit on the line of `needle` and say `phrase`.

@@ -3,6 +3,7 @@
 // tests/solver; here: that the commands print those numbers under the documented names).
 #include "support/run.hpp"
 #include "support/temp_file.hpp"
+#include "support/text.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -13,26 +14,12 @@
 namespace koppel {
 namespace {
 
-// "quantity,value,unit" -> map
-std::map<std::string, double> Summary(const std::string& csv) {
-  std::map<std::string, double> values;
-  std::istringstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  REQUIRE(line == "quantity,value,unit");
-  while (std::getline(in, line)) {
-    const auto a = line.find(','), b = line.rfind(',');
-    values[line.substr(0, a)] = std::stod(line.substr(a + 1, b - a - 1));
-  }
-  return values;
-}
-
 }  // namespace
 
 TEST_CASE("deadcentres: slider-crank e = 0.8 summary (seed 000, corrected phi_i)", "[cli]") {
   const test::RunResult r = test::RunKoppel("deadcentres " + test::CatalogEntryPath("slider-crank-offset") + " --output s --summary");
   REQUIRE(r.exit_code == 0);
-  const auto v = Summary(r.out);
+  const auto v = test::ParseSummary(r.out);
   CHECK(v.at("phi_a") == Approx(90 + std::asin((0.8 / 2.6) / (1 + 1 / 2.6)) * 180 / M_PI).margin(1e-8));
   CHECK(v.at("phi_i") == Approx(300).margin(1e-8));
   CHECK(v.at("s_H") == Approx(std::sqrt(3.6 * 3.6 - 0.64) - std::sqrt(1.6 * 1.6 - 0.64)).margin(1e-9));
@@ -44,7 +31,7 @@ TEST_CASE("curve --straight reproduces seed 003's reading example", "[cli]") {
   const test::RunResult r =
       test::RunKoppel("curve " + test::CatalogEntryPath("mzc-crank-rocker") + " --point K --straight --qg 0.005 --at 180");
   REQUIRE(r.exit_code == 0);
-  const auto v = Summary(r.out);
+  const auto v = test::ParseSummary(r.out);
   CHECK(v.at("phi_G") == Approx(163.3).margin(0.05));
   CHECK(v.at("phi_A") == Approx(98.3).margin(0.05));
   CHECK(v.at("L") == Approx(3.91).margin(0.005));
@@ -58,7 +45,7 @@ TEST_CASE("proportional reproduces seed 001's reading example", "[cli]") {
   const test::RunResult r = test::RunKoppel("proportional " + test::CatalogEntryPath("proportional-linkage") +
                                             " --output s --from 112.5 --to 247.5");
   REQUIRE(r.exit_code == 0);
-  const auto v = Summary(r.out);
+  const auto v = test::ParseSummary(r.out);
   CHECK(v.at("delta_s") == Approx(0.018).margin(0.0005));
   CHECK(v.at("Q_P") == Approx(0.015).margin(0.0005));
   CHECK(v.at("reference") == Approx(180).margin(1e-9));
@@ -68,7 +55,7 @@ TEST_CASE("cognates writes two mechanism files that koppel analyses", "[cli]") {
   test::TempDir dir;
   const test::RunResult r = test::RunKoppel("cognates " + test::CatalogEntryPath("mzc-crank-rocker") + " --point K -o " + dir.path().string());
   REQUIRE(r.exit_code == 0);
-  const auto v = Summary(r.out);
+  const auto v = test::ParseSummary(r.out);
   CHECK(v.at("cognate1_A0C0") == Approx(40.0 / 9 * std::sqrt(3.0)).margin(1e-9));
   for (const char* name : {"mzc-crank-rocker-cognate-1.yaml", "mzc-crank-rocker-cognate-2.yaml"}) {
     const test::RunResult a = test::RunKoppel("analyze " + (dir.path() / name).string());

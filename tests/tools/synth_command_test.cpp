@@ -2,6 +2,7 @@
 // deadcentres confirm; the charts; the Meyer zur Capellen linkage; a fit problem file.
 #include "support/run.hpp"
 #include "support/temp_file.hpp"
+#include "support/text.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -12,18 +13,6 @@
 namespace koppel {
 namespace {
 
-std::map<std::string, double> Summary(const std::string& csv) {
-  std::map<std::string, double> values;
-  std::istringstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  while (std::getline(in, line)) {
-    const auto a = line.find(','), b = line.rfind(',');
-    values[line.substr(0, a)] = std::stod(line.substr(a + 1, b - a - 1));
-  }
-  return values;
-}
-
 }  // namespace
 
 TEST_CASE("synth deadcentre crank-rocker writes a mechanism that deadcentres confirms", "[cli][synth]") {
@@ -31,15 +20,15 @@ TEST_CASE("synth deadcentre crank-rocker writes a mechanism that deadcentres con
   const std::string yaml = (dir.path() / "cr.yaml").string();
   const test::RunResult r = test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60 --beta 30 -o " + yaml);
   REQUIRE(r.exit_code == 0);
-  CHECK(Summary(r.out).at("beta") == Approx(30).margin(1e-12));
+  CHECK(test::ParseSummary(r.out).at("beta") == Approx(30).margin(1e-12));
   const test::RunResult dc = test::RunKoppel("deadcentres " + yaml + " --output psi --summary");
   REQUIRE(dc.exit_code == 0);
-  const auto v = Summary(dc.out);
+  const auto v = test::ParseSummary(dc.out);
   CHECK(v.at("psi_H") == Approx(60).margin(1e-9));                      // the rocker swing psi0
   CHECK(std::fmod(v.at("phi_a") - v.at("phi_i") + 720, 360) == Approx(164).margin(1e-9));  // phi0, folded -> extended
   CHECK(test::RunKoppel("analyze " + yaml + " --step 10").exit_code == 0);
   const test::RunResult best = test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60");
-  CHECK(Summary(best.out).at("mu_min") == Approx(40.56).margin(0.01));
+  CHECK(test::ParseSummary(best.out).at("mu_min") == Approx(40.56).margin(0.01));
   CHECK(test::RunKoppel("synth deadcentre crank-rocker --phi0 164").exit_code == 2);  // --psi0 missing
   CHECK(test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60 --beta 170").exit_code == 1);
 }
@@ -49,8 +38,8 @@ TEST_CASE("synth deadcentre slider-crank and the charts", "[cli][synth]") {
   const std::string yaml = (dir.path() / "sc.yaml").string();
   const test::RunResult r = test::RunKoppel("synth deadcentre slider-crank --phi0 120 --stroke 1 -o " + yaml);
   REQUIRE(r.exit_code == 0);
-  CHECK(Summary(r.out).at("e_s0") == Approx(0.16).margin(0.005));
-  const auto v = Summary(test::RunKoppel("deadcentres " + yaml + " --output s --summary").out);
+  CHECK(test::ParseSummary(r.out).at("e_s0") == Approx(0.16).margin(0.005));
+  const auto v = test::ParseSummary(test::RunKoppel("deadcentres " + yaml + " --output s --summary").out);
   CHECK(v.at("s_H") == Approx(1.0).margin(1e-9));
   const test::RunResult chart = test::RunKoppel("synth chart slider-crank --phi0 110:130:10 --quiet");
   REQUIRE(chart.exit_code == 0);
@@ -65,7 +54,7 @@ TEST_CASE("synth mzc --lambda 5/6: six-point contact and the seed 003 cognate", 
   test::TempDir dir;
   const test::RunResult r = test::RunKoppel("synth mzc --lambda 5/6 --D 1 -o " + (dir.path() / "mzc.yaml").string());
   REQUIRE(r.exit_code == 0);
-  const auto v = Summary(r.out);
+  const auto v = test::ParseSummary(r.out);
   CHECK(v.at("contact_points") >= 6);
   CHECK(v.at("kappa") == Approx(15.79).margin(0.005));
   CHECK(v.at("crank_rocker_l4") / v.at("crank_rocker_l1") == Approx(4.0).epsilon(1e-9));
@@ -79,7 +68,7 @@ TEST_CASE("synth fit: five precision points recover seed 003's dimensions", "[cl
   const test::RunResult r = test::RunKoppel("synth fit " + std::string(KOPPEL_TEST_DATA_DIR) + "/fit-mzc-precision-points.yaml --quiet -o " + fitted);
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
-  const auto v = Summary(r.out);
+  const auto v = test::ParseSummary(r.out);
   CHECK(v.at("l3") == Approx(2.5 * std::sqrt(3.0)).margin(1e-8));
   CHECK(v.at("k") == Approx(25.0 / 3).margin(1e-8));
   CHECK(v.at("full_rotation") == 1);

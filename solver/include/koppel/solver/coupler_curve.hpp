@@ -26,6 +26,9 @@ struct CouplerCurve {
   std::vector<double> curvature;             // signed, 1/length; 0 where the point stands still
 };
 
+// The mechanism with one output only: `point` (name "curve").
+Mechanism WithPointOutput(const Mechanism& mechanism, const PointRef& point);
+
 // Traces `point` over the sweep. Arc length integrates |dK/dinput| over each interval by
 // 3-point Gauss on the cubic Hermite interpolant of the exact positions and derivatives.
 CouplerCurve TraceCurve(const Mechanism& mechanism, const PointRef& point, const SweepOptions& range);

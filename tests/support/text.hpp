@@ -1,0 +1,17 @@
+// Small text helpers for tests that mutate files and read CLI output.
+#pragma once
+
+#include <map>
+#include <string>
+
+namespace koppel::test {
+
+// `text` with the first occurrence of `from` (which must exist: a test failure otherwise)
+// replaced by `to`.
+std::string Replace(std::string text, const std::string& from, const std::string& to);
+// 1-based line of the first occurrence of `needle` (which must exist).
+int LineOf(const std::string& text, const std::string& needle);
+// A "quantity,value,unit" CSV as a map quantity -> value.
+std::map<std::string, double> ParseSummary(const std::string& csv);
+
+}  // namespace koppel::test

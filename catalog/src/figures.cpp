@@ -3,11 +3,11 @@
 #include "koppel/core/angles.hpp"
 #include "koppel/core/structure.hpp"
 #include "koppel/core/expression.hpp"
-#include "koppel/solver/cognates.hpp"
-#include "koppel/solver/coupler_curve.hpp"
-#include "koppel/solver/dead_centres.hpp"
-#include "koppel/solver/proportionality.hpp"
-#include "koppel/solver/stationary.hpp"
+#include "koppel/synthesis/cognates.hpp"
+#include "koppel/analysis/coupler_curve.hpp"
+#include "koppel/analysis/dead_centres.hpp"
+#include "koppel/analysis/proportionality.hpp"
+#include "koppel/analysis/stationary.hpp"
 #include "koppel/solver/sweep.hpp"
 
 #include <cmath>

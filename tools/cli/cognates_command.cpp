@@ -4,7 +4,7 @@
 
 #include "koppel/catalog/mechanism_writer.hpp"
 #include "koppel/core/angles.hpp"
-#include "koppel/solver/cognates.hpp"
+#include "koppel/synthesis/cognates.hpp"
 
 #include <filesystem>
 

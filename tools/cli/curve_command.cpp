@@ -4,7 +4,7 @@
 #include "common.hpp"
 
 #include "koppel/core/angles.hpp"
-#include "koppel/solver/coupler_curve.hpp"
+#include "koppel/analysis/coupler_curve.hpp"
 
 namespace koppel::cli {
 namespace {

@@ -3,7 +3,7 @@
 #include "common.hpp"
 
 #include "koppel/core/angles.hpp"
-#include "koppel/solver/dead_centres.hpp"
+#include "koppel/analysis/dead_centres.hpp"
 
 namespace koppel::cli {
 namespace {

@@ -5,7 +5,7 @@
 #include "koppel/core/structure.hpp"
 
 #include "koppel/core/angles.hpp"
-#include "koppel/solver/proportionality.hpp"
+#include "koppel/analysis/proportionality.hpp"
 
 namespace koppel::cli {
 namespace {

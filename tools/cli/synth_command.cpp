@@ -5,9 +5,9 @@
 
 #include "koppel/catalog/mechanism_writer.hpp"
 #include "koppel/core/angles.hpp"
-#include "koppel/solver/cognates.hpp"
-#include "koppel/solver/deadcentre_synthesis.hpp"
-#include "koppel/solver/mzc_synthesis.hpp"
+#include "koppel/synthesis/cognates.hpp"
+#include "koppel/synthesis/deadcentre_synthesis.hpp"
+#include "koppel/synthesis/mzc_synthesis.hpp"
 #include "koppel/solver/sweep.hpp"
 
 #include <fmt/core.h>

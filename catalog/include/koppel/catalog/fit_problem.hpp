@@ -14,7 +14,7 @@
 #pragma once
 
 #include "koppel/catalog/mechanism_file.hpp"
-#include "koppel/solver/fit.hpp"
+#include "koppel/synthesis/fit.hpp"
 
 #include <string>
 #include <vector>

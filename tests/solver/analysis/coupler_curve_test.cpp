@@ -1,6 +1,6 @@
 // Coupler curves and the straight-line analysis: arc length against a circle; seed 003's
 // distances and its reading example (Q_G = 0.005 -> phi_G = 163.3 deg, phi_A = 98.3 deg, L = 3.91 l1).
-#include "koppel/solver/coupler_curve.hpp"
+#include "koppel/analysis/coupler_curve.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "support/mechanisms.hpp"

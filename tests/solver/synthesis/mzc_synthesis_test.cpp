@@ -1,9 +1,9 @@
 // Meyer zur Capellen linkages (seed 003): the lambda = 5/6 example's dimensions, kappa, and the
 // six-point contact verified by exact higher-order transfer functions.
-#include "koppel/solver/mzc_synthesis.hpp"
+#include "koppel/synthesis/mzc_synthesis.hpp"
 
 #include "koppel/core/angles.hpp"
-#include "koppel/solver/cognates.hpp"
+#include "koppel/synthesis/cognates.hpp"
 
 #include <catch2/catch.hpp>
 

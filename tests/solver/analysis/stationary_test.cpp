@@ -1,6 +1,6 @@
 // Stationary points of an output: the dead centres of seed 000's slider-crank against the
 // document's phi_a and the corrected phi_i, refined to 1e-12.
-#include "koppel/solver/stationary.hpp"
+#include "koppel/analysis/stationary.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"

@@ -1,7 +1,7 @@
 // Roberts cognates of seed 003's crank-rocker: the first one has the dimensions the document
 // lists (with A0*B0* = 40/9 sqrt 3), the second the original's; both trace the same coupler
 // curve to 1e-9 at 360 points.
-#include "koppel/solver/cognates.hpp"
+#include "koppel/synthesis/cognates.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"

@@ -5,7 +5,7 @@
 
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/jacobian_check.hpp"
-#include "solver/tolerances.hpp"
+#include "solver/kernel/tolerances.hpp"
 #include "support/mechanisms.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,6 +1,6 @@
 // Dead centres and transmission angle of seed 000's slider-crank against the document's
 // formulas (phi_i with the corrected 3/2 pi), for both offsets and the negative one.
-#include "koppel/solver/dead_centres.hpp"
+#include "koppel/analysis/dead_centres.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "support/closed_forms.hpp"

@@ -1,5 +1,5 @@
 // Seed 001's reading example: 112.5..247.5 deg -> Q_P = 1.5e-2, Δs = 0.018 (printed rounding).
-#include "koppel/solver/proportionality.hpp"
+#include "koppel/analysis/proportionality.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "support/closed_forms.hpp"

@@ -1,4 +1,4 @@
-#include "koppel/solver/stationary.hpp"
+#include "koppel/analysis/stationary.hpp"
 
 #include "koppel/solver/sweep.hpp"
 

@@ -1,6 +1,6 @@
-#include "koppel/solver/mzc_synthesis.hpp"
+#include "koppel/synthesis/mzc_synthesis.hpp"
 
-#include "koppel/solver/coupler_curve.hpp"
+#include "koppel/analysis/coupler_curve.hpp"
 #include "koppel/solver/sweep.hpp"
 
 #include <cmath>

@@ -4,7 +4,7 @@
 #include "koppel/solver/sweep.hpp"
 
 #include "koppel/core/angles.hpp"
-#include "solver/tolerances.hpp"
+#include "solver/kernel/tolerances.hpp"
 #include "support/closed_forms.hpp"
 #include "support/mechanisms.hpp"
 

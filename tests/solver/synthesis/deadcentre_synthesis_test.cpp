@@ -1,9 +1,9 @@
 // Dead-centre synthesis (seed 002): designs re-analysed by the generic solver have the requested
 // phi0, psi0 / stroke to 1e-9; the document's chart readings, reproduced or refuted with numbers.
-#include "koppel/solver/deadcentre_synthesis.hpp"
+#include "koppel/synthesis/deadcentre_synthesis.hpp"
 
 #include "koppel/core/angles.hpp"
-#include "koppel/solver/dead_centres.hpp"
+#include "koppel/analysis/dead_centres.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-#include "koppel/solver/cognates.hpp"
+#include "koppel/synthesis/cognates.hpp"
 
 #include "koppel/solver/position.hpp"
 #include "koppel/solver/sweep.hpp"

@@ -1,4 +1,4 @@
-#include "koppel/solver/deadcentre_synthesis.hpp"
+#include "koppel/synthesis/deadcentre_synthesis.hpp"
 
 #include <cmath>
 #include <complex>

@@ -1,8 +1,8 @@
 // The one translation unit of koppel that includes Ceres.
-#include "koppel/solver/fit.hpp"
+#include "koppel/synthesis/fit.hpp"
 
 #include "koppel/solver/position.hpp"
-#include "koppel/solver/stationary.hpp"
+#include "koppel/analysis/stationary.hpp"
 #include "koppel/solver/sweep.hpp"
 
 #include <ceres/ceres.h>

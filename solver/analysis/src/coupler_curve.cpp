@@ -1,4 +1,4 @@
-#include "koppel/solver/coupler_curve.hpp"
+#include "koppel/analysis/coupler_curve.hpp"
 
 #include <algorithm>
 #include <cmath>

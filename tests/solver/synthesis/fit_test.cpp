@@ -1,7 +1,7 @@
 // Least-squares fitting: a five-precision-point path synthesis whose answer is seed 003's
 // crank-rocker (started away from it), a function-generation problem, free inputs, and a
 // problem whose targets cannot all be met, reported honestly.
-#include "koppel/solver/fit.hpp"
+#include "koppel/synthesis/fit.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "support/closed_forms.hpp"

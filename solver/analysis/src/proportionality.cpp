@@ -1,4 +1,4 @@
-#include "koppel/solver/proportionality.hpp"
+#include "koppel/analysis/proportionality.hpp"
 
 #include "koppel/solver/sweep.hpp"
 

@@ -1,6 +1,6 @@
-#include "koppel/solver/dead_centres.hpp"
+#include "koppel/analysis/dead_centres.hpp"
 
-#include "koppel/solver/stationary.hpp"
+#include "koppel/analysis/stationary.hpp"
 
 #include <algorithm>
 #include <cmath>

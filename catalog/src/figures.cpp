@@ -136,7 +136,7 @@ CheckOutcome EvaluateFigure(const MechanismFile& file, const CatalogCard& card, 
     options.step = input_internal(card.step);
     const DeadCentreReport r = FindDeadCentres(m, output, f.component, options);
     if (!r.has_stroke || !r.classified) {
-      out.detail = r.message.empty() ? "no extended and folded dead centre found" : r.message;
+      out.detail = r.sweep.message.empty() ? "no extended and folded dead centre found" : r.sweep.message;
       return out;
     }
     const double turn = 2 * kPi;

@@ -11,7 +11,7 @@ StationaryPoint RefineStationary(const Mechanism& m, int output, int component, 
                                  const StationaryOptions& options) {
   StationaryPoint result;
   PositionSolver solver(m);
-  Continuation path(solver);
+  Continuation path(solver, options.continuation);
   if (!path.Start(input, q).ok()) {
     result.message = "the starting pose does not solve";
     return result;

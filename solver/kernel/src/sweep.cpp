@@ -234,6 +234,20 @@ SweepResult Sweep(const Mechanism& m, const SweepOptions& options) {
   return result;
 }
 
+SweepEvents EventsOf(const SweepResult& sweep) {
+  SweepEvents events;
+  events.status = sweep.status;
+  events.message = sweep.message;
+  events.notes = sweep.notes;
+  events.singular_points = sweep.singular_points;
+  events.gaps = sweep.gaps;
+  events.reached = sweep.reached;
+  for (size_t i = 0; i < sweep.inputs.size(); ++i) {
+    if (sweep.singular[i]) events.singular_inputs.push_back(sweep.inputs[i]);
+  }
+  return events;
+}
+
 InputRange DrivableRange(const Mechanism& mechanism, double span, double step) {
   InputRange range;
   PositionSolver solver(mechanism);

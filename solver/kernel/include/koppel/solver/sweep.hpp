@@ -75,6 +75,20 @@ struct SweepResult {
   std::string Brief() const;
 };
 
+// What a sweep met on its way, without its rows: the part every analysis built on a sweep
+// passes on, so that the reader learns of the singular points and gaps behind its numbers.
+struct SweepEvents {
+  SweepStatus status = SweepStatus::kNotRun;
+  std::string message;
+  std::vector<std::string> notes;
+  std::vector<SingularPoint> singular_points;
+  std::vector<InputInterval> gaps;
+  InputInterval reached;
+  std::vector<double> singular_inputs;  // inputs of the rows flagged singular
+  bool complete() const { return status == SweepStatus::kComplete; }
+};
+SweepEvents EventsOf(const SweepResult& sweep);
+
 // Assembles at the mechanism's hint and samples from..to on that branch.
 // Precondition: CheckConsistency(mechanism) is empty.
 SweepResult Sweep(const Mechanism& mechanism, const SweepOptions& options);

@@ -43,11 +43,11 @@
   // one uPlot chart per scalar output: the value on the left axis, its derivatives on the right
   const charts = [];
   const plots = document.getElementById('plots');
-  const xs = [], rowOf = [];
+  const xs = [], rowOf = [], rowOfSample = [];
   // a null row between stretches and at gaps: uPlot leaves a gap there, never a bridging line
   for (let i = 0; i < n; ++i) {
     if (i > 0 && data.breaks.includes(i)) { xs.push((data.inputs[i - 1] + data.inputs[i]) / 2); rowOf.push(-1); }
-    xs.push(data.inputs[i]); rowOf.push(i);
+    rowOfSample.push(xs.length); xs.push(data.inputs[i]); rowOf.push(i);
   }
   const palette = ['#1f5fa8', '#c0392b', '#2e8b57', '#7d3c98'];
   for (const chart of data.charts) {
@@ -66,7 +66,6 @@
     });
     const axes = [{ label: data.input_label }, { scale: 'y', label: chart.series[0].label }];
     if (chart.series.length > 1) axes.push({ scale: 'd', side: 1, grid: { show: false }, label: 'derivatives' });
-    const state = { current: 0 };
     const u = new uPlot({
       width: 560, height: 200, series: series, axes: axes, legend: { show: true },
       scales: { x: { time: false } },
@@ -75,7 +74,7 @@
     const cursor = document.createElement('div');
     cursor.className = 'koppel-cursor';
     u.over.appendChild(cursor);
-    charts.push({ u: u, cursor: cursor, state: state });
+    charts.push({ u: u, cursor: cursor });
   }
 
   function show(i) {
@@ -85,7 +84,10 @@
     const shown = data.inputs[i];
     value.textContent = data.input_label + ' = ' + fmt(shown);
     if (caption) caption.textContent = data.input_label + ' = ' + fmt(shown);
-    for (const c of charts) c.cursor.style.left = c.u.valToPos(shown, 'x') + 'px';
+    for (const c of charts) {
+      c.cursor.style.left = c.u.valToPos(shown, 'x') + 'px';
+      c.u.setLegend({ idx: rowOfSample[i] });  // the legend shows the numbers at the current input
+    }
     let rows = '<tr><td>' + data.input_label + '</td><td>' + fmt(shown) + '</td></tr>';
     for (const r of data.readout) rows += '<tr><td>' + r.label + '</td><td>' + fmt(r.values[i]) + '</td></tr>';
     readout.innerHTML = rows;

@@ -45,11 +45,7 @@ bool CurvePlotOptions::IsValid(const Mechanism& m, std::string* why) const {
     *why = "no such point";
     return false;
   }
-  if (!std::isfinite(range.from) || !std::isfinite(range.to) || !std::isfinite(range.step) || range.step == 0 ||
-      SampleCount(range.from, range.to, range.step) > 20001) {
-    *why = "the input range needs finite from/to and a non-zero step (at most 20000 samples)";
-    return false;
-  }
+  if (!RangeIsValid(range, 20001, why)) return false;
   if (straight && (!(qg > 0) || !(resolution > 0) || !m.InputIsAngle())) {
     *why = "the straight-line analysis needs a rotating drive, Q_G > 0 and a positive resolution";
     return false;

@@ -3,6 +3,7 @@
 #include "koppel/core/angles.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace koppel::plot {
@@ -56,6 +57,18 @@ bool YRange(const std::vector<std::vector<Eigen::Vector2d>>& runs, double* low, 
       *high = std::max(*high, p.y());
     }
   return *low <= *high;
+}
+
+bool RangeIsValid(const SweepOptions& range, int max_samples, std::string* why) {
+  if (!std::isfinite(range.from) || !std::isfinite(range.to) || !std::isfinite(range.step) || range.step == 0) {
+    *why = "the input range needs finite from/to and a non-zero step";
+    return false;
+  }
+  if (SampleCount(range.from, range.to, range.step) > max_samples) {
+    *why = "more than " + std::to_string(max_samples - 1) + " samples: use a larger step";
+    return false;
+  }
+  return true;
 }
 
 void MarkGaps(const Mechanism& m, const SampledRun& run, Panel& panel, bool label) {

@@ -27,6 +27,10 @@ std::vector<std::vector<Eigen::Vector2d>> InputRuns(const Mechanism& mechanism, 
 // Least and greatest y over the runs (for axis ranges); false when empty.
 bool YRange(const std::vector<std::vector<Eigen::Vector2d>>& runs, double* low, double* high);
 
+// A finite input range with a non-zero step and at most `max_samples` samples (a picture has a
+// few thousand at most: more only bloats the file). *why says what is wrong.
+bool RangeIsValid(const SweepOptions& range, int max_samples, std::string* why);
+
 // The gaps and singular positions of the run marked on a panel (shaded and as rules).
 void MarkGaps(const Mechanism& mechanism, const SampledRun& run, Panel& panel, bool label);
 

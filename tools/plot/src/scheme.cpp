@@ -186,7 +186,7 @@ class SchemeWriter {
     std::string d;
     for (double s = 2; s <= length; s += kHatch) {
       const Vec a = from + s * t, b = a + kHatch * side - 0.8 * kHatch * t;
-      d += "M" + Num(a.x()) + "," + Num(a.y()) + "L" + Num(b.x()) + "," + Num(b.y());
+      d.append("M").append(Num(a.x())).append(",").append(Num(a.y())).append("L").append(Num(b.x())).append(",").append(Num(b.y()));
     }
     svg.PathData(d, {{"class", "hatch"}});
   }

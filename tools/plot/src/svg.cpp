@@ -38,15 +38,18 @@ std::string EscapeXml(const std::string& text) {
 Svg::Svg(double width, double height) : width_(width), height_(height) {}
 
 void Svg::Element(const char* tag, const Attrs& geometry, const Attrs& attrs, const std::string* text) {
-  body_ += std::string(depth_ + 1, ' ') + "<" + tag;
+  body_.append(depth_ + 1, ' ').append("<").append(tag);
   for (const Attrs* list : {&geometry, &attrs})
-    for (const Attr& a : *list) body_ += " " + a.name + "=\"" + EscapeXml(a.value) + "\"";
-  body_ += text ? ">" + EscapeXml(*text) + "</" + tag + ">\n" : "/>\n";
+    for (const Attr& a : *list) body_.append(" ").append(a.name).append("=\"").append(EscapeXml(a.value)).append("\"");
+  if (text)
+    body_.append(">").append(EscapeXml(*text)).append("</").append(tag).append(">\n");
+  else
+    body_.append("/>\n");
 }
 
 void Svg::OpenGroup(const Attrs& attrs) {
   body_ += std::string(depth_ + 1, ' ') + "<g";
-  for (const Attr& a : attrs) body_ += " " + a.name + "=\"" + EscapeXml(a.value) + "\"";
+  for (const Attr& a : attrs) body_.append(" ").append(a.name).append("=\"").append(EscapeXml(a.value)).append("\"");
   body_ += ">\n";
   ++depth_;
 }
@@ -71,7 +74,7 @@ void Svg::Circle(Eigen::Vector2d centre, double radius, const Attrs& attrs) {
 
 void Svg::Polygon(const std::vector<Eigen::Vector2d>& corners, const Attrs& attrs) {
   std::string points;
-  for (const auto& p : corners) points += (points.empty() ? "" : " ") + Num(p.x()) + "," + Num(p.y());
+  for (const auto& p : corners) points.append(points.empty() ? "" : " ").append(Num(p.x())).append(",").append(Num(p.y()));
   Element("polygon", {{"points", points}}, attrs);
 }
 
@@ -79,7 +82,7 @@ void Svg::Path(const std::vector<std::vector<Eigen::Vector2d>>& runs, const Attr
   std::string d;
   for (const auto& run : runs) {
     for (size_t i = 0; i < run.size(); ++i)
-      d += (d.empty() ? "" : " ") + std::string(i == 0 ? "M" : "L") + Num(run[i].x()) + "," + Num(run[i].y());
+      d.append(d.empty() ? "" : " ").append(i == 0 ? "M" : "L").append(Num(run[i].x())).append(",").append(Num(run[i].y()));
   }
   Element("path", {{"d", d}}, attrs);
 }

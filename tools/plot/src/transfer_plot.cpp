@@ -14,18 +14,8 @@
 namespace koppel::plot {
 namespace {
 
-bool RangeIsValid(const SweepOptions& range, std::string* why) {
-  if (!std::isfinite(range.from) || !std::isfinite(range.to) || !std::isfinite(range.step) || range.step == 0) {
-    *why = "the input range needs finite from/to and a non-zero step";
-    return false;
-  }
-  // A picture has a few thousand samples at most: more only bloats the file.
-  if (SampleCount(range.from, range.to, range.step) > 20001) {
-    *why = "more than 20000 samples: use a larger step";
-    return false;
-  }
-  return true;
-}
+// Samples in a plot: a few thousand at most, more only bloat the file.
+constexpr int kMaxSamples = 20001;
 
 Axis InputAxis(const Mechanism& m, const SweepOptions& range) {
   const double a = ShownInput(m, range.from), b = ShownInput(m, range.to);
@@ -68,7 +58,7 @@ bool TransferPlotOptions::IsValid(const Mechanism& m, std::string* why) const {
     *why = "--order must be 0.." + std::to_string(kMaxOrder);
     return false;
   }
-  return RangeIsValid(range, why);
+  return RangeIsValid(range, kMaxSamples, why);
 }
 
 PlotResult TransferPlot(const Mechanism& m, const TransferPlotOptions& options) {
@@ -130,7 +120,7 @@ bool MuPlotOptions::IsValid(const Mechanism& m, std::string* why) const {
     *why = "the mechanism has no transmission-angle output (add one: {transmission: {coupler: L, joint: J}})";
     return false;
   }
-  return RangeIsValid(range, why);
+  return RangeIsValid(range, kMaxSamples, why);
 }
 
 PlotResult MuPlot(const Mechanism& m, const MuPlotOptions& options) {

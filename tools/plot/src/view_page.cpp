@@ -59,15 +59,8 @@ std::string ScriptSafe(std::string json) {
 }  // namespace
 
 bool ViewOptions::IsValid(std::string* why) const {
-  if (!std::isfinite(range.from) || !std::isfinite(range.to) || !std::isfinite(range.step) || range.step == 0) {
-    *why = "the input range needs finite from/to and a non-zero step";
-    return false;
-  }
-  if (SampleCount(range.from, range.to, range.step) > 3601) {
-    *why = "more than 3600 frames: use a larger step (the page would be too large)";
-    return false;
-  }
-  return true;
+  // 3600 frames at most: the page would grow past a few MB
+  return RangeIsValid(range, 3601, why);
 }
 
 PlotResult ViewPage(const Mechanism& m, const ViewOptions& options) {

@@ -44,7 +44,7 @@ try {
     page.on('request', (r) => { if (!r.url().startsWith('file:')) requests.push(r.url()); });
     await page.route(/^(?!file:)/, (route) => route.abort());
     await page.goto('file://' + html);
-    await page.waitForSelector(`svg.scheme g.link[data-link="${link}"]`);
+    await page.waitForSelector(`svg.scheme g.link[data-link="${link}"]`, { state: 'attached' });
 
     // the animation advances: the moving link's transform changes between two frames
     const transform = () => page.getAttribute(`svg.scheme g.link[data-link="${link}"]`, 'transform');

@@ -139,11 +139,11 @@ PlotResult ChartPlot(const std::string& csv_text, const std::string& file_name) 
   Figure figure;
   const int phi0 = t.Column("phi0");
   if (phi0 >= 0 && t.Column("psi0") >= 0 && t.Column("beta") >= 0 && t.Column("mu_min") >= 0) {
-    figure.title = "Dead-centre synthesis of the crank-rocker: best β and max μ_min (design chart)";
+    figure.title = "Crank-rocker design chart (dead-centre synthesis): max μ_min, best β";
     figure.panels.push_back(FamilyPanel(t, phi0, t.Column("mu_min"), t.Column("psi0"), "ψ0", "max μ_min [deg]"));
     figure.panels.push_back(FamilyPanel(t, phi0, t.Column("beta"), t.Column("psi0"), "ψ0", "β [deg]"));
   } else if (phi0 >= 0 && t.Column("e_s0") >= 0 && t.Column("l1_s0") >= 0 && t.Column("l2_s0") >= 0 && t.Column("mu_min") >= 0) {
-    figure.title = "Dead-centre synthesis of the slider-crank: dimensions for max μ_min (design chart)";
+    figure.title = "Slider-crank design chart (dead-centre synthesis): sizes, max μ_min";
     Panel sizes = FamilyPanel(t, phi0, t.Column("e_s0"), -1, "", "dimension / s0");
     double low = sizes.y.min, high = sizes.y.max;
     int colour = 0;

@@ -57,7 +57,7 @@ TEST_CASE("plot of a sweep that stops: the picture is written, exit code 1", "[c
   const std::string file = dir.Write("limited.yaml", text), out = (dir.path() / "t.svg").string();
   const test::RunResult r = test::RunKoppel("plot " + file + " --transfer s --from 90 --to 360 -o " + out);
   CHECK(r.exit_code == 1);
-  CHECK_THAT(r.err, Catch::Contains("sweep stopped"));
+  CHECK_THAT(r.err, Catch::Contains("limit point"));
   const auto doc = Svg(out);
   CHECK(test::Find(doc, "rect", "gap").size() == 3);  // shaded in each panel
   CHECK(test::RunKoppel("draw " + file + " --at 200 --from 90 --to 360 -o " + out).exit_code == 1);

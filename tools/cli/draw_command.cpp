@@ -67,7 +67,7 @@ void Run(const Args& args) {
     SweepOptions search = range;
     search.step = in(1.0) < std::abs(range.step) ? in(1.0) : range.step;  // the search resolution of `deadcentres`
     const DeadCentreReport dead = FindDeadCentres(m, output, 0, search);
-    if (!dead.message.empty()) problems.push_back("dead centres: " + dead.message);
+    if (!dead.sweep.complete()) problems.push_back("dead centres: " + dead.sweep.message);
     int unnamed = 0;
     std::string list;
     for (const DeadCentre& d : dead.points) {

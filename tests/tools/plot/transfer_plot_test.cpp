@@ -105,7 +105,7 @@ TEST_CASE("a slider-crank that cannot turn fully: the curve ends at the limit, t
   o.range.from = DegToRad(90);
   const plot::PlotResult r = plot::TransferPlot(m, o);
   REQUIRE(r.status == plot::PlotStatus::kPartial);
-  CHECK_THAT(r.message, Catch::Contains("sweep stopped"));
+  CHECK_THAT(r.message, Catch::Contains("limit point"));
   const double limit = 360 - RadToDeg(std::acos(0.7));
   const auto doc = test::ParseSvg(r.svg);
   for (const auto& panel : test::Find(doc, "g", "panel")) {

@@ -8,11 +8,6 @@
 
 namespace koppel::plot {
 
-bool OutputIsAngle(const Mechanism& m, int output) {
-  const Output& o = m.outputs[output];
-  return o.IsAngle() || (o.kind == OutputKind::kJoint && m.joints[o.joint].type == JointType::kRevolute);
-}
-
 double ShownInput(const Mechanism& m, double input) { return m.InputIsAngle() ? RadToDeg(input) : input; }
 
 std::string InputLabel(const Mechanism& m) {
@@ -28,14 +23,14 @@ std::string DerivativeLabel(const Mechanism& m, int output, const std::string& c
   static const char* kPrimes[] = {"", "'", "''", "'''"};
   name += k <= 3 ? std::string(kPrimes[k]) : "^(" + std::to_string(k) + ")";
   const std::string in = m.InputIsAngle() ? "rad" : "length";
-  const std::string out = OutputIsAngle(m, output) ? (k == 0 ? "deg" : "rad") : "length";
+  const std::string out = m.OutputIsAngle(output) ? (k == 0 ? "deg" : "rad") : "length";
   if (k == 0) return name + " [" + out + "]";
   const std::string power = k == 1 ? "" : k == 2 ? "²" : k == 3 ? "³" : "^" + std::to_string(k);
   return name + " [" + out + "/" + in + power + "]";
 }
 
 double ShownOutput(const Mechanism& m, int output, int k, double value) {
-  return k == 0 && OutputIsAngle(m, output) ? RadToDeg(value) : value;
+  return k == 0 && m.OutputIsAngle(output) ? RadToDeg(value) : value;
 }
 
 std::vector<std::vector<Eigen::Vector2d>> InputRuns(const Mechanism& m, const SampledRun& run, int column, int output, int k) {

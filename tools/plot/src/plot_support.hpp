@@ -11,8 +11,6 @@
 
 namespace koppel::plot {
 
-// An angle output (link angle, direction, transmission angle, R joint value): shown in degrees.
-bool OutputIsAngle(const Mechanism& mechanism, int output);
 // Input as shown: degrees for an R drive, length for a P drive.
 double ShownInput(const Mechanism& mechanism, double input);
 std::string InputLabel(const Mechanism& mechanism);

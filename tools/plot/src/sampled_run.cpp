@@ -7,11 +7,7 @@
 namespace koppel::plot {
 
 int SampledRun::Column(const Mechanism& mechanism, int output, int component, int k) const {
-  // The layout of PositionSolver::OutputDerivatives: output by output, component by component,
-  // k = 0..order.
-  int column = 0;
-  for (int o = 0; o < output; ++o) column += mechanism.outputs[o].Components() * (order + 1);
-  return column + component * (order + 1) + k;
+  return OutputColumn(mechanism, output, component, order) + k;
 }
 
 SampledRun SampleMechanism(const Mechanism& mechanism, const SweepOptions& options) {
@@ -24,12 +20,10 @@ SampledRun SampleMechanism(const Mechanism& mechanism, const SweepOptions& optio
   if (!run.inputs.empty()) run.stretches.push_back({0, run.size()});
   run.complete = sweep.complete();
   run.message = sweep.message;
-  if (!run.complete) {
-    // Today's sweep stops at the first position it cannot pass: one gap from there to the end.
-    // (with no sample at all, the whole requested range is the gap).
-    if (sweep.status == SolveStatus::kSingular && !run.inputs.empty()) run.singular.push_back(sweep.stopped_at);
-    run.gaps.push_back({run.inputs.empty() ? options.from : sweep.stopped_at, options.to});
-  }
+  // the rows of a sweep are one contiguous stretch of the branch (it walks outward from the
+  // assembly); what lies beyond is a gap, and the singular points met are marked
+  for (const SingularPoint& p : sweep.singular_points) run.singular.push_back(p.input);
+  for (const InputInterval& g : sweep.gaps) run.gaps.push_back({g.from, g.to});
   return run;
 }
 
@@ -47,7 +41,11 @@ bool PoseAt(const Mechanism& mechanism, const SampledRun& run, double input, Eig
   // steps of at most the run's spacing (or 1 degree / 1 % of the length scale for one sample)
   const double step = run.size() > 1 ? std::abs(run.inputs[1] - run.inputs[0])
                                      : (mechanism.InputIsAngle() ? 3.14159265358979323846 / 180 : 0.01 * LengthScale(mechanism));
-  const SolveReport report = start.ok() ? path.AdvanceTo(input, step) : start;
+  if (!start.ok()) {
+    *why = start.message;
+    return false;
+  }
+  const WalkReport report = path.AdvanceTo(input, step);
   if (!report.ok()) {
     *why = report.message;
     return false;

@@ -108,9 +108,9 @@ PlotResult TransferPlot(const Mechanism& m, const TransferPlotOptions& options) 
   if (!run.complete) {
     result.status = PlotStatus::kPartial;
     result.message = run.message;
-  } else if (!dead.message.empty()) {
+  } else if (dead.sweep.status != SweepStatus::kNotRun && !dead.sweep.complete()) {
     result.status = PlotStatus::kPartial;
-    result.message = "dead centres: " + dead.message;
+    result.message = "dead centres: " + dead.sweep.message;
   }
   return result;
 }

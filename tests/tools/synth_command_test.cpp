@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -24,13 +25,71 @@ TEST_CASE("synth deadcentre crank-rocker writes a mechanism that deadcentres con
   const test::RunResult dc = test::RunKoppel("deadcentres " + yaml + " --output psi --summary");
   REQUIRE(dc.exit_code == 0);
   const auto v = test::ParseSummary(dc.out);
-  CHECK(v.at("psi_H") == Approx(60).margin(1e-9));                      // the rocker swing psi0
+  CHECK(v.at("psi_H") == Approx(60).margin(1e-9));                                          // the rocker swing psi0
   CHECK(std::fmod(v.at("phi_a") - v.at("phi_i") + 720, 360) == Approx(164).margin(1e-9));  // phi0, folded -> extended
+  // the document's sense: the rocker turns counter-clockwise (as the crank) from folded to extended
+  CHECK(v.at("psi_a") - v.at("psi_i") == Approx(60).margin(1e-9));
   CHECK(test::RunKoppel("analyze " + yaml + " --step 10").exit_code == 0);
-  const test::RunResult best = test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60");
-  CHECK(test::ParseSummary(best.out).at("mu_min") == Approx(40.56).margin(0.01));
   CHECK(test::RunKoppel("synth deadcentre crank-rocker --phi0 164").exit_code == 2);  // --psi0 missing
-  CHECK(test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60 --beta 170").exit_code == 1);
+  CHECK(test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60 --rocker-sense sideways").exit_code == 2);
+  CHECK(test::RunKoppel("synth deadcentre crank-rocker --phi0 400 --psi0 60").exit_code == 2);
+  const test::RunResult outside = test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60 --beta 70");
+  CHECK(outside.exit_code == 1);
+  CHECK_THAT(outside.err, Catch::Contains("outside the arc LE"));
+  CHECK(outside.out.empty());
+}
+
+TEST_CASE("issue 12: synth deadcentre crank-rocker --phi0 196 --psi0 60 is a crank-rocker in the stated sense", "[cli][synth]") {
+  // the reported bug: l1 = 5.8e-7 and "mu_min 38 deg" with exit 0
+  test::TempDir dir;
+  for (const std::string sense : {"same", "opposite"}) {
+    INFO(sense);
+    const std::string yaml = (dir.path() / (sense + ".yaml")).string();
+    const test::RunResult r = test::RunKoppel("synth deadcentre crank-rocker --phi0 196 --psi0 60 --rocker-sense " + sense + " -o " + yaml);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const auto s = test::ParseSummary(r.out);
+    CHECK(s.at("l1") > 0.3);
+    CHECK(s.at("reanalysed_phi0") == Approx(196).margin(1e-9));
+    CHECK(s.at("reanalysed_psi0") == Approx(60).margin(1e-9));
+    const auto v = test::ParseSummary(test::RunKoppel("deadcentres " + yaml + " --output psi --summary").out);
+    CHECK(std::fmod(v.at("phi_a") - v.at("phi_i") + 720, 360) == Approx(196).margin(1e-9));
+    CHECK(v.at("psi_a") - v.at("psi_i") == Approx(sense == "same" ? 60 : -60).margin(1e-9));
+    // mu_min as the analysis finds it over a full turn of the written file
+    const test::RunResult a = test::RunKoppel("analyze " + yaml + " --step 0.5");
+    REQUIRE(a.exit_code == 0);
+    double mu_min = 90;
+    std::istringstream rows(a.out);
+    std::string line;
+    std::getline(rows, line);
+    const int mu_column = static_cast<int>(std::count(line.begin(), line.begin() + line.find(",mu,"), ',')) + 1;
+    while (std::getline(rows, line)) {
+      std::istringstream cells(line);
+      std::string cell;
+      for (int c = 0; c <= mu_column; ++c) std::getline(cells, cell, ',');
+      mu_min = std::min(mu_min, std::stod(cell));
+    }
+    CHECK(s.at("mu_min") == Approx(mu_min).margin(1e-9));  // the minimum sits at phi = 0 or 180, on the samples
+  }
+  // the mirror image turns clockwise, the document's drawing; deadcentres sweeps it backwards
+  const std::string cw = (dir.path() / "cw.yaml").string();
+  REQUIRE(test::RunKoppel("synth deadcentre crank-rocker --phi0 196 --psi0 60 --sense cw -o " + cw).exit_code == 0);
+  const auto m = test::ParseSummary(test::RunKoppel("deadcentres " + cw + " --output psi --summary").out);
+  CHECK(m.at("psi_H") == Approx(60).margin(1e-9));
+}
+
+TEST_CASE("synth deadcentre refuses degenerate and impossible crank-rockers with exit 1", "[cli][synth]") {
+  const test::RunResult at180 = test::RunKoppel("synth deadcentre crank-rocker --phi0 180 --psi0 60");
+  CHECK(at180.exit_code == 1);
+  CHECK_THAT(at180.err, Catch::Contains("vanish") && Catch::Contains("choose beta"));
+  CHECK(at180.out.empty());
+  const test::RunResult none = test::RunKoppel("synth deadcentre crank-rocker --phi0 300 --psi0 30 --rocker-sense opposite");
+  CHECK(none.exit_code == 1);
+  CHECK_THAT(none.err, Catch::Contains("no crank-rocker has phi0 = 300 deg"));
+  // a chosen beta at phi0 = 180 deg is a genuine crank-rocker
+  CHECK(test::RunKoppel("synth deadcentre crank-rocker --phi0 180 --psi0 60 --beta 30").exit_code == 0);
+  const test::RunResult help = test::RunKoppel("synth deadcentre --help");
+  CHECK_THAT(help.out, Catch::Contains("--rocker-sense same (default, the document's definition)") && Catch::Contains("folded dead centre"));
 }
 
 TEST_CASE("synth deadcentre slider-crank and the charts", "[cli][synth]") {
@@ -41,12 +100,24 @@ TEST_CASE("synth deadcentre slider-crank and the charts", "[cli][synth]") {
   CHECK(test::ParseSummary(r.out).at("e_s0") == Approx(0.16).margin(0.005));
   const auto v = test::ParseSummary(test::RunKoppel("deadcentres " + yaml + " --output s --summary").out);
   CHECK(v.at("s_H") == Approx(1.0).margin(1e-9));
-  const test::RunResult chart = test::RunKoppel("synth chart slider-crank --phi0 110:130:10 --quiet");
+  const test::RunResult beyond = test::RunKoppel("synth deadcentre slider-crank --phi0 240 --stroke 1 -o " + yaml);
+  REQUIRE(beyond.exit_code == 0);
+  CHECK(test::ParseSummary(beyond.out).at("e") < 0);
+  const auto w = test::ParseSummary(test::RunKoppel("deadcentres " + yaml + " --output s --summary").out);
+  CHECK(std::fmod(w.at("phi_a") - w.at("phi_i") + 720, 360) == Approx(240).margin(1e-9));
+  CHECK(test::RunKoppel("synth deadcentre slider-crank --phi0 180 --stroke 1").exit_code == 1);
+  CHECK(test::RunKoppel("synth deadcentre slider-crank --phi0 120 --stroke 1 --offset 0.6").exit_code == 1);
+  const test::RunResult chart = test::RunKoppel("synth chart slider-crank --phi0 170:180:10 --quiet");
   REQUIRE(chart.exit_code == 0);
-  CHECK_THAT(chart.out, Catch::StartsWith("phi0,e_s0,l1_s0,l2_s0,mu_min,beta\n110,"));
-  const test::RunResult cr = test::RunKoppel("synth chart crank-rocker --phi0 164:164:1 --psi0 60:60:1 --quiet");
+  CHECK_THAT(chart.out, Catch::StartsWith("phi0,status,e_s0,l1_s0,l2_s0,mu_min,beta\n170,ok,"));
+  CHECK_THAT(chart.out, Catch::Contains("\n180,boundary,,,,,\n"));
+  const test::RunResult cr = test::RunKoppel("synth chart crank-rocker --phi0 164:164:1 --psi0 60:60:1 --rocker-sense both --quiet");
   REQUIRE(cr.exit_code == 0);
-  CHECK_THAT(cr.out, Catch::Contains("\n164,60,38.16"));
+  CHECK_THAT(cr.out, Catch::Contains("\n164,60,same,ok,40.37") && Catch::Contains("\n164,60,opposite,ok,38.16"));
+  // where no crank-rocker exists the chart says so instead of leaving the row out
+  const test::RunResult gap = test::RunKoppel("synth chart crank-rocker --phi0 120:120:1 --psi0 60:60:1 --quiet --format json");
+  REQUIRE(gap.exit_code == 0);
+  CHECK_THAT(gap.out, Catch::Contains("\"none\"") && Catch::Contains("null"));
   CHECK(test::RunKoppel("synth chart crank-rocker --phi0 170:160:1").exit_code == 2);
 }
 

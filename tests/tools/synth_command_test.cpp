@@ -143,11 +143,80 @@ TEST_CASE("synth fit: five precision points recover seed 003's dimensions", "[cl
   CHECK(v.at("l3") == Approx(2.5 * std::sqrt(3.0)).margin(1e-8));
   CHECK(v.at("k") == Approx(25.0 / 3).margin(1e-8));
   CHECK(v.at("full_rotation") == 1);
+  CHECK(v.at("starts") == 16);  // the default
+  CHECK(v.at("target1_K_residual") < 1e-9);
+  CHECK_THAT(r.out, Catch::Contains("target1_K_residual,") && Catch::Contains(",length\n"));
   CHECK(test::RunKoppel("analyze " + fitted + " --step 30").exit_code == 0);
   const std::string bad = dir.Write("bad.yaml", "mechanism: nowhere.yaml\nparameters: {}\ntargets: []\n");
   const test::RunResult b = test::RunKoppel("synth fit " + bad);
   CHECK(b.exit_code == 2);
   CHECK_THAT(b.err, Catch::Contains("bad.yaml:1:"));
+}
+
+TEST_CASE("issue 12: synth fit with direction targets at 153/202/223 deg finds the exact design", "[cli][synth]") {
+  // the reported bug: cost 6.46 and every target missed with exit 0 (202 deg compared with an
+  // output reported as -158 deg); then a local minimum with the single default start
+  const std::string problem = std::string(KOPPEL_TEST_DATA_DIR) + "/fit-direction-three-points.yaml";
+  const test::RunResult r = test::RunKoppel("synth fit " + problem);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto v = test::ParseSummary(r.out);
+  for (const std::string t : {"target1_dir", "target2_dir", "target3_dir"}) {
+    CHECK(v.at(t + "_residual") < 1e-8);  // degrees: 1e-10 rad
+    CHECK(v.at(t + "_met") == 1);
+    CHECK_THAT(r.out, Catch::Contains(t + "_residual,") && Catch::Contains(t + "_tolerance,1e-06,deg\n"));
+  }
+  CHECK(v.at("l1") == Approx(1.674809355059234).margin(1e-9));
+  CHECK(v.at("starts_at_best") >= 2);
+  // each start's Ceres report on stderr, and how many reached the best
+  CHECK_THAT(r.err, Catch::Contains("start 16:") && Catch::Contains("starts reached it"));
+  CHECK_THAT(test::RunKoppel("synth fit " + problem + " --quiet").err, !Catch::Contains("start 16:"));
+  // the same problem with one start: its start does not assemble at every target
+  test::TempDir dir;
+  const std::string text = test::ReadText(problem);
+  const std::string one = dir.Write("one.yaml", test::Replace(text, "require:", "starts: 1\nrequire:"));
+  dir.Write("fit-direction-fourbar.yaml", test::ReadText(std::string(KOPPEL_TEST_DATA_DIR) + "/fit-direction-fourbar.yaml"));
+  const test::RunResult single = test::RunKoppel("synth fit " + one + " --quiet");
+  CHECK(single.exit_code == 1);
+  CHECK_THAT(single.err, Catch::Contains("no start gave a design"));
+}
+
+TEST_CASE("synth fit: a problem that cannot be met exits 1 naming the targets and by how much", "[cli][synth]") {
+  const test::RunResult r = test::RunKoppel("synth fit " + std::string(KOPPEL_TEST_DATA_DIR) + "/fit-direction-unmeetable.yaml --quiet");
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.err, Catch::Contains("target 4 'impossible' misses by") && Catch::Contains("deg (tolerance 0.001 deg)"));
+  // what could be computed is still printed
+  const auto v = test::ParseSummary(r.out);
+  CHECK(v.at("target4_impossible_met") == 0);
+  CHECK(v.at("target4_impossible_residual") > 0.001);
+}
+
+TEST_CASE("synth fit: a design that does not assemble over require reports its drivable range", "[cli][synth]") {
+  test::TempDir dir;
+  const std::string mechanism = dir.Write("fourbar.yaml", test::ReadText(std::string(KOPPEL_TEST_DATA_DIR) + "/fit-direction-fourbar.yaml"));
+  // l1 = 2.9: 2.9 + 3.5 > 3 + 3, a non-Grashof linkage whose crank cannot turn fully; the target
+  // is its own direction at 20 deg, so the fit meets it and only the range fails
+  const test::RunResult probe = test::RunKoppel("analyze " + mechanism + " --set l1=2.9 --from 20 --to 20");
+  REQUIRE(probe.exit_code == 0);
+  const std::string row = probe.out.substr(probe.out.find('\n') + 1);
+  const double dir20 = std::stod(row.substr(row.find(',') + 1));
+  const std::string problem = dir.Write("range.yaml", "mechanism: fourbar.yaml\nparameters:\n  l1: {start: 2.8, lower: 2.7, upper: 3.0}\n"
+                                                      "starts: 1\nrequire: {from: 0, to: 360}\ntargets:\n  - {output: dir, input: 20, value: " +
+                                                          std::to_string(dir20) + "}\n");
+  const test::RunResult r = test::RunKoppel("synth fit " + problem + " --quiet");
+  INFO(r.err);
+  CHECK(r.exit_code == 1);
+  const auto v = test::ParseSummary(r.out);
+  CHECK(v.at("assembles_over_required_range") == 0);
+  CHECK(v.at("drivable_from") < 0);
+  CHECK(v.at("drivable_to") > 20);
+  CHECK(v.at("drivable_to") < 360);
+  CHECK_THAT(r.err, Catch::Contains("does not assemble over the required range 0 .. 360 deg: its drive reaches"));
+  // a tolerance that is not a positive number is bad input, with its line
+  const std::string bad = dir.Write("bad.yaml", test::Replace(test::ReadText(problem), "starts: 1", "starts: 1\ntolerance: -1"));
+  const test::RunResult b = test::RunKoppel("synth fit " + bad);
+  CHECK(b.exit_code == 2);
+  CHECK_THAT(b.err, Catch::Contains("bad.yaml:5:") && Catch::Contains("positive"));
 }
 
 }  // namespace koppel

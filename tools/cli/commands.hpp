@@ -13,5 +13,8 @@ void AddProportionalCommand(CLI::App& app);
 void AddCognatesCommand(CLI::App& app);
 void AddSynthCommand(CLI::App& app);
 void AddFitSubcommand(CLI::App& synth);  // koppel synth fit
+void AddPlotCommand(CLI::App& app);  // plot, draw, view: tools/plot
+void AddDrawCommand(CLI::App& app);
+void AddViewCommand(CLI::App& app);
 
 }  // namespace koppel::cli

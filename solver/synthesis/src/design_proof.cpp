@@ -28,8 +28,8 @@ double Mod2Pi(double a) { return std::fmod(std::fmod(a, 2 * kPi) + 2 * kPi, 2 * 
 CrankReanalysis ReanalyseCrank(const Mechanism& m, int stroke_output, int mu_output, double quiet_input) {
   CrankReanalysis r;
   const DeadCentreReport dc = FindDeadCentres(m, stroke_output, 0, FullTurn(quiet_input));
-  if (dc.status != SolveStatus::kConverged) {
-    r.message = "the solver cannot drive the crank through a full turn: " + dc.message;
+  if (!dc.sweep.complete()) {
+    r.message = "the solver cannot drive the crank through a full turn: " + dc.sweep.message;
     return r;
   }
   if (!dc.classified || dc.points.size() != 2) {
@@ -37,14 +37,12 @@ CrankReanalysis ReanalyseCrank(const Mechanism& m, int stroke_output, int mu_out
     return r;
   }
   r.phi0 = Mod2Pi(dc.phi_a - dc.phi_i);
-  const Output& out = m.outputs[stroke_output];
-  const bool angle = out.IsAngle() || (out.kind == OutputKind::kJoint && m.joints[out.joint].type == JointType::kRevolute);
-  r.turn = angle ? AngleDifference(dc.s_a, dc.s_i) : dc.s_a - dc.s_i;
+  r.turn = m.OutputIsAngle(stroke_output) ? AngleDifference(dc.s_a, dc.s_i) : dc.s_a - dc.s_i;
   // mu's minima are stationary points with y'' > 0 (the fold at 90 deg is a maximum); the turn
   // for them starts a radian away from the crank-along-the-frame positions where they sit
   const DeadCentreReport mu = FindDeadCentres(m, mu_output, 0, FullTurn(1.0));
-  if (mu.status != SolveStatus::kConverged) {
-    r.message = "the solver cannot drive the crank through a full turn: " + mu.message;
+  if (!mu.sweep.complete()) {
+    r.message = "the solver cannot drive the crank through a full turn: " + mu.sweep.message;
     return r;
   }
   r.mu_min = std::numeric_limits<double>::infinity();

@@ -15,17 +15,12 @@ namespace {
 // O(h^2) ~ 1e-12 against roundoff O(eps/h) ~ 1e-10.
 constexpr double kParameterStep = 1e-6;
 
-bool OutputIsAngle(const Mechanism& m, int output) {
-  const Output& o = m.outputs[output];
-  return o.IsAngle() || (o.kind == OutputKind::kJoint && m.joints[o.joint].type == JointType::kRevolute);
-}
-
 }  // namespace
 
 FitUnit TargetUnit(const Mechanism& m, const FitTarget& t) {
   if (t.point || t.straight) return FitUnit::kLength;
   if (t.deadcentre) return m.InputIsAngle() ? FitUnit::kAngle : FitUnit::kLength;
-  return OutputIsAngle(m, t.output) ? FitUnit::kAngle : FitUnit::kLength;
+  return m.OutputIsAngle(t.output) ? FitUnit::kAngle : FitUnit::kLength;
 }
 
 double WrappedAngle(double difference) {

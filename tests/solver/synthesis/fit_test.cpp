@@ -261,7 +261,9 @@ std::vector<FitTarget> DirectionTargets(bool as_reported) {
   return targets;
 }
 
-const std::vector<FitParameter> kLengths = {{"l1", 2.0, 0.5, 2.5}, {"l2", 4.0, 2.0, 6.0}, {"l3", 3.0, 1.0, 5.0}};
+// starts at the corner (2.5, 2, 1) of the bounds, where the linkage does not even assemble
+// (|AB0| = 3.9 > l2 + l3 at the assembly input)
+const std::vector<FitParameter> kLengths = {{"l1", 2.5, 0.5, 2.5}, {"l2", 2.0, 2.0, 6.0}, {"l3", 1.0, 1.0, 5.0}};
 
 }  // namespace
 
@@ -290,8 +292,8 @@ TEST_CASE("function generation with angle targets across +-180 deg: residuals wr
 }
 
 TEST_CASE("an exactly solvable three-point problem is solved to 1e-10 with the default starts", "[fit]") {
-  // the given start (l1, l2, l3) = (2, 4, 3) does not even assemble at every target: a single
-  // start finds nothing, the default starts find the exact design from several of them
+  // the given start does not even assemble: a single start finds nothing, the default starts
+  // find the exact design from several of them
   FitOptions single;
   single.starts = 1;
   const FitReport alone = Fit(VerticalBuilder(), kLengths, DirectionTargets(false), single);

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <utility>
 #include <vector>
 
 namespace koppel {
@@ -18,7 +19,7 @@ double WrappedAngle(double difference);
 // calls: one model serves several threads.
 class TargetModel {
  public:
-  TargetModel(const MechanismBuilder& builder, const std::vector<FitTarget>& targets) : builder_(builder), targets_(targets) {}
+  TargetModel(MechanismBuilder builder, std::vector<FitTarget> targets) : builder_(std::move(builder)), targets_(std::move(targets)) {}
 
   // residuals: per target 2 (point), `samples` (straight) or 1; jacobian (row-major, residuals x
   // unknowns) if non-null. unknowns = parameters then one per free input. false where the
@@ -50,8 +51,8 @@ class TargetModel {
   bool DeadCentre(const Mechanism& m, PositionSolver& solver, const Eigen::VectorXd& q_hint, const Perturbations* perturbed, const FitTarget& t,
                   double* residual, double* jacobian_row, int n_unknowns) const;
 
-  const MechanismBuilder& builder_;
-  const std::vector<FitTarget>& targets_;
+  const MechanismBuilder builder_;
+  const std::vector<FitTarget> targets_;
 };
 
 }  // namespace koppel

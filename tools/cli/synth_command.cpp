@@ -12,8 +12,11 @@
 
 #include <fmt/core.h>
 
+#include <atomic>
+#include <functional>
 #include <iostream>
 #include <optional>
+#include <thread>
 
 namespace koppel::cli {
 namespace {
@@ -230,49 +233,71 @@ std::vector<Chart::Cell> ChartRow(std::vector<Chart::Cell> keys, DesignStatus st
   return keys;
 }
 
+// Runs design(i) for i < n on every core (each design is independent and proved by its own
+// re-analysis), with progress on stderr unless quiet.
+template <class Design>
+std::vector<Design> DesignAll(size_t n, const std::function<Design(size_t)>& design, bool quiet) {
+  std::vector<Design> designs(n);
+  std::atomic<size_t> next{0}, done{0};
+  auto work = [&] {
+    for (size_t i = next++; i < n; i = next++) {
+      designs[i] = design(i);
+      ++done;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  if (!quiet) std::cerr << fmt::format("koppel synth chart: {} designs\n", done.load());
+  return designs;
+}
+
 void RunChart(const Args& args) {
   CheckFormat(args.format);
   Chart chart;
-  auto progress = [&](size_t done, size_t total) {
-    if (!args.quiet) std::cerr << fmt::format("\rkoppel synth chart: {}/{} phi0 values", done, total) << std::flush;
-  };
   if (args.type == "crank-rocker") {
     const auto phis = Range("--phi0", args.phi0.empty() ? "150:210:2" : args.phi0);
     const auto psis = Range("--psi0", args.psi0.empty() ? "20:100:2" : args.psi0);
     const auto senses = RockerSenses(args.rocker_sense, true);
     chart.columns = {"phi0", "psi0", "rocker_sense", "status", "beta", "mu_min", "l1", "l2", "l3", "l4", "beta_L", "beta_E"};
-    for (size_t k = 0; k < phis.size(); ++k) {
+    std::vector<CrankRockerRequest> requests;
+    for (double phi : phis) {
       for (RockerSense sense : senses) {
         for (double psi : psis) {
           CrankRockerRequest request;
-          request.phi0 = DegToRad(phis[k]);
+          request.phi0 = DegToRad(phi);
           request.psi0 = DegToRad(psi);
           request.rocker_sense = sense;
-          const CrankRockerDesign d = BestCrankRocker(request);
-          if (d.status == DesignStatus::kInvalidRequest) Refuse(d.status, d.message);
-          chart.rows.push_back(ChartRow({{phis[k], ""}, {psi, ""}, {std::nullopt, ToString(sense)}}, d.status,
-                                        {RadToDeg(d.beta), RadToDeg(d.mu_min), d.l1, d.l2, d.l3, d.l4, RadToDeg(d.beta_l), RadToDeg(d.beta_e)}));
+          if (std::string why; !request.IsValid(&why)) Refuse(DesignStatus::kInvalidRequest, why);
+          requests.push_back(request);
         }
       }
-      progress(k + 1, phis.size());
+    }
+    const auto designs = DesignAll<CrankRockerDesign>(requests.size(), [&](size_t i) { return BestCrankRocker(requests[i]); }, args.quiet);
+    for (const CrankRockerDesign& d : designs) {
+      const CrankRockerRequest& r = d.request;
+      chart.rows.push_back(ChartRow({{RadToDeg(r.phi0), ""}, {RadToDeg(r.psi0), ""}, {std::nullopt, ToString(r.rocker_sense)}}, d.status,
+                                    {RadToDeg(d.beta), RadToDeg(d.mu_min), d.l1, d.l2, d.l3, d.l4, RadToDeg(d.beta_l), RadToDeg(d.beta_e)}));
     }
   } else if (args.type == "slider-crank") {
     const auto phis = Range("--phi0", args.phi0.empty() ? "90:180:2" : args.phi0);
     chart.columns = {"phi0", "status", "e_s0", "l1_s0", "l2_s0", "mu_min", "beta"};
-    for (size_t k = 0; k < phis.size(); ++k) {
+    std::vector<SliderCrankRequest> requests;
+    for (double phi : phis) {
       SliderCrankRequest request;
-      request.phi0 = DegToRad(phis[k]);
+      request.phi0 = DegToRad(phi);
       request.stroke = 1.0;
-      const SliderCrankDesign d = BestSliderCrank(request);
-      if (d.status == DesignStatus::kInvalidRequest) Refuse(d.status, d.message);
-      chart.rows.push_back(ChartRow({{phis[k], ""}}, d.status, {d.e, d.l1, d.l2, RadToDeg(d.mu_min), RadToDeg(d.beta)}));
-      progress(k + 1, phis.size());
+      if (std::string why; !request.IsValid(&why)) Refuse(DesignStatus::kInvalidRequest, why);
+      requests.push_back(request);
     }
+    const auto designs = DesignAll<SliderCrankDesign>(requests.size(), [&](size_t i) { return BestSliderCrank(requests[i]); }, args.quiet);
+    for (const SliderCrankDesign& d : designs)
+      chart.rows.push_back(ChartRow({{RadToDeg(d.request.phi0), ""}}, d.status, {d.e, d.l1, d.l2, RadToDeg(d.mu_min), RadToDeg(d.beta)}));
   } else {
     Complain("synth chart: TYPE must be crank-rocker or slider-crank");
     throw Exit{kExitBadInput};
   }
-  if (!args.quiet) std::cerr << "\n";
   WriteOutput(args.out, args.format == "json" ? chart.ToJson().dump(1) + "\n" : chart.ToCsv());
 }
 
@@ -393,7 +418,7 @@ void AddSynthCommand(CLI::App& app) {
   chart->add_option("--rocker-sense", args->rocker_sense, "same (default), opposite or both (crank-rocker)");
   chart->add_option("-o,--output-file", args->out, "Write the chart to this file instead of stdout");
   chart->add_option("--format", args->format, "csv (default) or json");
-  chart->add_flag("--quiet", args->quiet, "No progress on stderr");
+  chart->add_flag("--quiet", args->quiet, "No count of designs on stderr");
   chart->callback([args] { RunChart(*args); });
 
   CLI::App* mzc = cmd->add_subcommand(

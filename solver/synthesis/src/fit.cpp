@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <exception>
 #include <random>
 #include <thread>
 
@@ -138,7 +139,15 @@ std::vector<StartOutcome> RunStarts(const MechanismBuilder& builder, const Targe
   std::vector<StartOutcome> outcomes(points.size());
   std::atomic<int> next{0};
   auto work = [&] {
-    for (int k = next++; k < static_cast<int>(points.size()); k = next++) outcomes[k] = RunStart(builder, model, parameters, o, k, points[k]);
+    for (int k = next++; k < static_cast<int>(points.size()); k = next++) {
+      // an exception must not end the program from a worker thread: the start is merely unusable
+      try {
+        outcomes[k] = RunStart(builder, model, parameters, o, k, points[k]);
+      } catch (const std::exception& e) {
+        outcomes[k].start.index = k;
+        outcomes[k].start.brief = std::string("failed: ") + e.what();
+      }
+    }
   };
   const int threads = std::min(o.threads > 0 ? o.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency())), o.starts);
   std::vector<std::thread> pool;

@@ -58,15 +58,21 @@ double ClosedFormMuMin(const Geometry& g) { return kPi / 2 - std::asin((g.l1 + g
 
 bool Degenerate(const Geometry& g, double s0) { return g.offset < kVanishing * s0 || g.l2 - g.l1 - g.offset < kVanishing * s0; }
 
-SliderCrankDesign Failed(const SliderCrankRequest& r, DesignStatus status, std::string message) {
+// A design not yet run, with the request and the ranges that give a crank.
+SliderCrankDesign Blank(const SliderCrankRequest& r) {
   SliderCrankDesign d;
   d.request = r;
-  d.status = status;
-  d.message = std::move(message);
   if (Theta(r) > kCentric && Theta(r) < kPi / 2) {
     d.offset_max = OffsetMax(r);
     d.beta_max = kPi / 2 - Theta(r);
   }
+  return d;
+}
+
+SliderCrankDesign Failed(const SliderCrankRequest& r, DesignStatus status, std::string message) {
+  SliderCrankDesign d = Blank(r);
+  d.status = status;
+  d.message = std::move(message);
   return d;
 }
 
@@ -91,7 +97,7 @@ std::optional<SliderCrankDesign> CheckRequest(const SliderCrankRequest& r) {
 }
 
 SliderCrankDesign Prove(const SliderCrankRequest& r, const Geometry& g) {
-  SliderCrankDesign d = Failed(r, DesignStatus::kNotRun, "");
+  SliderCrankDesign d = Blank(r);
   d.e = OffsetSign(r) * g.offset;
   d.l1 = g.l1;
   d.l2 = g.l2;
@@ -135,7 +141,9 @@ std::string SliderCrankDesign::Brief() const {
 
 SliderCrankDesign SliderCrankFromOffset(const SliderCrankRequest& r, double offset) {
   if (auto refused = CheckRequest(r)) return *refused;
-  if (!(offset > 0)) return Failed(r, DesignStatus::kNoDesign, "the offset |e| must be positive: " + Ranges(r));
+  if (offset < 0 || !std::isfinite(offset))
+    return Failed(r, DesignStatus::kInvalidRequest, "the offset is |e|, a distance (its side follows from phi0): give it positive");
+  if (offset == 0) return Failed(r, DesignStatus::kNoDesign, "without offset phi0 is 180 deg: " + Ranges(r));
   const std::optional<Geometry> g = FromOffset(r, offset);
   if (!g) return Failed(r, DesignStatus::kNoDesign, fmt::format("|e| = {:.6g} gives no crank: {}", offset, Ranges(r)));
   if (Degenerate(*g, r.stroke)) return Failed(r, DesignStatus::kNoDesign, fmt::format("|e| = {:.6g} is at the end of the range: {}", offset, Ranges(r)));

@@ -120,7 +120,7 @@ struct SliderCrankDesign {
   double reanalysed_phi0 = 0, reanalysed_stroke = 0;
 };
 
-// With the offset |e| given (its sign follows from phi0).
+// With the offset |e| given (its sign follows from phi0; a negative one is an invalid request).
 SliderCrankDesign SliderCrankFromOffset(const SliderCrankRequest& request, double offset);
 // With beta given instead: B_a = (e cot beta, e), B_i = (e cot(beta + theta), e).
 SliderCrankDesign SliderCrankFromBeta(const SliderCrankRequest& request, double beta);

@@ -187,7 +187,7 @@ bool TargetModel::DeadCentre(const Mechanism& m, PositionSolver& solver, const E
   Continuation path(solver);
   if (!path.Start(m.hint.input, q_hint).ok() || !path.AdvanceTo(t.input, 0.05).ok()) return false;
   const StationaryPoint dc = RefineStationary(m, t.output, t.component, path.input(), path.q());
-  if (!dc.found || dc.second == 0.0) return false;
+  if (!dc.ok() || dc.second == 0.0) return false;
   *residual = t.weight * (m.InputIsAngle() ? WrappedAngle(dc.input - t.input) : dc.input - t.input);
   if (!jacobian_row) return true;
   std::fill(jacobian_row, jacobian_row + n_unknowns, 0.0);

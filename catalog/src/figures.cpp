@@ -176,7 +176,7 @@ CheckOutcome EvaluateFigure(const MechanismFile& file, const CatalogCard& card, 
     value = q == "straightline_phi_g" ? in_unit(s.phi_g) : q == "straightline_phi_a" ? in_unit(s.phi_a) : s.length;
   } else if (q == "cognate_frame") {
     const Cognates c = RobertsCognates(m, m.outputs[output].p);
-    if (!c.ok) {
+    if (!c.ok()) {
       out.detail = c.message;
       return out;
     }

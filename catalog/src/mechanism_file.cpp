@@ -294,10 +294,8 @@ class MechanismReader {
           ok &= o.link >= 0 && o.joint >= 0;
           // the coupler's joints are only meaningful once the rest of the file is sound
           if (ok && r_.diagnostics().empty() && CheckConsistency(m_).empty()) {
-            TransmissionGeometry geometry;
-            std::string error;
-            if (!ResolveTransmission(m_, o, &geometry, &error)) {
-              r_.Error(v, tpath, owner + ": " + error);
+            if (const Expected<TransmissionGeometry> geometry = ResolveTransmission(m_, o); !geometry) {
+              r_.Error(v, tpath, owner + ": " + geometry.error());
               ok = false;
             }
           }

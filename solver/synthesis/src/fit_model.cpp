@@ -30,9 +30,9 @@ double WrappedAngle(double difference) {
 
 bool TargetModel::Evaluate(const double* unknowns, int n_params, double* residuals, double* jacobian) const {
   std::vector<double> p(unknowns, unknowns + n_params);
-  Mechanism m;
-  std::string error;
-  if (!builder_(p, &m, &error)) return false;
+  const Expected<Mechanism> built = builder_(p);
+  if (!built) return false;
+  const Mechanism& m = *built;
   PositionSolver solver(m);
   Eigen::VectorXd q(solver.NumCoordinates());
   if (!solver.Assemble(q).ok()) return false;
@@ -99,13 +99,15 @@ bool TargetModel::Perturb(const std::vector<double>& p, Perturbations* out) cons
   out->plus.resize(n);
   out->minus.resize(n);
   out->step.resize(n);
-  std::string error;
   for (size_t j = 0; j < n; ++j) {
     out->step[j] = kParameterStep * std::max(1.0, std::abs(p[j]));
     std::vector<double> pp = p, pm = p;
     pp[j] += out->step[j];
     pm[j] -= out->step[j];
-    if (!builder_(pp, &out->plus[j], &error) || !builder_(pm, &out->minus[j], &error)) return false;
+    Expected<Mechanism> plus = builder_(pp), minus = builder_(pm);
+    if (!plus || !minus) return false;
+    out->plus[j] = std::move(*plus);
+    out->minus[j] = std::move(*minus);
   }
   return true;
 }

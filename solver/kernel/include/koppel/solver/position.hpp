@@ -108,7 +108,9 @@ class PositionSolver {
   void Evaluate(const Eigen::VectorXd& q, double input);  // fills residual_ and jacobian_
   bool Factorize();                                       // factorises jacobian_
   void SolveFactorized(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
-  Eigen::VectorXd InitialGuess() const;
+  // The first guess from the frame, the drive and the hint. Links whose angle neither determines
+  // get angle 0 on attempt 0 and a spread of angles on later attempts (see AssembleAt).
+  Eigen::VectorXd InitialGuess(int attempt) const;
   SolveReport Report(SolveStatus status, int iterations, std::string message) const;
   template <int N> bool SeriesImpl(int order, Eigen::MatrixXd& coefficients);
 

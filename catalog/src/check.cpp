@@ -37,10 +37,12 @@ void RunEquations(const MechanismFile& file, const CatalogCard& card, const std:
 
   std::vector<CheckOutcome> results(card.equations.size());
   std::vector<int> columns(card.equations.size());
+  std::vector<bool> angle(card.equations.size());
   for (size_t i = 0; i < card.equations.size(); ++i) {
     const EquationCheck& e = card.equations[i];
     columns[i] = OutputColumn(m, e.output, e.component, e.order, order);
     if (columns[i] < 0) Fail(file.path, e.line, "catalog.equations", "equation '" + e.name + "' names no output '" + e.output + "'");
+    angle[i] = e.order == 0 && OutputIsAngle(m, m.outputs[m.FindOutput(e.output)]);
     results[i].variant = variant;
     results[i].name = e.name;
     results[i].kind = CheckKind::kEquation;
@@ -59,7 +61,9 @@ void RunEquations(const MechanismFile& file, const CatalogCard& card, const std:
       const EquationCheck& e = card.equations[i];
       const std::optional<double> expected = sample.Evaluate(e.formula, &error);
       if (!expected) Fail(file.path, e.line, "catalog.equations", "equation '" + e.name + "': " + error);
-      const double deviation = std::abs(sweep.outputs(s, columns[i]) - *expected);
+      // an angle is compared wrap-aware: a closed form in atan2 may differ by whole turns
+      const double difference = sweep.outputs(s, columns[i]) - *expected;
+      const double deviation = std::abs(angle[i] ? AngleDifference(difference, 0.0) : difference);
       if (deviation > results[i].worst) {
         results[i].worst = deviation;
         results[i].where = angle_input ? RadToDeg(sweep.inputs[s]) : sweep.inputs[s];

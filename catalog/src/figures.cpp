@@ -115,7 +115,9 @@ CheckOutcome EvaluateFigure(FigureContext& context, const FigureCheck& f, const 
   }
   // koppel's value in the figure's unit: degrees when the figure is an angle given in degrees
   out.value = f.degrees ? RadToDeg(*result.value) : *result.value;
-  out.worst = std::abs(out.value - *expected);
+  // an angle position is the same modulo a turn (a maximum at 360 deg is the one at 0)
+  const bool periodic = f.degrees && QuantityInfo(f.quantity).angle == AngleKind::kPosition;
+  out.worst = periodic ? std::abs(std::remainder(out.value - *expected, 360.0)) : std::abs(out.value - *expected);
   out.status = out.worst <= f.tolerance ? CheckStatus::kPassed : CheckStatus::kFailed;
   if (!out.passed()) out.detail = "document " + FormatShort(*expected) + ", koppel " + FormatShort(out.value);
   return out;

@@ -47,11 +47,16 @@ struct FigureValue {
 
 using FigureEvaluator = FigureValue (*)(FigureContext& context, const FigureCheck& figure);
 
+// Whether an angle value is a position (compared modulo 360 deg: 360 is 0) or a span (a swing of
+// 360 deg is not one of 0).
+enum class AngleKind { kPosition, kSpan };
+
 struct FigureQuantityInfo {
   FigureQuantity quantity;
   const char* name;  // as written after `quantity:`
   OutputUse output;
   ValueUnit unit;
+  AngleKind angle;
   std::vector<FigureArgument> arguments;
   const char* meaning;  // one line, for `catalog show` and the README
   FigureEvaluator evaluate;

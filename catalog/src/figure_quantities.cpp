@@ -90,7 +90,11 @@ FigureValue AtInput(FigureContext& c, const FigureCheck& f) {
 // extended dead centre counter-clockwise, either dead centre's input, the time ratio
 FigureValue DeadCentreFigure(FigureContext& c, const FigureCheck& f) {
   const DeadCentreReport& r = c.DeadCentres(c.Output(f), f.component);
-  if (!r.has_stroke || !r.classified) return NotComputed(r.message.empty() ? "no extended and folded dead centre found" : r.message);
+  if (!r.has_stroke) return NotComputed(r.message.empty() ? "no two dead centres found" : r.message);
+  // the extended and folded dead centre proper need the crank-coupler line-up; span and time ratio
+  // are defined by the output's maximum and minimum as well (dead_centres.hpp)
+  const bool positions = f.quantity == FigureQuantity::kDeadCentrePhiA || f.quantity == FigureQuantity::kDeadCentrePhiI;
+  if (positions && !r.classified) return NotComputed("the dead centres are not crank-coupler line-ups (extended/folded)");
   const double turn = 2 * kPi;
   auto wrap = [turn](double a) { return std::fmod(std::fmod(a, turn) + turn, turn); };
   switch (f.quantity) {
@@ -230,13 +234,15 @@ std::vector<FigureQuantityInfo> MakeTable() {
       {Q::kDerivative, "derivative", O::kAny, U::kPlain, A::kSpan, {kAtRequired, {"order", ArgumentKind::kOrder, true}},
        "transfer function of order `order` at input `at` (per radian of an R drive)", AtInput},
       {Q::kDeadCentreSpan, "deadcentre_span", O::kAny, U::kOfInput, A::kSpan, {},
-       "crank angle from the folded to the extended dead centre, counter-clockwise", DeadCentreFigure},
+       "crank angle from the folded to the extended dead centre (else: from the minimum to the maximum), counter-clockwise",
+       DeadCentreFigure},
       {Q::kDeadCentrePhiA, "deadcentre_phi_a", O::kAny, U::kOfInput, A::kPosition, {}, "input of the extended dead centre (äußere Totlage)",
        DeadCentreFigure},
       {Q::kDeadCentrePhiI, "deadcentre_phi_i", O::kAny, U::kOfInput, A::kPosition, {}, "input of the folded dead centre (innere Totlage)",
        DeadCentreFigure},
       {Q::kPhaseRatio, "phase_ratio", O::kAny, U::kPlain, A::kSpan, {},
-       "time ratio phi_H / (360 deg - phi_H), phi_H from the extended to the folded dead centre", DeadCentreFigure},
+       "time ratio phi_H / (360 deg - phi_H), phi_H from the extended to the folded dead centre (else: from the maximum to the minimum)",
+       DeadCentreFigure},
       {Q::kProportionalityDs, "proportionality_ds", O::kAny, U::kPlain, A::kSpan, {kFromRequired, kToRequired},
        "band width about the flat-point tangent over from..to (seed 001)", ProportionalityFigure},
       {Q::kProportionalityQp, "proportionality_qp", O::kAny, U::kPlain, A::kSpan, {kFromRequired, kToRequired},

@@ -36,6 +36,9 @@ std::optional<Extremum> FindExtremum(const Mechanism& m, const SweepResult& swee
     const double v = sweep.outputs(i, column), b = sweep.outputs(best, column);
     if (maximum ? v > b : v < b) best = i;
   }
+  // a constant output (an exact straight line's other coordinate) has no isolated extreme
+  const double lo_sample = sweep.outputs.col(column).minCoeff(), hi_sample = sweep.outputs.col(column).maxCoeff();
+  if (hi_sample - lo_sample <= 1e-12 * std::max(1.0, LengthScale(m))) return Extremum{sweep.inputs[best], sweep.outputs(best, column)};
   const Eigen::VectorXd q = sweep.poses.row(best).transpose();
   const StationaryPoint p = RefineStationary(m, output, component, sweep.inputs[best], q);
   const bool interior = best > 0 && best < n - 1;

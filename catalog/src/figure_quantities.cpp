@@ -121,10 +121,9 @@ FigureValue ProportionalityFigure(FigureContext& c, const FigureCheck& f) {
 
 // seed 003's reading example: the longest stretch through K_I with Q_G <= qg (coupler_curve.hpp)
 FigureValue StraightStretchFigure(FigureContext& c, const FigureCheck& f) {
-  const Mechanism& m = c.mechanism();
   std::optional<double> at;
   if (c.Has(f, "at")) at = c.Input(f, "at");
-  const StraightStretch s = LongestStraightStretch(m, m.outputs[c.Output(f)].p, c.Number(f, "qg"), at, kPi, DegToRad(0.02));
+  const StraightStretch& s = c.LongestStretch(c.Output(f), c.Number(f, "qg"), at);
   if (!s.found) return NotComputed(s.message);
   switch (f.quantity) {
     case FigureQuantity::kStraightlinePhiG: return Value(s.phi_g);

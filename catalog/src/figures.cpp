@@ -92,6 +92,13 @@ std::string FormatShort(double v) {
 }
 }  // namespace
 
+const StraightStretch& FigureContext::LongestStretch(int output, double qg, std::optional<double> at) {
+  std::unique_ptr<StraightStretch>& cached = stretches_[{output, qg, at}];
+  // the search range and resolution of seed 003's reading example: half a turn either way, 0.02 deg
+  if (!cached) cached = std::make_unique<StraightStretch>(LongestStraightStretch(mechanism(), mechanism().outputs[output].p, qg, at, kPi, DegToRad(0.02)));
+  return *cached;
+}
+
 bool FigureApplies(const FigureCheck& figure, const std::string& variant) {
   return figure.variant.empty() || figure.variant == variant;
 }

@@ -3,6 +3,7 @@
 // card with twenty figures sweeps once, not twenty times. Private to the catalog.
 #pragma once
 
+#include "koppel/analysis/coupler_curve.hpp"
 #include "koppel/analysis/dead_centres.hpp"
 #include "koppel/catalog/card.hpp"
 #include "koppel/catalog/check.hpp"
@@ -14,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace koppel {
@@ -52,6 +54,9 @@ class FigureContext {
   const SweepResult& RangeSweep(const FigureCheck& figure);
   // Dead centres of an output over the card's range; cached.
   const DeadCentreReport& DeadCentres(int output, int component);
+  // The longest straight stretch of a point output with Q_G <= qg around `at` (coupler_curve.hpp);
+  // cached, as several figures read one search.
+  const StraightStretch& LongestStretch(int output, double qg, std::optional<double> at);
 
   [[noreturn]] void Fail(const FigureCheck& figure, const std::string& message) const;
 
@@ -60,6 +65,7 @@ class FigureContext {
   const CatalogCard& card_;
   std::map<std::pair<double, double>, std::unique_ptr<SweepResult>> sweeps_;
   std::map<std::pair<int, int>, std::unique_ptr<DeadCentreReport>> dead_centres_;
+  std::map<std::tuple<int, double, std::optional<double>>, std::unique_ptr<StraightStretch>> stretches_;
 };
 
 bool FigureApplies(const FigureCheck& figure, const std::string& variant);

@@ -205,7 +205,7 @@ class CardReader {
     }
     const koppel::Output& out = m_.outputs[index];
     if (use == OutputUse::kPoint && out.kind != OutputKind::kPoint) r_.Error(o, Child(ipath, "output"), "this quantity needs a point output");
-    if (use == OutputUse::kAngle && !OutputIsAngle(m_, out)) r_.Error(o, Child(ipath, "output"), "this quantity needs an angle output");
+    if (use == OutputUse::kAngle && !IsAngleOutput(m_, out)) r_.Error(o, Child(ipath, "output"), "this quantity needs an angle output");
     if (!c.IsDefined()) return;
     const std::optional<std::string> text = r_.Text(c, Child(ipath, "component"));
     if (!text) return;
@@ -358,7 +358,7 @@ class CardReader {
       case ValueUnit::kPlain: return false;
       case ValueUnit::kOfOutput: {
         const int o = m_.FindOutput(f.output);
-        return o >= 0 && OutputIsAngle(m_, m_.outputs[o]);
+        return o >= 0 && IsAngleOutput(m_, m_.outputs[o]);
       }
     }
     return false;

@@ -42,7 +42,7 @@ void RunEquations(const MechanismFile& file, const CatalogCard& card, const std:
     const EquationCheck& e = card.equations[i];
     columns[i] = OutputColumn(m, e.output, e.component, e.order, order);
     if (columns[i] < 0) Fail(file.path, e.line, "catalog.equations", "equation '" + e.name + "' names no output '" + e.output + "'");
-    angle[i] = e.order == 0 && OutputIsAngle(m, m.outputs[m.FindOutput(e.output)]);
+    angle[i] = e.order == 0 && m.OutputIsAngle(m.FindOutput(e.output));
     results[i].variant = variant;
     results[i].name = e.name;
     results[i].kind = CheckKind::kEquation;

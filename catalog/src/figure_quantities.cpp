@@ -93,7 +93,7 @@ FigureValue AtInput(FigureContext& c, const FigureCheck& f) {
 // extended dead centre counter-clockwise, either dead centre's input, the time ratio
 FigureValue DeadCentreFigure(FigureContext& c, const FigureCheck& f) {
   const DeadCentreReport& r = c.DeadCentres(c.Output(f), f.component);
-  if (!r.has_stroke) return NotComputed(r.message.empty() ? "no two dead centres found" : r.message);
+  if (!r.has_stroke) return NotComputed(r.sweep.message.empty() ? "no two dead centres found" : r.sweep.message);
   // the extended and folded dead centre proper need the crank-coupler line-up; span and time ratio
   // are defined by the output's maximum and minimum as well (dead_centres.hpp)
   const bool positions = f.quantity == FigureQuantity::kDeadCentrePhiA || f.quantity == FigureQuantity::kDeadCentrePhiI;
@@ -147,18 +147,25 @@ FigureValue CognateFrame(FigureContext& c, const FigureCheck& f) {
   return Value(cognates.frame_first);
 }
 
-// The drivable range from the assembly, followed up to a full turn (or four length scales for a
-// slide drive) either way.
-InputRange Drivable(const Mechanism& m, double step) {
-  const double span = m.InputIsAngle() ? 2 * kPi : 4 * LengthScale(m);
-  return DrivableRange(m, span, std::abs(step));
+// The branch the assembly hint chooses, from the drivable ranges (ranges.hpp); nullptr and a
+// reason when they could not be found.
+const BranchRange* HintBranch(const RangeReport& report, std::string* why_not) {
+  if (report.status != RangeStatus::kDone || report.branches.empty() || report.HasFailure()) {
+    *why_not = report.message.empty() ? report.Brief() : report.message;
+    return nullptr;
+  }
+  return &report.branches.front();
 }
 
 FigureValue InputLimit(FigureContext& c, const FigureCheck& f) {
-  const InputRange r = Drivable(c.mechanism(), c.CardRange().step);
+  std::string why_not;
+  const BranchRange* branch = HintBranch(c.Ranges(), &why_not);
+  if (!branch) return NotComputed(why_not);
   const bool low = f.quantity == FigureQuantity::kInputLow;
-  if (low ? !r.low_limited : !r.high_limited) return NotComputed("the input reaches no limit position on this side: it turns fully");
-  return Value(low ? r.low : r.high);
+  const RangeEnd end = low ? branch->from_kind : branch->to_kind;
+  if (end != RangeEnd::kLimit && end != RangeEnd::kBranchPoint)
+    return NotComputed(std::string("the drivable range ends in no limit position on this side: ") + ToString(end));
+  return Value(low ? branch->from : branch->to);
 }
 
 // The mechanism driven at R joint `joint` instead, on the same assembly branch: the assembly
@@ -191,16 +198,38 @@ std::optional<Mechanism> DrivenAt(const Mechanism& m, int joint, std::string* wh
   return driven;
 }
 
-// 1 when the joint turns fully (no limit position within a turn either way), 0 when it oscillates
+// 1 when the joint turns fully on the assembly's branch (its drivable range ends in a full
+// turn), 0 when it oscillates
 FigureValue Revolves(FigureContext& c, const FigureCheck& f) {
   const Mechanism& m = c.mechanism();
   const int joint = c.Has(f, "joint") ? c.Joint(f, "joint") : m.drive.joint;
   std::string why_not;
-  const std::optional<Mechanism> driven = joint == m.drive.joint ? m : DrivenAt(m, joint, &why_not);
+  if (joint == m.drive.joint) {
+    const BranchRange* branch = HintBranch(c.Ranges(), &why_not);
+    if (!branch) return NotComputed(why_not);
+    return Value(branch->to_kind == RangeEnd::kFullTurn ? 1.0 : 0.0);
+  }
+  const std::optional<Mechanism> driven = DrivenAt(m, joint, &why_not);
   if (!driven) return NotComputed(why_not);
-  const double step = m.InputIsAngle() ? c.CardRange().step : DegToRad(1);
-  const InputRange r = Drivable(*driven, step);
-  return Value(r.low_limited || r.high_limited ? 0.0 : 1.0);
+  const RangeReport ranges = DrivableRanges(*driven);
+  const BranchRange* branch = HintBranch(ranges, &why_not);
+  if (!branch) return NotComputed(why_not);
+  return Value(branch->to_kind == RangeEnd::kFullTurn ? 1.0 : 0.0);
+}
+
+// the input of the branch point (Verzweigungslage, e.g. a change point) nearest `near` that the
+// sweep of the card's range crossed (sweep.hpp)
+FigureValue BranchPointFigure(FigureContext& c, const FigureCheck& f) {
+  const SweepResult& sweep = c.RangeSweep(f);
+  if (!sweep.complete()) return NotComputed(sweep.message);
+  const double near = c.Input(f, "near");
+  std::optional<double> best;
+  for (const SingularPoint& p : sweep.singular_points) {
+    if (p.kind != SingularKind::kBranchPoint) continue;
+    if (!best || std::abs(p.input - near) < std::abs(*best - near)) best = p.input;
+  }
+  if (!best) return NotComputed("the sweep met no branch point");
+  return Value(*best);
 }
 
 // full turns of an angle output from the first to the last sample of the sweep (link angles
@@ -263,6 +292,8 @@ std::vector<FigureQuantityInfo> MakeTable() {
       {Q::kRevolves, "revolves", O::kNone, U::kPlain, A::kSpan, {{"joint", ArgumentKind::kJoint, false}},
        "1 when the R joint (default: the drive) turns fully on this branch, 0 when it oscillates", Revolves},
       {Q::kTurns, "turns", O::kAngle, U::kPlain, A::kSpan, {kFrom, kTo}, "full turns of an angle output over the sweep", Turns},
+      {Q::kBranchPoint, "branch_point", O::kNone, U::kOfInput, A::kPosition, {{"near", ArgumentKind::kInput, true}},
+       "input of the branch point (change point) nearest `near` that the sweep crosses", BranchPointFigure},
   };
 }
 

@@ -16,11 +16,6 @@ int OutputColumn(const Mechanism& m, const std::string& name, int component, int
   return -1;
 }
 
-bool OutputIsAngle(const Mechanism& m, const koppel::Output& o) {
-  if (o.kind == OutputKind::kJoint) return o.joint >= 0 && m.joints[o.joint].type == JointType::kRevolute;
-  return o.IsAngle();
-}
-
 int FigureContext::Output(const FigureCheck& f) const {
   const int output = mechanism().FindOutput(f.output);
   if (output < 0) Fail(f, "names no output '" + f.output + "'");
@@ -91,6 +86,11 @@ std::string FormatShort(double v) {
   return buffer;
 }
 }  // namespace
+
+const RangeReport& FigureContext::Ranges() {
+  if (!ranges_) ranges_ = std::make_unique<RangeReport>(DrivableRanges(mechanism()));
+  return *ranges_;
+}
 
 const StraightStretch& FigureContext::LongestStretch(int output, double qg, std::optional<double> at) {
   std::unique_ptr<StraightStretch>& cached = stretches_[{output, qg, at}];

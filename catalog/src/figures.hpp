@@ -5,6 +5,7 @@
 
 #include "koppel/analysis/coupler_curve.hpp"
 #include "koppel/analysis/dead_centres.hpp"
+#include "koppel/analysis/ranges.hpp"
 #include "koppel/catalog/card.hpp"
 #include "koppel/catalog/check.hpp"
 #include "koppel/catalog/figure_quantities.hpp"
@@ -23,10 +24,6 @@ namespace koppel {
 // Column of output `name`, component, derivative order k in a sweep table of order `order`;
 // -1 when the mechanism has no such output.
 int OutputColumn(const Mechanism& m, const std::string& name, int component, int k, int order);
-
-// True for outputs measured in radians: link angles, directions, transmission angles and the
-// values of R joints.
-bool OutputIsAngle(const Mechanism& m, const Output& output);
 
 class FigureContext {
  public:
@@ -54,6 +51,9 @@ class FigureContext {
   const SweepResult& RangeSweep(const FigureCheck& figure);
   // Dead centres of an output over the card's range; cached.
   const DeadCentreReport& DeadCentres(int output, int component);
+  // The drivable ranges of the mechanism's branches (ranges.hpp); cached.
+  const RangeReport& Ranges();
+
   // The longest straight stretch of a point output with Q_G <= qg around `at` (coupler_curve.hpp);
   // cached, as several figures read one search.
   const StraightStretch& LongestStretch(int output, double qg, std::optional<double> at);
@@ -66,6 +66,7 @@ class FigureContext {
   std::map<std::pair<double, double>, std::unique_ptr<SweepResult>> sweeps_;
   std::map<std::pair<int, int>, std::unique_ptr<DeadCentreReport>> dead_centres_;
   std::map<std::tuple<int, double, std::optional<double>>, std::unique_ptr<StraightStretch>> stretches_;
+  std::unique_ptr<RangeReport> ranges_;
 };
 
 bool FigureApplies(const FigureCheck& figure, const std::string& variant);

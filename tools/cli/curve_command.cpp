@@ -2,6 +2,7 @@
 // the straight-line analysis (Geradführung) of seed 003.
 #include "commands.hpp"
 #include "common.hpp"
+#include "sweep_report.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "koppel/analysis/coupler_curve.hpp"
@@ -10,7 +11,7 @@ namespace koppel::cli {
 namespace {
 
 struct Args {
-  std::string file, point, from, to, step, at, qg = "0.005", stretch, resolution = "0.02";
+  std::string file, point, from, to, step, at, qg = "0.005", stretch, resolution = "0.02", at_branch_point;
   std::vector<std::string> sets;
   bool straight = false;
   std::string format = "csv", out;
@@ -25,34 +26,38 @@ void Run(const Args& args) {
   auto in = [&](double v) { return angle ? DegToRad(v) : v; };
   auto shown = [&](double v) { return angle ? RadToDeg(v) : v; };
   const std::string unit = angle ? "deg" : "length";
+  ContinuationOptions continuation;
+  continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
   if (!args.straight) {
     SweepOptions range;
+    range.continuation = continuation;
     range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
     range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
     range.step = in(args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step));
-    if (range.step == 0) {
-      Complain("--step must not be 0");
+    std::string why;
+    if (!range.IsValid(&why)) {
+      Complain("--from/--to/--step: " + why);
       throw Exit{kExitBadInput};
     }
     const CouplerCurve c = TraceCurve(m, point, range);
     Table t;
-    t.columns = {m.drive.input_name, "x", "y", "dx", "dy", "arc", "curvature"};
+    t.columns = {m.drive.input_name, "x", "y", "dx", "dy", "arc", "curvature", "singular"};
     for (size_t i = 0; i < c.inputs.size(); ++i)
-      t.rows.push_back({shown(c.inputs[i]), c.points[i].x(), c.points[i].y(), c.d1[i].x(), c.d1[i].y(), c.arc_length[i], c.curvature[i]});
+      t.rows.push_back({shown(c.inputs[i]), c.points[i].x(), c.points[i].y(), c.d1[i].x(), c.d1[i].y(), c.arc_length[i], c.curvature[i],
+                        static_cast<double>(c.singular[i])});
     if (args.format == "json") {
       nlohmann::json j = t.ToJson();
       j["mechanism"] = m.name;
       j["point"] = m.links[point.link].name + "." + m.links[point.link].points[point.point].name;
-      j["complete"] = c.message.empty();
-      if (!c.message.empty()) j["message"] = c.message;
+      j["complete"] = c.sweep.complete();
+      j.update(SweepEventsJson(m, c.sweep));
+      if (!c.sweep.complete()) j["message"] = c.sweep.message;
       WriteOutput(args.out, j.dump(1) + "\n");
     } else {
       WriteOutput(args.out, t.ToCsv());
     }
-    if (!c.message.empty()) {
-      Complain(args.file + ": " + c.message);
-      throw Exit{kExitFailed};
-    }
+    ReportSweep(args.file, m, c.sweep);
+    if (!c.sweep.complete()) throw Exit{kExitFailed};
     return;
   }
   if (!angle) {
@@ -74,14 +79,14 @@ void Run(const Args& args) {
       throw Exit{kExitBadInput};
     }
     s = StretchBand(m, point, *reference, DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(0, colon))),
-                    DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(colon + 1))), resolution);
+                    DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(colon + 1))), resolution, continuation);
   } else {
     const double qg = ParseNumberFlag("--qg", args.qg);
     if (qg <= 0) {
       Complain("--qg must be positive");
       throw Exit{kExitBadInput};
     }
-    s = LongestStraightStretch(m, point, qg, reference, kPi, resolution);
+    s = LongestStraightStretch(m, point, qg, reference, kPi, resolution, continuation);
   }
   if (!s.found) {
     Complain(args.file + ": " + s.message);
@@ -125,6 +130,7 @@ void AddCurveCommand(CLI::App& app) {
   cmd->add_option("--at", args->at, "Input of the reference point K_I [deg] (default: least curvature)");
   cmd->add_option("--stretch", args->stretch, "A:E — measure this stretch [deg] instead of searching");
   cmd->add_option("--resolution", args->resolution, "Input resolution of the search [deg] (default 0.02)");
+  AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
   cmd->add_option("--format", args->format, "csv (default) or json");
   cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout");

@@ -39,8 +39,8 @@ CouplerCurve TraceCurve(const Mechanism& m, const PointRef& point, const SweepOp
   options.order = 2;
   const SweepResult sweep = Sweep(traced, options);
   CouplerCurve curve;
-  curve.status = sweep.status;
-  curve.message = sweep.message;
+  curve.sweep = EventsOf(sweep);
+  curve.singular = sweep.singular;
   const int n = static_cast<int>(sweep.inputs.size());
   for (int i = 0; i < n; ++i) {
     // columns: x, x', x'', y, y', y''
@@ -78,17 +78,21 @@ struct Frame {
   std::string message;
 };
 
-Frame FrameAround(const Mechanism& m, const PointRef& point, double reference, double below, double above, double resolution) {
+Frame FrameAround(const Mechanism& m, const PointRef& point, double reference, double below, double above, double resolution,
+                  const ContinuationOptions& continuation) {
   Frame f;
   // trace both ways from the reference so that its sample is exact
   SweepOptions up, down;
+  up.continuation = down.continuation = continuation;
   up.from = down.from = reference;
   up.to = reference + above;
   down.to = reference - below;
   up.step = down.step = resolution;
   const CouplerCurve right = TraceCurve(m, point, up), left = TraceCurve(m, point, down);
-  if (right.inputs.empty() || left.inputs.empty() || !right.message.empty() || !left.message.empty()) {
-    f.message = !right.message.empty() ? right.message : (!left.message.empty() ? left.message : "the curve cannot be traced");
+  // a stretch is measured only where the branch is drivable throughout
+  if (right.inputs.empty() || left.inputs.empty() || !right.sweep.complete() || !left.sweep.complete()) {
+    f.message = !right.sweep.complete() ? right.sweep.message : left.sweep.message;
+    if (f.message.empty()) f.message = "the curve cannot be traced";
     return f;
   }
   std::vector<Eigen::Vector2d> pts;
@@ -128,10 +132,12 @@ void Measure(const Frame& f, int a, int e, StraightStretch& s) {
 
 }  // namespace
 
-StraightStretch StretchBand(const Mechanism& m, const PointRef& point, double reference, double from, double to, double resolution) {
+StraightStretch StretchBand(const Mechanism& m, const PointRef& point, double reference, double from, double to, double resolution,
+                            const ContinuationOptions& continuation) {
   StraightStretch s;
   s.reference = reference;
-  const Frame f = FrameAround(m, point, reference, std::max(reference - from, resolution), std::max(to - reference, resolution), resolution);
+  const Frame f = FrameAround(m, point, reference, std::max(reference - from, resolution), std::max(to - reference, resolution),
+                              resolution, continuation);
   if (!f.message.empty()) {
     s.message = f.message;
     return s;
@@ -149,23 +155,24 @@ StraightStretch StretchBand(const Mechanism& m, const PointRef& point, double re
 }
 
 StraightStretch LongestStraightStretch(const Mechanism& m, const PointRef& point, double qg, std::optional<double> reference,
-                                       double half_range, double resolution) {
+                                       double half_range, double resolution, const ContinuationOptions& continuation) {
   StraightStretch best;
   if (!reference) {
     SweepOptions whole;
+    whole.continuation = continuation;
     whole.from = -half_range;
     whole.to = half_range;
     whole.step = resolution;
     const CouplerCurve curve = TraceCurve(m, point, whole);
     const int flat = FlattestSample(curve);
-    if (flat < 0 || !curve.message.empty()) {
-      best.message = curve.message.empty() ? "the curve cannot be traced" : curve.message;
+    if (flat < 0 || !curve.sweep.complete()) {
+      best.message = curve.sweep.message.empty() ? "the curve cannot be traced" : curve.sweep.message;
       return best;
     }
     reference = curve.inputs[flat];
   }
   best.reference = *reference;
-  const Frame f = FrameAround(m, point, *reference, half_range, half_range, resolution);
+  const Frame f = FrameAround(m, point, *reference, half_range, half_range, resolution, continuation);
   if (!f.message.empty()) {
     best.message = f.message;
     return best;

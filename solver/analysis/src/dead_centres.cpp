@@ -51,18 +51,9 @@ DeadCentreReport FindDeadCentres(const Mechanism& m, int output, int component, 
   SweepOptions options = range;
   options.order = 2;
   const SweepResult sweep = Sweep(m, options);
-  if (sweep.inputs.empty()) {
-    report.status = sweep.status;
-    report.message = sweep.message;
-    return report;
-  }
-  if (!sweep.complete()) {
-    report.status = sweep.status;
-    report.message = sweep.message;  // dead centres are still searched over the part swept
-  }
-  int column = 0;
-  for (int o = 0; o < output; ++o) column += m.outputs[o].Components() * 3;
-  column += component * 3;
+  report.sweep = EventsOf(sweep);  // dead centres are searched over the part swept
+  if (sweep.inputs.empty()) return report;
+  const int column = OutputColumn(m, output, component, 2);
   const int n = static_cast<int>(sweep.inputs.size());
   const double resolution = std::abs(options.step);
   for (int i = 0; i + 1 < n; ++i) {
@@ -71,6 +62,7 @@ DeadCentreReport FindDeadCentres(const Mechanism& m, int output, int component, 
     const int start = std::abs(d0) <= std::abs(d1) ? i : i + 1;
     StationaryOptions stationary;
     stationary.max_step = resolution;
+    stationary.continuation = options.continuation;
     const StationaryPoint p = RefineStationary(m, output, component, sweep.inputs[start], sweep.poses.row(start).transpose(), stationary);
     if (!p.found) continue;
     // one dead centre per sign change: drop a repeat found from the neighbouring interval

@@ -8,9 +8,10 @@
 namespace koppel {
 
 Proportionality ProportionalityDeviation(const Mechanism& m, int output, double from, double to, double reference_length,
-                                         std::optional<double> reference, double resolution) {
+                                         std::optional<double> reference, double resolution, const ContinuationOptions& continuation) {
   Proportionality p;
   SweepOptions options;
+  options.continuation = continuation;
   options.from = from;
   options.to = to;
   options.step = resolution;
@@ -18,16 +19,18 @@ Proportionality ProportionalityDeviation(const Mechanism& m, int output, double 
   Mechanism single = m;
   single.outputs = {m.outputs[output]};
   const SweepResult sweep = Sweep(single, options);
-  if (!sweep.complete()) {
-    p.message = sweep.message;
+  p.sweep = EventsOf(sweep);
+  const int n = static_cast<int>(sweep.inputs.size());
+  if (n < 2) {
+    p.message = sweep.message.empty() ? "fewer than two samples in the range" : sweep.message;
     return p;
   }
-  const int n = static_cast<int>(sweep.inputs.size());
   // the tangent point: given, or the flat point (least |s''| over the samples; the table step
   // is then the resolution of the answer)
   double s_ref = 0;
   if (reference) {
     SweepOptions at;
+    at.continuation = continuation;
     at.from = at.to = *reference;
     at.order = 1;
     const SweepResult r = Sweep(single, at);
@@ -57,7 +60,7 @@ Proportionality ProportionalityDeviation(const Mechanism& m, int output, double 
   const double chord = (sweep.outputs(n - 1, 0) - sweep.outputs(0, 0)) / (sweep.inputs[n - 1] - sweep.inputs[0]);
   for (int i = 0; i < n; ++i)
     p.chord_deviation = std::max(p.chord_deviation, std::abs(sweep.outputs(i, 0) - sweep.outputs(0, 0) - chord * (sweep.inputs[i] - sweep.inputs[0])));
-  p.phi_p = std::abs(to - from);
+  p.phi_p = std::abs(sweep.inputs[n - 1] - sweep.inputs[0]);
   p.qp = (p.delta_s / reference_length) / p.phi_p;
   p.ok = true;
   return p;

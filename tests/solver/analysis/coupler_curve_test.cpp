@@ -23,7 +23,7 @@ TEST_CASE("arc length of the crank pin is l1 times the crank angle", "[curve]") 
   range.to = 2 * kPi;
   range.step = DegToRad(5);
   const CouplerCurve c = TraceCurve(m, {1, 1}, range);  // crank.A on a circle of radius l1 = 1
-  REQUIRE(c.message.empty());
+  REQUIRE(c.sweep.complete());
   // Gauss on the Hermite interpolant of a circle: O(h^4) ~ 1e-7 relative at 5 deg steps
   CHECK(c.arc_length.back() == Approx(2 * kPi).epsilon(1e-6));
   for (double k : c.curvature) CHECK(k == Approx(1.0).epsilon(1e-12));  // curvature 1/l1
@@ -36,7 +36,7 @@ TEST_CASE("seed 003: B0K_I = 10/3 sqrt 6, stroke h = 0.469, K_I flattest", "[cur
   range.to = 2 * kPi;
   range.step = DegToRad(0.5);
   const CouplerCurve c = TraceCurve(m, {2, 2}, range);
-  REQUIRE(c.message.empty());
+  REQUIRE(c.sweep.complete());
   const Eigen::Vector2d b0(4, 0);
   const Eigen::Vector2d k_i = c.points[360], k_ii = c.points[0];  // phi = 180 deg and 0
   CHECK((k_i - b0).norm() == Approx(10.0 / 3 * std::sqrt(6.0)).margin(1e-12));

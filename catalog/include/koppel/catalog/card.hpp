@@ -67,6 +67,7 @@ enum class FigureQuantity {
   kInputHigh,            // ... and its upper one
   kRevolves,             // 1 when a joint can turn fully, 0 when it oscillates
   kTurns,                // full turns of an angle output over the sweep
+  kBranchPoint,          // input of the branch point (change point) nearest `near`
 };
 
 // A scalar figure of the document, recomputed from the solver. Every key is checked against

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,9 +18,9 @@
 namespace koppel {
 
 struct CouplerCurve {
-  SolveStatus status = SolveStatus::kConverged;
-  std::string message;
+  SweepEvents sweep;                         // status, singular points and gaps of the trace
   std::vector<double> inputs;
+  std::vector<std::uint8_t> singular;        // per sample: the pose is singular (see SweepResult)
   std::vector<Eigen::Vector2d> points;       // global position
   std::vector<Eigen::Vector2d> d1, d2;       // d/dinput, d2/dinput2
   std::vector<double> arc_length;            // from the first sample, along the curve
@@ -48,14 +49,15 @@ struct StraightStretch {
 
 // Band of a given stretch [from, to] against the tangent at `reference`.
 StraightStretch StretchBand(const Mechanism& mechanism, const PointRef& point, double reference, double from, double to,
-                            double resolution);
+                            double resolution, const ContinuationOptions& continuation = {});
 
 // The longest stretch around `reference` (default: the input of least |curvature| over the
 // range) with Q_G <= qg, searched over [reference - half_range, reference + half_range] at
 // `resolution` (inputs in radians for R drives). Q_G is not monotonic in the end point, so every
 // end point is tried, not only the first crossing.
 StraightStretch LongestStraightStretch(const Mechanism& mechanism, const PointRef& point, double qg,
-                                       std::optional<double> reference, double half_range, double resolution);
+                                       std::optional<double> reference, double half_range, double resolution,
+                                       const ContinuationOptions& continuation = {});
 
 // The input of least |curvature| on a traced curve (the best reference point for straight-line
 // guidance); -1 index when the curve is empty.

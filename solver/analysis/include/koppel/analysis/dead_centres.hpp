@@ -24,8 +24,7 @@ struct DeadCentre {
 };
 
 struct DeadCentreReport {
-  SolveStatus status = SolveStatus::kConverged;
-  std::string message;
+  SweepEvents sweep;  // of the sweep searched: dead centres are found over its drivable part
   std::vector<DeadCentre> points;  // in input order
   // For an output with one extended and one folded dead centre per turn (the classic crank
   // mechanisms; otherwise the maximum and minimum stand in for them): phi_a, phi_i, s_a, s_i,

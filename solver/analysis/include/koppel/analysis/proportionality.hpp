@@ -11,6 +11,7 @@
 
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/position.hpp"
+#include "koppel/solver/sweep.hpp"
 
 #include <optional>
 #include <string>
@@ -18,8 +19,9 @@
 namespace koppel {
 
 struct Proportionality {
-  bool ok = false;
-  std::string message;
+  bool ok = false;        // computed (over the drivable part of the range: see sweep)
+  std::string message;    // why not computed
+  SweepEvents sweep;      // singular points and gaps of the range
   double reference = 0;   // input of the tangent point
   double slope = 0;       // s' there
   double delta_s = 0;     // band width about the tangent
@@ -28,7 +30,10 @@ struct Proportionality {
   double qp = 0;          // (delta_s / reference_length) / phi_p
 };
 
+// Over the drivable part of from..to when the branch cannot be driven through all of it (the
+// gaps are in `sweep`); not computed with fewer than two samples.
 Proportionality ProportionalityDeviation(const Mechanism& mechanism, int output, double from, double to, double reference_length,
-                                         std::optional<double> reference, double resolution);
+                                         std::optional<double> reference, double resolution,
+                                         const ContinuationOptions& continuation = {});
 
 }  // namespace koppel

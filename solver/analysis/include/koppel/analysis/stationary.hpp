@@ -5,6 +5,7 @@
 #pragma once
 
 #include "koppel/core/mechanism.hpp"
+#include "koppel/solver/continuation.hpp"
 
 #include <Eigen/Core>
 
@@ -28,6 +29,7 @@ struct StationaryOptions {
   int max_iterations = 40;
   // Largest Newton step in the input: keeps the search near the sample it started from.
   double max_step = 0.1;
+  ContinuationOptions continuation;  // how to walk between Newton steps
 };
 
 // Refines a stationary point of output `output` (component 0/1 for points) starting from a

@@ -1,5 +1,7 @@
 #include "koppel/catalog/classes.hpp"
 
+#include "koppel/analysis/classification.hpp"
+
 #include <algorithm>
 #include <cctype>
 
@@ -114,15 +116,25 @@ std::vector<std::string> StructuralClasses(const Mechanism& m) {
 }
 
 // A structural class the card leaves out is added to the entry's classes (catalog.cpp), not an
-// error; one it declares and the graph is not is.
+// error; one it declares and the graph is not is. A declared Grashof type must be the one the
+// four-bar's lengths give (s + l against p + q, classification.hpp).
 std::vector<std::string> ClassProblems(const Mechanism& m, const std::vector<std::string>& declared) {
   static const std::vector<std::string> kStructural = {"four-bar",     "slider-crank-chain", "slider-crank",
                                                        "double-slider", "watt-six-bar",       "stephenson-six-bar",
                                                        "moving-slider"};
+  // the Grashof types of a four-bar, decided by its link lengths (classification.hpp)
+  static const std::vector<std::string> kGrashof = {"crank-rocker", "double-crank", "double-rocker", "triple-rocker", "change-point"};
   const std::vector<std::string> computed = StructuralClasses(m);
   std::vector<std::string> problems;
   for (const std::string& c : declared) {
     if (Contains(kStructural, c) && !Contains(computed, c)) problems.push_back("class " + c + ": declared, but the joint graph is not one");
+    if (!Contains(kGrashof, c)) continue;
+    const Classification chain = ClassifyChain(m);
+    if (chain.grashof == GrashofType::kNotApplicable) {
+      problems.push_back("class " + c + ": declared, but the chain is no four-bar");
+    } else if (ToString(chain.grashof) != c) {
+      problems.push_back("class " + c + ": declared, but the chain is a " + ToString(chain.grashof) + " (" + chain.rule + ")");
+    }
   }
   return problems;
 }

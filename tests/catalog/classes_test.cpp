@@ -70,6 +70,14 @@ TEST_CASE("a declared structural class the graph contradicts is a problem", "[ca
   CHECK(ClassProblems(test::FourBar(1, 3, 2.5, 3, 0, 0, 1), {"moving-slider"}).size() == 1);
   // behavioural classes are proved by figures, not by the graph
   CHECK(ClassProblems(test::FourBar(1, 3, 2.5, 3, 0, 0, 1), {"crank-rocker", "toggle"}).empty());
+  // a Grashof type is the four-bar's lengths': s + l = 1 + 3 < p + q = 2.5 + 3, the crank shortest
+  const std::vector<std::string> grashof = ClassProblems(test::FourBar(1, 3, 2.5, 3, 0, 0, 1), {"double-crank"});
+  REQUIRE(grashof.size() == 1);
+  CHECK_THAT(grashof[0], Catch::Contains("is a crank-rocker"));
+  // the frame shortest (1 + 3.5 < 2.5 + 3): a double crank; s + l > p + q: a triple rocker
+  CHECK(ClassProblems(test::FourBar(2.5, 3, 3.5, 1, 0, 0, 1), {"double-crank"}).empty());
+  CHECK(ClassProblems(test::FourBar(3, 4, 2.5, 5, 0, 0, 1), {"triple-rocker"}).empty());
+  CHECK(ClassProblems(test::SliderCrank(1, 2.6, 0.8), {"crank-rocker"}).size() == 1);
   for (const CatalogClass& c : CatalogClasses()) CHECK(IsCatalogClass(c.name));
   CHECK_FALSE(IsCatalogClass("crank rocker"));
 }

@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include <iostream>
+#include <sstream>
 
 namespace koppel::cli {
 namespace {
@@ -36,7 +37,35 @@ std::string StatusLines(const std::vector<const CheckOutcome*>& outcomes, bool f
   return s;
 }
 
-std::string Wrapped(const std::string& label, const std::string& text) { return "    " + label + ": " + text + "\n"; }
+// `head` then `text`, wrapped at 100 columns with the continuation lines indented by `indent`
+std::string Wrap(const std::string& head, const std::string& text, size_t indent) {
+  constexpr size_t kWidth = 100;
+  std::string out = head;
+  size_t column = head.size();
+  std::istringstream words(text);
+  bool first = true;
+  for (std::string word; words >> word; first = false) {
+    if (!first && column + 1 + word.size() > kWidth) {
+      out += "\n" + std::string(indent, ' ');
+      column = indent;
+    } else if (!first) {
+      out += " ";
+      ++column;
+    }
+    out += word;
+    column += word.size();
+  }
+  return out + "\n";
+}
+
+// "P_x", "P_y" for a point output's components, the name otherwise
+std::string OutputText(const Mechanism& m, const std::string& output, int component) {
+  const int o = m.FindOutput(output);
+  if (o < 0 || m.outputs[o].Components() == 1) return output;
+  return output + (component == 1 ? "_y" : "_x");
+}
+
+std::string Wrapped(const std::string& label, const std::string& text) { return Wrap("    " + label + ": ", text, 6); }
 
 std::string Description(const CatalogEntry& e) {
   const CatalogCard& c = *e.file.card;
@@ -96,7 +125,9 @@ std::string Checks(const CatalogEntry& e, const EntryReport& report) {
   if (!c.equations.empty()) t += "\nEquations (over " + Short(c.from, 6) + " .. " + Short(c.to, 6) + " step " + Short(c.step, 6) + ")\n";
   for (const auto& [name, formula] : c.where) t += "  where " + name + " = " + formula + "\n";
   for (const EquationCheck& q : c.equations) {
-    t += "  " + q.name + "\n" + Wrapped(q.output + (q.order ? " d" + std::to_string(q.order) : ""), q.formula + "   (tolerance " + Short(q.tolerance) + ")");
+    t += Wrap("  ", q.name, 4) +
+         Wrapped(OutputText(e.file.mechanism, q.output, q.component) + (q.order ? " d" + std::to_string(q.order) : ""),
+                 q.formula + "   (tolerance " + Short(q.tolerance) + ")");
     if (!q.printed.empty()) t += Wrapped("printed", q.printed);
     if (!q.note.empty()) t += Wrapped("note", q.note);
     t += StatusLines(OutcomesOf(report, CheckKind::kEquation, q.name), false);
@@ -105,8 +136,8 @@ std::string Checks(const CatalogEntry& e, const EntryReport& report) {
   for (const FigureCheck& fig : c.figures) {
     std::string args;
     for (const auto& [k, v] : fig.args) args += ", " + k + " " + v;
-    t += "  " + fig.name + "\n" +
-         Wrapped(std::string(QuantityInfo(fig.quantity).name) + (fig.output.empty() ? "" : " of " + fig.output) + args,
+    t += Wrap("  ", fig.name, 4) +
+         Wrapped(std::string(QuantityInfo(fig.quantity).name) + (fig.output.empty() ? "" : " of " + OutputText(e.file.mechanism, fig.output, fig.component)) + args,
                  fig.expected + (fig.degrees ? " deg" : "") + " ± " + Short(fig.tolerance) + (fig.variant.empty() ? "" : "   [" + fig.variant + "]"));
     if (!fig.printed.empty()) t += Wrapped("printed", fig.printed);
     if (!fig.note.empty()) t += Wrapped("note", fig.note);
@@ -116,10 +147,10 @@ std::string Checks(const CatalogEntry& e, const EntryReport& report) {
 }
 
 std::string Literature(const CatalogCard& c) {
-  std::string t = "\nSource\n  " + c.document + "\n";
+  std::string t = "\nSource\n" + Wrap("  ", c.document, 2);
   if (!c.author.empty()) t += "  " + c.author + "\n";
   if (!c.literature.empty()) t += "\nLiterature\n";
-  for (const std::string& l : c.literature) t += "  - " + l + "\n";
+  for (const std::string& l : c.literature) t += Wrap("  - ", l, 4);
   return t;
 }
 

@@ -2,8 +2,9 @@
 // looks for: the classes (four-bar, crank-rocker, quick-return, Watt six-bar ...) and the
 // motion "<input motion> -> <output motion>". Classes that follow from the joint graph alone
 // (four-bar, slider-crank, double-slider, the six-bar chains, a slider between moving links) are
-// computed, and a declared one that the graph contradicts fails `catalog check`; the others
-// (Grashof type, quick-return, ...) are proved by the entry's figures.
+// computed, and a declared one that the graph contradicts fails `catalog check`; so does a
+// declared Grashof type (crank-rocker ... change-point) that the four-bar's lengths contradict.
+// The others (quick-return, toggle, ...) are proved by the entry's figures.
 #pragma once
 
 #include "koppel/core/mechanism.hpp"

@@ -147,7 +147,7 @@ TEST_CASE("units and components are checked", "[catalog][reader]") {
 
 TEST_CASE("kind, class and motion words are checked", "[catalog][reader]") {
   ExpectError(Replace(SliderCrank(), "  kind: transfer", "  kind: transmission"), "kind: transmission", "expected transfer");
-  ExpectError(Replace(SliderCrank(), "  kind: transfer", "  kind: transfer\n  class: [slider-crank, quick-retrun]"), "class:",
+  ExpectError(Replace(SliderCrank(), "  class: [slider-crank, quick-return]", "  class: [slider-crank, quick-retrun]"), "class:",
               "unknown class 'quick-retrun' (did you mean 'quick-return'?)");
   ExpectError(Replace(SliderCrank(), "motion: full rotation -> oscillating translation", "motion: full rotation to translation"),
               "motion:", "expected '<input motion> -> <output motion>'");

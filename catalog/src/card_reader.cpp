@@ -78,9 +78,7 @@ class CardReader {
         if (IsCatalogClass(card_.classes[i])) continue;
         std::vector<std::string> names;
         for (const CatalogClass& k : CatalogClasses()) names.push_back(k.name);
-        const std::string near = Nearest(card_.classes[i], names);
-        r_.Error(c[i], Index("catalog.class", static_cast<int>(i)),
-                 "unknown class '" + card_.classes[i] + "'" + (near.empty() ? " (see README, 'The catalog')" : " (did you mean '" + near + "'?)"));
+        r_.Error(c[i], Index("catalog.class", static_cast<int>(i)), UnknownName("class", card_.classes[i], names));
       }
     }
     if (const YAML::Node mo = node["motion"]; mo.IsDefined()) {
@@ -270,16 +268,7 @@ class CardReader {
     if (const FigureQuantityInfo* info = FindFigureQuantity(*name)) return info;
     std::vector<std::string> names;
     for (const FigureQuantityInfo& i : FigureQuantities()) names.push_back(i.name);
-    const std::string near = Nearest(*name, names);
-    std::string message = "unknown quantity '" + *name + "'";
-    if (!near.empty()) {
-      message += " (did you mean '" + near + "'?)";
-    } else {
-      message += " (expected one of:";
-      for (const std::string& n : names) message += " " + n;
-      message += ")";
-    }
-    r_.Error(q, Child(ipath, "quantity"), message);
+    r_.Error(q, Child(ipath, "quantity"), UnknownName("quantity", *name, names));
     return nullptr;
   }
 

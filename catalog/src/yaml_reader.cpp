@@ -46,6 +46,15 @@ std::string Nearest(const std::string& word, const std::vector<std::string>& can
   return nearest;
 }
 
+std::string UnknownName(const std::string& what, const std::string& word, const std::vector<std::string>& candidates) {
+  std::string message = "unknown " + what + " '" + word + "'";
+  const std::string suggestion = Nearest(word, candidates);
+  if (!suggestion.empty()) return message + " (did you mean '" + suggestion + "'?)";
+  message += " (expected one of:";
+  for (const std::string& c : candidates) message += " " + c;
+  return message + ")";
+}
+
 std::string Child(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
 std::string Index(const std::string& path, int index) { return path + "[" + std::to_string(index) + "]"; }
 
@@ -97,16 +106,7 @@ void YamlReader::CheckKeys(const YAML::Node& map, const std::string& path, const
   if (!map.IsMap()) return;
   for (const Entry& e : Entries(map, path)) {
     if (std::any_of(allowed.begin(), allowed.end(), [&](const std::string& a) { return e.key == a; })) continue;
-    std::string message = "unknown key '" + e.key + "'";
-    const std::string suggestion = Nearest(e.key, allowed);
-    if (!suggestion.empty()) {
-      message += " (did you mean '" + suggestion + "'?)";
-    } else {
-      message += " (expected one of:";
-      for (const std::string& a : allowed) message += " " + a;
-      message += ")";
-    }
-    Error(e.key_node, Child(path, e.key), message);
+    Error(e.key_node, Child(path, e.key), UnknownName("key", e.key, allowed));
   }
 }
 

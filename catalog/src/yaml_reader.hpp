@@ -66,6 +66,8 @@ std::string Child(const std::string& path, const std::string& key);
 std::string Index(const std::string& path, int index);
 // The candidate nearest to `word` (fewer than three edits), for "did you mean"; empty if none.
 std::string Nearest(const std::string& word, const std::vector<std::string>& candidates);
+// "unknown key 'x' (did you mean 'y'?)", or with the list of candidates when none is near.
+std::string UnknownName(const std::string& what, const std::string& word, const std::vector<std::string>& candidates);
 
 // Parses the `catalog` section of a mechanism file (card_reader.cpp).
 std::optional<CatalogCard> ReadCard(YamlReader& reader, const YAML::Node& node, const MechanismFile& file);

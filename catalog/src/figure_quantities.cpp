@@ -93,6 +93,8 @@ FigureValue AtInput(FigureContext& c, const FigureCheck& f) {
 // extended dead centre counter-clockwise, either dead centre's input, the time ratio
 FigureValue DeadCentreFigure(FigureContext& c, const FigureCheck& f) {
   const DeadCentreReport& r = c.DeadCentres(c.Output(f), f.component);
+  // dead centres found over only the drivable part of the card's range are not the document's
+  if (!r.sweep.complete()) return NotComputed(r.sweep.message);
   if (!r.has_stroke) return NotComputed(r.sweep.message.empty() ? "no two dead centres found" : r.sweep.message);
   // the extended and folded dead centre proper need the crank-coupler line-up; span and time ratio
   // are defined by the output's maximum and minimum as well (dead_centres.hpp)
@@ -114,8 +116,9 @@ FigureValue DeadCentreFigure(FigureContext& c, const FigureCheck& f) {
 FigureValue ProportionalityFigure(FigureContext& c, const FigureCheck& f) {
   const Mechanism& m = c.mechanism();
   const Proportionality p = ProportionalityDeviation(m, c.Output(f), c.Input(f, "from"), c.Input(f, "to"), CrankLength(m),
-                                                     std::nullopt, c.CardRange().step / 20);
+                                                     std::nullopt, std::abs(c.CardRange().step) / 20);
   if (!p.ok) return NotComputed(p.message);
+  if (!p.sweep.complete()) return NotComputed(p.sweep.message);  // the whole range, not its drivable part
   return Value(f.quantity == FigureQuantity::kProportionalityDs ? p.delta_s : p.qp);
 }
 
@@ -136,7 +139,7 @@ FigureValue StraightStretchFigure(FigureContext& c, const FigureCheck& f) {
 FigureValue StraightBand(FigureContext& c, const FigureCheck& f) {
   const Mechanism& m = c.mechanism();
   const StraightStretch s =
-      StretchBand(m, m.outputs[c.Output(f)].p, c.Input(f, "at"), c.Input(f, "from"), c.Input(f, "to"), c.CardRange().step / 20);
+      StretchBand(m, m.outputs[c.Output(f)].p, c.Input(f, "at"), c.Input(f, "from"), c.Input(f, "to"), std::abs(c.CardRange().step) / 20);
   if (!s.found) return NotComputed(s.message);
   return Value(s.band);
 }
@@ -198,23 +201,29 @@ std::optional<Mechanism> DrivenAt(const Mechanism& m, int joint, std::string* wh
   return driven;
 }
 
-// 1 when the joint turns fully on the assembly's branch (its drivable range ends in a full
-// turn), 0 when it oscillates
+// 1 when the branch's drivable range is a full turn, 0 when it ends in limit positions both ways;
+// anything else (the search bound) is not an answer
+FigureValue TurnsFully(const BranchRange& branch) {
+  if (branch.to_kind == RangeEnd::kFullTurn) return Value(1.0);
+  const auto limited = [](RangeEnd end) { return end == RangeEnd::kLimit || end == RangeEnd::kBranchPoint; };
+  if (limited(branch.from_kind) && limited(branch.to_kind)) return Value(0.0);
+  return NotComputed(std::string("the drivable range ends in ") + ToString(branch.from_kind) + " and " + ToString(branch.to_kind));
+}
+
+// whether a joint (default: the drive) turns fully on the assembly's branch
 FigureValue Revolves(FigureContext& c, const FigureCheck& f) {
   const Mechanism& m = c.mechanism();
   const int joint = c.Has(f, "joint") ? c.Joint(f, "joint") : m.drive.joint;
   std::string why_not;
   if (joint == m.drive.joint) {
     const BranchRange* branch = HintBranch(c.Ranges(), &why_not);
-    if (!branch) return NotComputed(why_not);
-    return Value(branch->to_kind == RangeEnd::kFullTurn ? 1.0 : 0.0);
+    return branch ? TurnsFully(*branch) : NotComputed(why_not);
   }
   const std::optional<Mechanism> driven = DrivenAt(m, joint, &why_not);
   if (!driven) return NotComputed(why_not);
   const RangeReport ranges = DrivableRanges(*driven);
   const BranchRange* branch = HintBranch(ranges, &why_not);
-  if (!branch) return NotComputed(why_not);
-  return Value(branch->to_kind == RangeEnd::kFullTurn ? 1.0 : 0.0);
+  return branch ? TurnsFully(*branch) : NotComputed(why_not);
 }
 
 // the input of the branch point (Verzweigungslage, e.g. a change point) nearest `near` that the

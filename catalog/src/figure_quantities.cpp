@@ -85,6 +85,8 @@ FigureValue AtInput(FigureContext& c, const FigureCheck& f) {
   options.order = derivative ? c.Order(f, "order") : 0;
   const SweepResult sweep = Sweep(c.mechanism(), options);
   if (!sweep.complete()) return NotComputed(sweep.message);
+  if (!sweep.valid_order.empty() && sweep.valid_order[0] < options.order)
+    return NotComputed("the pose at `at` is singular: order " + std::to_string(options.order) + " is not computable there");
   c.Output(f);
   return Value(sweep.outputs(0, OutputColumn(c.mechanism(), f.output, f.component, options.order, options.order)));
 }

@@ -135,6 +135,19 @@ TEST_CASE("catalog list and show", "[cli][catalog]") {
   const test::RunResult json = test::RunKoppel("catalog show slider-crank-offset --format json");
   REQUIRE(json.exit_code == 0);
   CHECK_THAT(json.out, Catch::Contains("\"passed\": true") && Catch::Contains("\"printed\""));
+  // the page with its scheme and the plot of its output, written atomically to a file
+  test::TempDir dir;
+  const std::string html = (dir.path() / "page.html").string();
+  const test::RunResult page = test::RunKoppel("catalog show jansen-linkage --format html -o " + html);
+  INFO(page.err);
+  REQUIRE(page.exit_code == 0);
+  const std::string text = test::ReadText(html);
+  CHECK_THAT(text, Catch::StartsWith("<!DOCTYPE html>") && Catch::Contains("Jansen-Bein (Strandbeest)") && Catch::Contains("output link (Abtrieb): foot (output 'F')"));
+  CHECK(std::count(text.begin(), text.end(), '\n') > 50);
+  size_t svgs = 0;
+  for (size_t at = text.find("<svg"); at != std::string::npos; at = text.find("<svg", at + 1)) ++svgs;
+  CHECK(svgs == 2);  // the scheme and the foot's path
+  CHECK(test::RunKoppel("catalog show jansen-linkage --format csv").exit_code == 2);
   const test::RunResult missing = test::RunKoppel("catalog show nothing-like-this");
   CHECK(missing.exit_code == 2);
   CHECK_THAT(missing.err, Catch::Contains("no catalog entry"));

@@ -259,7 +259,8 @@ void AddCatalogCommand(CLI::App& app) {
 
   CLI::App* show = cmd->add_subcommand(
       "show", "An entry as a page: titles, kind, classes, features, structure, dimensions, equations and figures\n"
-              "with their check status, literature.");
+              "with their check status, literature. --format html adds its kinematic scheme and the plots of its\n"
+              "outputs (write it with -o page.html); json gives the same as data.");
   common(show);
   show->add_option("id", args->ids, "Entry id")->required()->expected(1);
   show->callback([args] { RunShow(*args); });

@@ -24,7 +24,7 @@ struct CatalogArgs {
   std::vector<std::string> ids;
 };
 
-// --format: table (the terminal's), csv or json. Exit{2} otherwise.
+// --format: table (the terminal's), csv or json (show also html). Exit{2} otherwise.
 void CheckCatalogFormat(const std::string& format);
 
 // Loads the catalog of --catalog (default: the built-in one); Exit{2} with the diagnostics.
@@ -42,6 +42,9 @@ std::string Join(const std::vector<std::string>& items, const std::string& separ
 std::string Short(double value, int digits = 3);
 
 void RunShow(const CatalogArgs& args);
+// The entry's page as HTML: its scheme and the plots of its outputs above `text_page`; what
+// could not be drawn goes to *problems (and onto the page).
+std::string EntryHtml(const CatalogEntry& entry, const std::string& text_page, std::vector<std::string>* problems);
 void RunCheck(const CatalogArgs& args);
 
 }  // namespace koppel::cli

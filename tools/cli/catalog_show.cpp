@@ -182,9 +182,9 @@ nlohmann::json PageJson(const CatalogEntry& e, const EntryReport& report) {
 }  // namespace
 
 void RunShow(const CatalogArgs& args) {
-  CheckCatalogFormat(args.format);
+  if (args.format != "html") CheckCatalogFormat(args.format);
   if (args.format == "csv") {
-    Complain("catalog show prints a page (table, the default) or json, not csv");
+    Complain("catalog show prints a page (table, the default), html or json, not csv");
     throw Exit{kExitBadInput};
   }
   const Catalog catalog = LoadCatalog(args);
@@ -196,14 +196,19 @@ void RunShow(const CatalogArgs& args) {
     for (const Diagnostic& d : error.diagnostics()) std::cerr << d.ToString() << "\n";
     throw Exit{kExitBadInput};
   }
+  const std::string page = Description(e) + Features(e) + Dimensions(e) + Checks(e, report) + Literature(*e.file.card) + "\n" +
+                           report.Brief() + "\n";
+  std::vector<std::string> problems;
   if (args.format == "json") {
     WriteOutput(args.out, PageJson(e, report).dump(1) + "\n");
+  } else if (args.format == "html") {
+    WriteOutput(args.out, EntryHtml(e, page, &problems));
+    for (const std::string& p : problems) Complain(e.file.id + ": " + p);
   } else {
-    WriteOutput(args.out, Description(e) + Features(e) + Dimensions(e) + Checks(e, report) + Literature(*e.file.card) +
-                              "\n" + report.Brief() + "\n");
+    WriteOutput(args.out, page);
   }
-  // the page shows which checks fail; the exit code says so too
-  if (!report.passed()) throw Exit{kExitFailed};
+  // the page shows which checks fail (and what could not be drawn); the exit code says so too
+  if (!report.passed() || !problems.empty()) throw Exit{kExitFailed};
 }
 
 }  // namespace koppel::cli

@@ -1,4 +1,5 @@
 #include "koppel/analysis/dead_centres.hpp"
+#include "koppel/core/angles.hpp"
 
 #include "koppel/analysis/stationary.hpp"
 
@@ -8,7 +9,7 @@
 namespace koppel {
 namespace {
 
-constexpr double kTwoPi = 2 * 3.14159265358979323846;
+constexpr double kTwoPi = 2 * kPi;
 // Crank and coupler count as lined up when the sine of their angle is below this: the
 // dead centre is refined to 1e-12, so a true line-up is at roundoff level.
 constexpr double kLineUp = 1e-7;

@@ -9,13 +9,15 @@
 namespace koppel {
 namespace {
 
-// The sum of the absolute virtual works of the loads per unit input: the size the drive torque
-// is made of, even where the loads cancel.
-double WorkScale(const AppliedLoads& loads) {
+// The size of the drive torque the loads make: sum |F| L + |M| (L the mechanism's length scale,
+// in metres), over L for a P drive's force. What the two drives are compared to, also where the
+// loads do no work (a dead centre of the loaded point) or cancel.
+double LoadScale(const PoseMotion& pose, const AppliedLoads& loads) {
+  const double lever = pose.system().length_scale() * pose.metres_per_unit();
   double scale = 0.0;
-  for (const AppliedLoads::Force& f : loads.forces) scale += std::abs(f.force.dot(f.at.d1));
-  for (const AppliedLoads::Torque& t : loads.torques) scale += std::abs(t.torque * t.of.d1);
-  return scale;
+  for (const AppliedLoads::Force& f : loads.forces) scale += f.force.norm() * lever;
+  for (const AppliedLoads::Torque& t : loads.torques) scale += std::abs(t.torque);
+  return pose.system().mechanism().InputIsAngle() ? scale : scale / lever;
 }
 
 }  // namespace
@@ -82,6 +84,7 @@ ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesO
     ForcesRow row;
     row.input = sweep.inputs[i];
     row.singular = sweep.singular[i] != 0;
+    row.q = sweep.poses.row(i).transpose();
     auto fail = [&](std::string problem) {
       row.problem = std::move(problem);
       ++missing;
@@ -92,7 +95,7 @@ ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesO
            "reactions are not determined");
       continue;
     }
-    Eigen::VectorXd q = sweep.poses.row(i).transpose();
+    Eigen::VectorXd& q = row.q;
     const SolveReport solved = solver.Correct(row.input, q);
     if (!solved.ok() || !solver.Series(2, series)) {
       fail("the pose does not solve again: " + solved.message);
@@ -113,7 +116,7 @@ ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesO
     row.reduced_inertia = inertia.value;
     row.reduced_inertia_derivative = inertia.derivative;
     row.drive_virtual_work = VirtualWorkDrive(applied);
-    row.work_scale = WorkScale(applied);
+    row.load_scale = LoadScale(pose, applied);
     row.virtual_work = true;
     if (result.indeterminate) {
       fail("the joint reactions are statically indeterminate (redundant joints)");
@@ -127,8 +130,8 @@ ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesO
     row.drive = reactions.drive;
     row.joints = std::move(reactions.joints);
     row.computed = true;
-    if (row.work_scale > 0.0)
-      result.worst_disagreement = std::max(result.worst_disagreement, std::abs(row.drive - row.drive_virtual_work) / row.work_scale);
+    if (row.load_scale > 0.0)
+      result.worst_disagreement = std::max(result.worst_disagreement, std::abs(row.drive - row.drive_virtual_work) / row.load_scale);
     result.rows.push_back(std::move(row));
   }
 

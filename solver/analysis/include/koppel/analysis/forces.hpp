@@ -24,9 +24,9 @@
 
 namespace koppel {
 
-// The drive by the multipliers and by virtual work must agree to this, relative to the sum of
-// the loads' absolute virtual works: both are exact, and rows closer to a singular pose than
-// kSingularRowRcond lose at most about eps / rcond = 2e-10 of it.
+// The drive by the multipliers and by virtual work must agree to this, relative to the size of
+// the loads (sum |F| L + |M|, L the length scale; over L for a P drive): both are exact, and rows
+// no closer to a singular pose than kSingularRowRcond lose at most about eps / rcond = 2e-10 of it.
 inline constexpr double kVirtualWorkAgreement = 1e-7;
 
 struct ForcesOptions {
@@ -49,13 +49,14 @@ const char* ToString(ForcesStatus status);
 
 struct ForcesRow {
   double input = 0.0;        // rad or length unit
+  Eigen::VectorXd q;         // the pose (the solver's coordinates, constraints.hpp)
   bool singular = false;     // the sweep flagged the pose singular
   bool computed = false;     // drive and reactions below are valid
   bool virtual_work = false;  // drive_virtual_work and the reduced inertia are valid
   std::string problem;       // why not computed
   double drive = 0.0;                // from the multipliers [N m or N]
   double drive_virtual_work = 0.0;   // the same by virtual work
-  double work_scale = 0.0;  // sum of |virtual work| of every load per unit input: what the two drives are compared to
+  double load_scale = 0.0;  // the loads' size, sum |F| L + |M| (over L for a P drive): what the two drives are compared to
   double reduced_inertia = 0.0;      // J_red [kg m^2 or kg]
   double reduced_inertia_derivative = 0.0;  // dJ_red/dinput [kg m^2/rad or kg/m]
   std::vector<JointReaction> joints;         // in joint order (empty when not computed)
@@ -70,7 +71,7 @@ struct ForcesResult {
   // statically indeterminate (rows have computed = false and drive_virtual_work set).
   bool indeterminate = false;
   std::vector<ForcesRow> rows;  // the sweep's computed samples, in sweep order
-  double worst_disagreement = 0.0;  // max |drive - drive_virtual_work| / work_scale over the rows
+  double worst_disagreement = 0.0;  // max |drive - drive_virtual_work| / load_scale over the rows
 
   bool complete() const { return status == ForcesStatus::kComplete; }
   std::string Brief() const;

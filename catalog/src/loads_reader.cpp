@@ -33,7 +33,10 @@ class LoadsReader {
         if (it->first.IsScalar() && it->second.IsMap()) ReadMass(it->first.Scalar(), it->second);
       }
     }
-    if (const YAML::Node l = root["loads"]; l.IsDefined() && !l.IsNull()) ReadLoads(l);
+    if (const YAML::Node l = root["loads"]; l.IsDefined() && !l.IsNull()) {
+      CheckNameClashes(root["parameters"]);
+      ReadLoads(l);
+    }
   }
 
  private:
@@ -144,7 +147,6 @@ class LoadsReader {
   }
 
   void ReadLoads(const YAML::Node& node) {
-    CheckNameClashes(node);
     for (const YamlReader::Entry& e : r_.Entries(node, "loads")) {
       const std::string path = Child("loads", e.key);
       if (!r_.ExpectMap(e.value, path)) continue;
@@ -248,11 +250,12 @@ class LoadsReader {
 
   // A parameter that has the name of a load variable (the input, its speed, t, an output) would
   // be shadowed in the formulas without a word: refuse it.
-  void CheckNameClashes(const YAML::Node& node) {
+  void CheckNameClashes(const YAML::Node& parameters) {
     for (const std::string& name : LoadVariables(m_)) {
-      if (file_.parameters.Has(name))
-        r_.Error(node, "loads", "parameter '" + name + "' has the name of a load formula variable (the input, its speed '" +
-                                    m_.drive.input_name + "_dot', the time 't' or an output): rename it");
+      if (!file_.parameters.Has(name)) continue;
+      const YAML::Node where = parameters.IsMap() ? parameters[name] : parameters;
+      r_.Error(where, Child("parameters", name), "parameter '" + name + "' has the name of a load formula variable (the input, its speed '" +
+                                                     m_.drive.input_name + "_dot', the time 't' or an output): rename it");
     }
   }
 

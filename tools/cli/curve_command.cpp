@@ -113,7 +113,8 @@ void AddCurveCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "curve",
       "The coupler curve (Koppelkurve) of a point: x, y, dx/dinput, dy/dinput, arc length from the first row, and\n"
-      "the signed curvature, over the sweep.\n"
+      "the signed curvature, over the sweep, and the singular flag of `analyze` (1 at a singular position). The\n"
+      "sweep follows the assembly branch like `analyze`; gaps of the drivable range are named and give exit 1.\n"
       "--straight: straight-line guidance (Geradführung) as in the Meyer zur Capellen description. The tangent g at the\n"
       "reference point K_I (--at, default: the point of least curvature); Δy is the width of the band parallel to g that\n"
       "holds the stretch K_A..K_E, L its extent along g, Q_G = Δy/L. With --qg the longest stretch through K_I with\n"

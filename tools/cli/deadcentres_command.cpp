@@ -94,6 +94,9 @@ void AddDeadCentresCommand(CLI::App& app) {
       "the output there (deg for angles), its second-order transfer function. --summary prints phi_a, phi_i,\n"
       "s_a, s_i, the stroke s_H, the crank angle of the forward stroke phi_H (from phi_a to phi_i,\n"
       "counter-clockwise) and the phase ratio phi_H/(360 - phi_H).\n"
+      "The search follows the assembly branch like `analyze`: singular points met are reported on stderr;\n"
+      "where part of the range cannot be driven, the dead centres over the drivable part are listed, the gaps\n"
+      "named, and the exit code is 1.\n"
       "Example: koppel deadcentres catalog/entries/slider-crank-offset.yaml --output s --summary");
   cmd->add_option("file", args->file, "Mechanism YAML file")->required();
   cmd->add_option("--output", args->output, "Scalar output (default: the first)");

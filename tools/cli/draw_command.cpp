@@ -2,6 +2,7 @@
 // (seed 000 "Bild 3") and a traced coupler curve.
 #include "commands.hpp"
 #include "common.hpp"
+#include "sweep_report.hpp"
 
 #include "koppel/analysis/coupler_curve.hpp"
 #include "koppel/analysis/dead_centres.hpp"
@@ -15,7 +16,7 @@ namespace koppel::cli {
 namespace {
 
 struct Args {
-  std::string file, at, trace, output, from, to, step;
+  std::string file, at, trace, output, from, to, step, at_branch_point;
   std::vector<std::string> sets;
   bool deadcentres = false;
   std::string out;
@@ -32,6 +33,7 @@ void Run(const Args& args) {
   range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
   range.step = in(args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step));
   range.order = 0;
+  range.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
   if (range.step == 0 || SampleCount(range.from, range.to, range.step) > 20001) {
     Complain("--step must not be 0 (and give at most 20000 samples)");
     throw Exit{kExitBadInput};
@@ -109,6 +111,7 @@ void AddDrawCommand(CLI::App& app) {
   cmd->add_option("--from", args->from, "First input of the sweep (default: the file's sweep)");
   cmd->add_option("--to", args->to, "Last input of the sweep (default: the file's sweep)");
   cmd->add_option("--step", args->step, "Input step of the sweep (default: the file's sweep)");
+  AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
   cmd->add_option("-o,--output-file", args->out, "Write the SVG to this file instead of stdout");
   cmd->callback([args] { Run(*args); });

@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
   koppel::cli::AddProportionalCommand(app);
   koppel::cli::AddCognatesCommand(app);
   koppel::cli::AddSynthCommand(app);
+  koppel::cli::AddRangeCommand(app);
+  koppel::cli::AddClassifyCommand(app);
   koppel::cli::AddPlotCommand(app);
   koppel::cli::AddDrawCommand(app);
   koppel::cli::AddViewCommand(app);

@@ -3,6 +3,7 @@
 // design charts of `koppel synth chart` (a .csv file).
 #include "commands.hpp"
 #include "common.hpp"
+#include "sweep_report.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "koppel/plot/plots.hpp"
@@ -14,7 +15,7 @@ namespace koppel::cli {
 namespace {
 
 struct Args {
-  std::string file, transfer, curve, from, to, step, at, qg = "0.005";
+  std::string file, transfer, curve, from, to, step, at, qg = "0.005", at_branch_point;
   std::vector<std::string> sets;
   int order = 2;
   bool mu = false, straight = false;
@@ -73,6 +74,7 @@ void Run(const Args& args) {
   range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
   range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
   range.step = in(args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step));
+  range.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
   std::string why;
   if (!args.transfer.empty()) {
     plot::TransferPlotOptions options;
@@ -137,6 +139,7 @@ void AddPlotCommand(CLI::App& app) {
   cmd->add_option("--from", args->from, "First input (default: the file's sweep)");
   cmd->add_option("--to", args->to, "Last input (default: the file's sweep)");
   cmd->add_option("--step", args->step, "Input step (default: the file's sweep)");
+  AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
   cmd->add_option("-o,--output-file", args->out, "Write the SVG to this file instead of stdout");
   cmd->callback([args] { Run(*args); });

@@ -88,7 +88,8 @@ void AddProportionalCommand(CLI::App& app) {
       "flat point, least |s''| in the range); delta_s is the width of the band parallel to it that holds the\n"
       "output over the range; Q_P = (delta_s / l) / phi_P with phi_P in radians and l the reference length\n"
       "(--length, default the crank length l1). This definition reproduces the proportional linkage's reading\n"
-      "example; the chord deviation is printed for comparison.\n"
+      "example; the chord deviation is printed for comparison. Where part of the range cannot be driven, the\n"
+      "figures are those of the drivable part, the gaps are named and the exit code is 1.\n"
       "Example: koppel proportional catalog/entries/proportional-linkage.yaml --output s --from 112.5 --to 247.5");
   cmd->add_option("file", args->file, "Mechanism YAML file")->required();
   cmd->add_option("--output", args->output, "Scalar output (default: the first)");

@@ -1,6 +1,7 @@
 // koppel view: one self-contained HTML page that animates the mechanism (see view_page.hpp).
 #include "commands.hpp"
 #include "common.hpp"
+#include "sweep_report.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "koppel/plot/view_page.hpp"
@@ -9,7 +10,7 @@ namespace koppel::cli {
 namespace {
 
 struct Args {
-  std::string file, from, to, step;
+  std::string file, from, to, step, at_branch_point;
   std::vector<std::string> sets;
   std::string out;
 };
@@ -23,6 +24,7 @@ void Run(const Args& args) {
   options.range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
   // one frame per degree unless asked: smooth enough, and the page stays small
   options.range.step = in(args.step.empty() ? (m.InputIsAngle() ? 1.0 : file.sweep.step) : ParseNumberFlag("--step", args.step));
+  options.range.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
   options.title = file.title.empty() ? m.name : file.title + " (" + m.name + ")";
   std::string why;
   if (!options.IsValid(&why)) {
@@ -56,6 +58,7 @@ void AddViewCommand(CLI::App& app) {
   cmd->add_option("--from", args->from, "First input (default: the file's sweep)");
   cmd->add_option("--to", args->to, "Last input (default: the file's sweep)");
   cmd->add_option("--step", args->step, "Input step between frames (default 1 deg for an R drive, else the file's step)");
+  AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
   cmd->add_option("-o,--output-file", args->out, "Write the page to this file instead of stdout");
   cmd->callback([args] { Run(*args); });

@@ -85,6 +85,12 @@ SweepResult Sweep(const Mechanism& m, const SweepOptions& options) {
   }
   PositionSolver solver(m);
   const int n = solver.NumCoordinates();
+  if (solver.system().NumEquations() < n) {
+    result.status = SweepStatus::kNotAssemblable;
+    result.message = "the mechanism has fewer joint equations than coordinates: more freedom than its one drive "
+                     "(see CheckMobility)";
+    return result;
+  }
   const int samples = static_cast<int>(SampleCount(options.from, options.to, options.step));
   const double step = options.to >= options.from ? std::abs(options.step) : -std::abs(options.step);
   result.requested_samples = samples;

@@ -5,6 +5,7 @@
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
 #include "support/closed_forms.hpp"
+#include "series_at.hpp"
 #include "support/mechanisms.hpp"
 
 #include <catch2/catch.hpp>
@@ -14,25 +15,13 @@
 namespace koppel {
 namespace {
 
+using test::SeriesAt;
+
 // Closed form and solver are both exact: roundoff of O(10) operations.
 constexpr double kExact = 1e-12;
 // Central difference with h = 1e-5 rad of an O(1) function: truncation h^2/6 |f'''| ~ 1e-10,
 // roundoff eps/h ~ 1e-11.
 constexpr double kDifference = 1e-8;
-
-// The Taylor coefficients of q at `input` on the hint's branch.
-Eigen::MatrixXd SeriesAt(const Mechanism& m, double input) {
-  SweepOptions o;
-  o.from = o.to = input;
-  const SweepResult s = Sweep(m, o);
-  REQUIRE(s.inputs.size() == 1);
-  PositionSolver solver(m);
-  Eigen::VectorXd q = s.poses.row(0).transpose();
-  REQUIRE(solver.Correct(input, q).ok());
-  Eigen::MatrixXd series;
-  REQUIRE(solver.Series(2, series));
-  return series;
-}
 
 ReducedInertia At(const Mechanism& m, const std::vector<LinkMass>& masses, double input, double metres_per_unit = 1.0) {
   const Eigen::MatrixXd series = SeriesAt(m, input);

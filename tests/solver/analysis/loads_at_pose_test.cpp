@@ -6,6 +6,7 @@
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
 #include "support/closed_forms.hpp"
+#include "series_at.hpp"
 #include "support/mechanisms.hpp"
 
 #include <catch2/catch.hpp>
@@ -15,6 +16,8 @@
 namespace koppel {
 namespace {
 
+using test::SeriesAt;
+
 // Central differences of positions of size ~4: with h = 1e-5 for the first derivative,
 // truncation h^2 |p'''| / 6 ~ 1e-10 and roundoff eps |p| / h ~ 1e-10; with h2 = 1e-3 for the
 // second, truncation h2^2 |p''''| / 12 ~ 1e-6 and roundoff (plus Newton's 1e-13 L) / h2^2 ~ 1e-6.
@@ -22,19 +25,6 @@ constexpr double kFirstDifference = 1e-8;
 constexpr double kSecondDifference = 1e-5;
 constexpr double kSecondStep = 1e-3;
 constexpr double kExact = 1e-12;
-
-Eigen::MatrixXd SeriesAt(const Mechanism& m, double input) {
-  SweepOptions o;
-  o.from = o.to = input;
-  const SweepResult s = Sweep(m, o);
-  REQUIRE(s.inputs.size() == 1);
-  PositionSolver solver(m);
-  Eigen::VectorXd q = s.poses.row(0).transpose();
-  REQUIRE(solver.Correct(input, q).ok());
-  Eigen::MatrixXd series;
-  REQUIRE(solver.Series(2, series));
-  return series;
-}
 
 Loads SomeLoads(Mechanism& m) {
   Loads loads;

@@ -151,3 +151,21 @@ TEST_CASE("forces: bad input is exit 2 with the file's line", "[cli][forces]") {
 }
 
 }  // namespace koppel
+
+namespace koppel {
+
+TEST_CASE("plot --forces draws the drive torque and polar diagrams of joint forces", "[cli][forces]") {
+  test::TempDir dir;
+  const std::string svg = (dir.path() / "forces.svg").string();
+  const test::RunResult r = test::RunKoppel("plot " + test::TestDataPath("slider-crank-loads.yaml") +
+                                            " --forces --speed 1500 --joint A0 --joint B --step 5 -o " + svg);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const std::string text = test::ReadText(svg);
+  CHECK_THAT(text, Catch::Contains("drive torque [N m]") && Catch::Contains("joint A0: force of frame on crank [N]") &&
+                       Catch::Contains("joint B: force of coupler on slider [N]"));
+  CHECK(test::RunKoppel("plot " + test::TestDataPath("slider-crank-loads.yaml") + " --forces --joint Z").exit_code == 2);
+  CHECK(test::RunKoppel("plot " + test::TestDataPath("slider-crank-loads.yaml") + " --forces --mu").exit_code == 2);
+}
+
+}  // namespace koppel

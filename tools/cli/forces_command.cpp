@@ -117,7 +117,10 @@ void RunForces(const ForcesArgs& args) {
     Complain("--from/--to/--step/--speed: " + why);
     throw Exit{kExitBadInput};
   }
-  const ForcesResult result = AnalyseForces(m, file.loads, options);
+  const Loads& loads = file.loads;
+  if (!loads.HasMass() && loads.forces.empty() && loads.torques.empty() && loads.springs.empty())
+    Complain(args.file + ": note: the file gives no masses and no loads, so every force is zero (README.md, 'Masses and loads')");
+  const ForcesResult result = AnalyseForces(m, loads, options);
   if (result.status == ForcesStatus::kInvalidLoads || result.status == ForcesStatus::kInvalidOptions) {
     Complain(args.file + ": " + result.message);
     throw Exit{kExitBadInput};

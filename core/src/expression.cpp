@@ -1,4 +1,5 @@
 #include "koppel/core/expression.hpp"
+#include "koppel/core/angles.hpp"
 
 #include <muParser.h>
 
@@ -7,7 +8,7 @@
 
 namespace koppel {
 namespace {
-constexpr double kPiValue = 3.14159265358979323846;
+constexpr double kPiValue = kPi;
 }
 
 ParameterSet::ParameterSet() = default;

@@ -41,6 +41,21 @@ TEST_CASE("slider-crank chart: e/s0, l1/s0, l2/s0 and mu_min over phi0", "[plot]
   CHECK(test::Find(panels[1], "path", "curve").size() == 1);
 }
 
+TEST_CASE("synth chart's rows without a design are gaps; one rocker sense per plot", "[plot]") {
+  const std::string header = "phi0,psi0,rocker_sense,status,beta,mu_min,l1,l2,l3,l4,beta_L,beta_E\n";
+  std::string csv = header;
+  for (int phi = 160; phi <= 180; phi += 5)
+    csv += phi == 170 ? "170,40,same,none,,,,,,,,\n" : std::to_string(phi) + ",40,same,ok,30,20,1,2,3,4,50,10\n";
+  const plot::PlotResult r = plot::ChartPlot(csv, "chart.csv");
+  REQUIRE(r.status == plot::PlotStatus::kComplete);
+  const auto curves = test::Find(test::Find(test::ParseSvg(r.svg), "g", "panel")[0], "path", "curve");
+  REQUIRE(curves.size() == 1);
+  CHECK(test::Subpaths(curves[0]).size() == 2);  // 170 has no design: 160..165 and 175..180
+  const plot::PlotResult both = plot::ChartPlot(csv + "160,40,opposite,ok,30,20,1,2,3,4,50,10\n", "chart.csv");
+  CHECK(both.status == plot::PlotStatus::kFailed);
+  CHECK_THAT(both.message, Catch::Contains("--rocker-sense"));
+}
+
 TEST_CASE("tables that are not charts are refused, naming the file and line", "[plot]") {
   CHECK_THAT(plot::ChartPlot("phi0,psi0,beta,mu_min\n1,2,3,4\n1,2,x,4\n", "c.csv").message, Catch::StartsWith("c.csv:3:"));
   CHECK_THAT(plot::ChartPlot("phi0,psi0,beta,mu_min\n1,2,3\n", "c.csv").message, Catch::StartsWith("c.csv:2:"));

@@ -51,8 +51,21 @@ bool ParseCsv(const std::string& text, const std::string& file, CsvTable* table,
              std::to_string(table->columns.size());
       return false;
     }
+    // `synth chart` writes a row for every grid point; without a design (status none, boundary,
+    // failed) its numbers are empty: such a row is a gap. The rocker sense is a word: same = 1,
+    // opposite = -1.
+    const int status = table->Column("status"), sense = table->Column("rocker_sense");
+    if (status >= 0 && cells[status] != "ok") continue;
     std::vector<double> row;
     for (size_t c = 0; c < cells.size(); ++c) {
+      if (static_cast<int>(c) == status) {
+        row.push_back(1);
+        continue;
+      }
+      if (static_cast<int>(c) == sense && (cells[c] == "same" || cells[c] == "opposite")) {
+        row.push_back(cells[c] == "same" ? 1 : -1);
+        continue;
+      }
       char* end = nullptr;
       const double v = std::strtod(cells[c].c_str(), &end);
       if (cells[c].empty() || *end != '\0' || !std::isfinite(v)) {
@@ -138,6 +151,10 @@ PlotResult ChartPlot(const std::string& csv_text, const std::string& file_name) 
   if (!ParseCsv(csv_text, file_name, &t, &why)) return {PlotStatus::kFailed, why, ""};
   Figure figure;
   const int phi0 = t.Column("phi0");
+  if (const int sense = t.Column("rocker_sense"); sense >= 0) {
+    const bool mixed = std::any_of(t.rows.begin(), t.rows.end(), [&](const auto& r) { return r[sense] != t.rows.front()[sense]; });
+    if (mixed) return {PlotStatus::kFailed, file_name + ": both rocker senses in one chart: plot one (synth chart --rocker-sense same or opposite)", ""};
+  }
   if (phi0 >= 0 && t.Column("psi0") >= 0 && t.Column("beta") >= 0 && t.Column("mu_min") >= 0) {
     figure.title = "Crank-rocker design chart (dead-centre synthesis): max μ_min, best β";
     figure.panels.push_back(FamilyPanel(t, phi0, t.Column("mu_min"), t.Column("psi0"), "ψ0", "max μ_min [deg]"));

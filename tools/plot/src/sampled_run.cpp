@@ -1,4 +1,5 @@
 #include "koppel/plot/sampled_run.hpp"
+#include "koppel/core/angles.hpp"
 
 #include "koppel/solver/position.hpp"
 
@@ -40,7 +41,7 @@ bool PoseAt(const Mechanism& mechanism, const SampledRun& run, double input, Eig
   const SolveReport start = path.Start(run.inputs[nearest], run.poses.row(nearest).transpose());
   // steps of at most the run's spacing (or 1 degree / 1 % of the length scale for one sample)
   const double step = run.size() > 1 ? std::abs(run.inputs[1] - run.inputs[0])
-                                     : (mechanism.InputIsAngle() ? 3.14159265358979323846 / 180 : 0.01 * LengthScale(mechanism));
+                                     : (mechanism.InputIsAngle() ? kPi / 180 : 0.01 * LengthScale(mechanism));
   if (!start.ok()) {
     *why = start.message;
     return false;

@@ -1,4 +1,5 @@
 #include "koppel/plot/scheme.hpp"
+#include "koppel/core/angles.hpp"
 
 #include "koppel/plot/svg.hpp"
 #include "koppel/solver/constraints.hpp"
@@ -228,14 +229,14 @@ class SchemeWriter {
     if (drive.type == JointType::kRevolute) {
       const Vec c = view_(Global(a_frame ? PointRef{drive.link_a, drive.point_a} : PointRef{drive.link_b, drive.point_b}, scene_.q));
       // world angles 150..250 deg: left of the pivot, clear of the ground symbol; counter-clockwise
-      const double a0 = 150 * M_PI / 180, a1 = 250 * M_PI / 180;
+      const double a0 = DegToRad(150), a1 = DegToRad(250);
       const Vec p0 = c + kArrowRadius * Vec(std::cos(a0), -std::sin(a0)), p1 = c + kArrowRadius * Vec(std::cos(a1), -std::sin(a1));
       svg.PathData("M" + Num(p0.x()) + "," + Num(p0.y()) + " A" + Num(kArrowRadius) + "," + Num(kArrowRadius) + " 0 0 0 " +
                        Num(p1.x()) + "," + Num(p1.y()),
                    {{"class", "drive-arrow"}, {"fill", "none"}, {"stroke", kInk}, {"stroke-width", "1.4"}});
       const Vec t(-std::sin(a1), -std::cos(a1)), n(-t.y(), t.x());
       svg.Polygon({p1 + 2 * t, p1 - 7 * t + 3.5 * n, p1 - 7 * t - 3.5 * n}, {{"class", "drive-arrow-head"}, {"fill", kInk}});
-      const Vec label = c + (kArrowRadius + 12) * Vec(std::cos(200 * M_PI / 180), -std::sin(200 * M_PI / 180));
+      const Vec label = c + (kArrowRadius + 12) * Vec(std::cos(DegToRad(200)), -std::sin(DegToRad(200)));
       svg.Text(label + Vec(0, 4), m_.drive.input_name == "phi" ? "φ" : m_.drive.input_name, {{"text-anchor", "middle"}});
     } else {
       const auto [a, b] = GuideEnds(m_.drive.joint);

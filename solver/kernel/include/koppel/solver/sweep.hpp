@@ -10,6 +10,7 @@
 // of the window), higher orders are marked not computable.
 #pragma once
 
+#include "koppel/core/angles.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/continuation.hpp"
 #include "koppel/solver/position.hpp"
@@ -29,8 +30,8 @@ inline constexpr long kMaxSweepSamples = 10'000'000;
 
 struct SweepOptions {
   double from = 0.0;  // drive input: radians for an R drive, length for a P drive
-  double to = 2.0 * 3.14159265358979323846;
-  double step = 3.14159265358979323846 / 180.0;  // != 0; its sign is ignored (from -> to)
+  double to = 2.0 * kPi;
+  double step = kPi / 180.0;  // != 0; its sign is ignored (from -> to)
   int order = 2;  // highest transfer function order in the table (0..kMaxOrder)
   ContinuationOptions continuation;
 

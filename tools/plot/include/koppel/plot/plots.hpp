@@ -7,6 +7,7 @@
 #pragma once
 
 #include "koppel/core/mechanism.hpp"
+#include "koppel/core/angles.hpp"
 #include "koppel/plot/figure.hpp"
 #include "koppel/solver/sweep.hpp"
 
@@ -54,7 +55,7 @@ struct CurvePlotOptions {
   bool straight = false;                 // add the straight-line analysis of seed 003
   double qg = 0.005;                     // allowed Q_G for the stretch
   std::optional<double> reference;       // input of K_I (radians); default the flattest point
-  double resolution = 0.02 * 3.14159265358979323846 / 180;  // search resolution [rad]
+  double resolution = 0.02 * kPi / 180;  // search resolution [rad]
   bool IsValid(const Mechanism& mechanism, std::string* why) const;
 };
 // The coupler curve to scale (equal aspect); with `straight` the stretch K_A..K_E, K_I, the

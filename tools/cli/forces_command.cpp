@@ -121,7 +121,7 @@ void RunForces(const ForcesArgs& args) {
   if (!loads.HasMass() && loads.forces.empty() && loads.torques.empty() && loads.springs.empty())
     Complain(args.file + ": note: the file gives no masses and no loads, so every force is zero (README.md, 'Masses and loads')");
   const ForcesResult result = AnalyseForces(m, loads, options);
-  if (result.status == ForcesStatus::kInvalidLoads || result.status == ForcesStatus::kInvalidOptions) {
+  if (result.bad_input) {
     Complain(args.file + ": " + result.message);
     throw Exit{kExitBadInput};
   }

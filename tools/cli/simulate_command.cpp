@@ -108,8 +108,7 @@ void RunSimulate(const SimulateArgs& args) {
   if (!options.IsValid(&why)) BadInput("--t/--initial/--dt/--tolerance: " + why);
 
   const SimulationResult result = Simulate(m, file.loads, law, options);
-  if (result.status == SimulationStatus::kInvalidLoads || result.status == SimulationStatus::kInvalidOptions)
-    BadInput(args.file + ": " + result.message);
+  if (result.bad_input) BadInput(args.file + ": " + result.message);
 
   Table table;
   std::vector<std::string> units = {"s", angle ? "deg" : "length", angle ? "rpm" : "length/s"};

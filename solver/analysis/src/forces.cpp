@@ -22,18 +22,6 @@ double LoadScale(const PoseMotion& pose, const AppliedLoads& loads) {
 
 }  // namespace
 
-const char* ToString(ForcesStatus status) {
-  switch (status) {
-    case ForcesStatus::kComplete: return "complete";
-    case ForcesStatus::kPartial: return "partial";
-    case ForcesStatus::kCheckFailed: return "check failed";
-    case ForcesStatus::kInvalidLoads: return "invalid loads";
-    case ForcesStatus::kNotAssemblable: return "not assemblable";
-    case ForcesStatus::kInvalidOptions: return "invalid options";
-  }
-  return "invalid options";
-}
-
 bool ForcesOptions::IsValid(std::string* why) const {
   if (speed && !std::isfinite(*speed)) {
     if (why) *why = "the drive speed must be a finite number";
@@ -55,25 +43,21 @@ ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesO
   ForcesResult result;
   result.kinetostatic = options.speed.has_value();
   std::string why;
-  if (!options.IsValid(&why)) {
-    result.message = why;
+  auto fail = [&](std::string message, bool bad_input) {
+    result.status = AnalysisStatus::kFailed;
+    result.message = std::move(message);
+    result.bad_input = bad_input;
     return result;
-  }
+  };
+  if (!options.IsValid(&why)) return fail(why, true);
   LoadModel model;
-  if (!model.Prepare(m, loads, &why)) {
-    result.status = ForcesStatus::kInvalidLoads;
-    result.message = why;
-    return result;
-  }
+  if (!model.Prepare(m, loads, &why)) return fail(why, true);
   SweepOptions sweep_options = options.sweep;
   sweep_options.order = 0;  // the table of outputs is not needed: poses are
   const SweepResult sweep = Sweep(m, sweep_options);
   result.sweep = EventsOf(sweep);
-  if (sweep.status == SweepStatus::kNotAssemblable || sweep.status == SweepStatus::kInvalidOptions) {
-    result.status = sweep.status == SweepStatus::kNotAssemblable ? ForcesStatus::kNotAssemblable : ForcesStatus::kInvalidOptions;
-    result.message = sweep.message;
-    return result;
-  }
+  if (sweep.status == SweepStatus::kNotAssemblable || sweep.status == SweepStatus::kInvalidOptions)
+    return fail(sweep.message, sweep.status == SweepStatus::kInvalidOptions);
 
   PositionSolver solver(m);
   result.indeterminate = solver.system().NumEquations() != solver.NumCoordinates();
@@ -135,17 +119,15 @@ ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesO
     result.rows.push_back(std::move(row));
   }
 
-  if (result.worst_disagreement > kVirtualWorkAgreement) {
-    result.status = ForcesStatus::kCheckFailed;
-    result.message = "the drive torque from the joint reactions and by virtual work disagree by " +
-                     std::to_string(result.worst_disagreement) + " of the loads' work: a bug, please report it";
-    return result;
-  }
+  if (result.worst_disagreement > kVirtualWorkAgreement)
+    return fail("the drive torque from the joint reactions and by virtual work disagree by " +
+                    std::to_string(result.worst_disagreement) + " of the loads' size: a bug, please report it",
+                false);
   if (sweep.complete() && missing == 0) {
-    result.status = ForcesStatus::kComplete;
+    result.status = AnalysisStatus::kComplete;
     return result;
   }
-  result.status = ForcesStatus::kPartial;
+  result.status = AnalysisStatus::kPartial;
   std::string message;
   if (missing > 0) message = std::to_string(missing) + " of " + std::to_string(sweep.inputs.size()) + " computed samples have no forces";
   if (result.indeterminate) message += ": the mechanism has redundant joints, so its joint reactions are statically indeterminate";

@@ -147,17 +147,6 @@ bool CheckDriveLaw(const DriveLaw& drive, std::string* why) {
 
 }  // namespace
 
-const char* ToString(SimulationStatus status) {
-  switch (status) {
-    case SimulationStatus::kComplete: return "complete";
-    case SimulationStatus::kStopped: return "stopped";
-    case SimulationStatus::kInvalidLoads: return "invalid loads";
-    case SimulationStatus::kNotAssemblable: return "not assemblable";
-    case SimulationStatus::kInvalidOptions: return "invalid options";
-  }
-  return "invalid options";
-}
-
 bool SimulationOptions::IsValid(std::string* why) const {
   auto fail = [&](const char* text) {
     if (why) *why = text;
@@ -182,39 +171,28 @@ std::string SimulationResult::Brief() const {
 
 SimulationResult Simulate(const Mechanism& m, const Loads& loads, const DriveLaw& drive, const SimulationOptions& options) {
   SimulationResult result;
-  std::string why;
-  if (!options.IsValid(&why)) {
-    result.message = why;
+  auto fail = [&](std::string message, bool bad_input) {
+    result.status = AnalysisStatus::kFailed;
+    result.message = std::move(message);
+    result.bad_input = bad_input;
     return result;
-  }
+  };
+  std::string why;
+  if (!options.IsValid(&why)) return fail(why, true);
   LoadModel model;
   CompiledFormula formula;
   if (!model.Prepare(m, loads, &why) || !CheckDriveLaw(drive, &why) ||
-      (drive.kind == DriveLaw::Kind::kFormula && !formula.Compile(drive.formula, loads.parameters, LoadVariables(m), &why))) {
-    result.status = SimulationStatus::kInvalidLoads;
-    result.message = why;
-    return result;
-  }
-  if (!loads.HasMass()) {
-    result.status = SimulationStatus::kInvalidLoads;
-    result.message = "no link has a mass or a moment of inertia: the motion is not determined";
-    return result;
-  }
+      (drive.kind == DriveLaw::Kind::kFormula && !formula.Compile(drive.formula, loads.parameters, LoadVariables(m), &why)))
+    return fail(why, true);
+  if (!loads.HasMass()) return fail("no link has a mass or a moment of inertia: the motion is not determined", true);
 
   PositionSolver solver(m);
   const Assembly assembly = AssembleRegular(m, solver, options.continuation);
-  if (!assembly.ok()) {
-    result.status = SimulationStatus::kNotAssemblable;
-    result.message = assembly.error;
-    return result;
-  }
+  if (!assembly.ok()) return fail(assembly.error, false);
   Continuation path(solver, options.continuation);
   path.Start(assembly.input, assembly.q);
-  if (const WalkReport to_start = path.AdvanceTo(options.initial_input, std::numeric_limits<double>::infinity()); !to_start.ok()) {
-    result.status = SimulationStatus::kNotAssemblable;
-    result.message = "the initial input cannot be reached on the assembly's branch: " + to_start.message;
-    return result;
-  }
+  if (const WalkReport to_start = path.AdvanceTo(options.initial_input, std::numeric_limits<double>::infinity()); !to_start.ok())
+    return fail("the initial input cannot be reached on the assembly's branch: " + to_start.message, false);
 
   Dynamics dynamics(m, loads, drive, model, &formula, solver, path);
   State x = {options.initial_input, options.initial_speed};
@@ -231,7 +209,7 @@ SimulationResult Simulate(const Mechanism& m, const Loads& loads, const DriveLaw
     dynamics.Outputs(&row.outputs);
     result.rows.push_back(std::move(row));
   };
-  auto stop = [&](SimulationStatus status, std::string message) {
+  auto stop = [&](AnalysisStatus status, std::string message) {
     result.status = status;
     result.message = std::move(message);
     result.evaluations = dynamics.evaluations();
@@ -241,7 +219,7 @@ SimulationResult Simulate(const Mechanism& m, const Loads& loads, const DriveLaw
   try {
     row_at(options.t_start, x);
   } catch (const Stop& s) {
-    return stop(SimulationStatus::kStopped, s.message);
+    return stop(AnalysisStatus::kPartial, s.message);
   }
 
   const double span = options.t_end - options.t_start;
@@ -257,7 +235,7 @@ SimulationResult Simulate(const Mechanism& m, const Loads& loads, const DriveLaw
   std::string last_failure;
   while (next <= outputs) {
     if (result.steps >= options.max_steps)
-      return stop(SimulationStatus::kStopped, "the integrator needed more than " + std::to_string(options.max_steps) + " steps " +
+      return stop(AnalysisStatus::kPartial, "the integrator needed more than " + std::to_string(options.max_steps) + " steps " +
                                                   Where(m, t, x[0]));
     try {
       stepper.do_step(std::ref(dynamics));
@@ -271,7 +249,7 @@ SimulationResult Simulate(const Mechanism& m, const Loads& loads, const DriveLaw
       // start again from the last accepted state with a shorter step; a failure that persists at
       // the shortest step is where the motion really ends
       dt = std::min(dt, stepper.current_time_step()) / 8.0;
-      if (dt < kSmallestRetryStep * options.output_step) return stop(SimulationStatus::kStopped, last_failure);
+      if (dt < kSmallestRetryStep * options.output_step) return stop(AnalysisStatus::kPartial, last_failure);
       stepper.initialize(x, t, dt);
       last_failure.clear();
       continue;
@@ -288,10 +266,10 @@ SimulationResult Simulate(const Mechanism& m, const Loads& loads, const DriveLaw
         ++next;
       }
     } catch (const Stop& s) {
-      return stop(SimulationStatus::kStopped, s.message);
+      return stop(AnalysisStatus::kPartial, s.message);
     }
   }
-  return stop(SimulationStatus::kComplete, "");
+  return stop(AnalysisStatus::kComplete, "");
 }
 
 }  // namespace koppel

@@ -167,7 +167,7 @@ TEST_CASE("slider-crank with a force on the slider: drive torque = F s'(phi) (se
     ForcesOptions options;
     options.sweep = Degrees(0, 360, 5);
     const ForcesResult r = AnalyseForces(m, loads, options);
-    REQUIRE(r.status == ForcesStatus::kComplete);
+    REQUIRE(r.status == AnalysisStatus::kComplete);
     REQUIRE(r.rows.size() == 73);
     CHECK(r.worst_disagreement < kVirtualWorkAgreement);
     const Poser poser(m);
@@ -214,7 +214,7 @@ TEST_CASE("reactions balance every link under gravity, springs, torques and iner
     options.sweep.order = 2;
     if (rpm > 0) options.speed = omega;
     const ForcesResult r = AnalyseForces(m, loads, options);
-    REQUIRE(r.status == ForcesStatus::kComplete);
+    REQUIRE(r.status == AnalysisStatus::kComplete);
     const SweepResult sweep = Sweep(m, options.sweep);  // the masses' motion, independently
     REQUIRE(sweep.inputs.size() == r.rows.size());
     const Poser poser(m);
@@ -259,7 +259,7 @@ TEST_CASE("four-bar with masses at constant speed: drive torque = dE/dt / speed 
     options.sweep.order = 2;
     options.speed = omega;
     const ForcesResult r = AnalyseForces(m, loads, options);
-    REQUIRE(r.status == ForcesStatus::kComplete);
+    REQUIRE(r.status == AnalysisStatus::kComplete);
     const SweepResult sweep = Sweep(m, options.sweep);
     // E = 1/2 omega^2 sum (m p'.p' + J theta'^2) - sum m g.p over the input, with h = 1e-4 rad
     const double h = 1e-4;
@@ -347,8 +347,8 @@ TEST_CASE("the length unit: a mechanism in mm gives the forces it gives in m", "
     }
     const ForcesResult in_m = AnalyseForces(metres, loads_for(metres, 1.0), a);
     const ForcesResult in_mm = AnalyseForces(millimetres, loads_for(millimetres, 0.001), b);
-    REQUIRE(in_m.status == ForcesStatus::kComplete);
-    REQUIRE(in_mm.status == ForcesStatus::kComplete);
+    REQUIRE(in_m.status == AnalysisStatus::kComplete);
+    REQUIRE(in_mm.status == AnalysisStatus::kComplete);
     REQUIRE(in_m.rows.size() == in_mm.rows.size());
     for (size_t i = 0; i < in_m.rows.size(); ++i) {
       const ForcesRow &x = in_m.rows[i], &y = in_mm.rows[i];
@@ -378,7 +378,7 @@ TEST_CASE("slider-crank driven at the slider: drive force = -M / s'(phi) for a t
   options.sweep.to = 3.4;
   options.sweep.step = 0.1;
   const ForcesResult r = AnalyseForces(m, loads, options);
-  REQUIRE(r.status == ForcesStatus::kComplete);
+  REQUIRE(r.status == AnalysisStatus::kComplete);
   for (const ForcesRow& row : r.rows) {
     const double phi = row.q(2);  // the crank's angle is the seed's phi (A = A0 + l1 (sin phi, -cos phi))
     INFO("s = " << row.input << ", phi = " << RadToDeg(phi));
@@ -403,7 +403,7 @@ TEST_CASE("singular rows carry no forces and make the result partial", "[forces]
   ForcesOptions options;
   options.sweep = Degrees(-30, 30, 10);
   const ForcesResult r = AnalyseForces(m, loads, options);
-  REQUIRE(r.status == ForcesStatus::kPartial);
+  REQUIRE(r.status == AnalysisStatus::kPartial);
   int singular = 0;
   for (const ForcesRow& row : r.rows) {
     INFO("phi = " << RadToDeg(row.input));
@@ -444,7 +444,7 @@ TEST_CASE("redundant joints: drive torque by virtual work, reactions statically 
   options.sweep = Degrees(30, 150, 30);
   const ForcesResult r = AnalyseForces(m, loads, options);
   CHECK(r.indeterminate);
-  CHECK(r.status == ForcesStatus::kPartial);
+  CHECK(r.status == AnalysisStatus::kPartial);
   CHECK_THAT(r.message, Catch::Contains("statically indeterminate"));
   for (const ForcesRow& row : r.rows) {
     CHECK_FALSE(row.computed);
@@ -462,12 +462,13 @@ TEST_CASE("invalid loads and a formula without a value are reported, not compute
   ForcesOptions options;
   options.sweep = Degrees(0, 90, 30);
   ForcesResult r = AnalyseForces(m, loads, options);
-  CHECK(r.status == ForcesStatus::kInvalidLoads);
+  CHECK(r.status == AnalysisStatus::kFailed);
+  CHECK(r.bad_input);
   CHECK_THAT(r.message, Catch::Contains("force 'F'") && Catch::Contains("nosuch"));
 
   loads.forces[0].magnitude = "sqrt(0.6 - phi)";  // no value beyond phi = 0.6 rad = 34 deg
   r = AnalyseForces(m, loads, options);
-  REQUIRE(r.status == ForcesStatus::kPartial);
+  REQUIRE(r.status == AnalysisStatus::kPartial);
   REQUIRE(r.rows.size() == 4);
   CHECK(r.rows[1].computed);
   CHECK_FALSE(r.rows[2].computed);
@@ -476,7 +477,8 @@ TEST_CASE("invalid loads and a formula without a value are reported, not compute
   loads.forces.clear();
   loads.masses.push_back({0, 1.0, {0, 0}, 0.0});  // on the frame
   r = AnalyseForces(m, loads, options);
-  CHECK(r.status == ForcesStatus::kInvalidLoads);
+  CHECK(r.status == AnalysisStatus::kFailed);
+  CHECK(r.bad_input);
   CHECK_THAT(r.message, Catch::Contains("frame"));
 }
 

@@ -91,7 +91,7 @@ TEST_CASE("physical pendulum: period against the closed forms, energy conserved"
     options.t_end = 3.2 * t0;
     options.output_step = t0 / 200;
     const SimulationResult r = Simulate(m, loads, DriveLaw{}, options);
-    REQUIRE(r.status == SimulationStatus::kComplete);
+    REQUIRE(r.status == AnalysisStatus::kComplete);
     const double period = MeanPeriod(UpwardCrossings(r, hanging));
     // the next term of the series, 11/3072 theta0^4, is 3e-10 here
     const double expected = t0 * (1 + amplitude * amplitude / 16);
@@ -110,7 +110,7 @@ TEST_CASE("physical pendulum: period against the closed forms, energy conserved"
       options.t_end = 3.2 * expected;
       options.output_step = expected / 200;
       const SimulationResult r = Simulate(m, loads, DriveLaw{}, options);
-      REQUIRE(r.status == SimulationStatus::kComplete);
+      REQUIRE(r.status == AnalysisStatus::kComplete);
       const double period = MeanPeriod(UpwardCrossings(r, hanging));
       const double drift = WorstEnergyDrift(r) / (mass * kGravity * a * (1 - std::cos(amplitude)));
       INFO(degrees << " deg: period " << period << " s, elliptic closed form " << expected << " s (relative difference "
@@ -152,7 +152,7 @@ TEST_CASE("spring-loaded parallelogram four-bar: period of the linearisation", "
     options.t_end = 3.2 * t0;
     options.output_step = t0 / 200;
     const SimulationResult r = Simulate(m, loads, DriveLaw{}, options);
-    REQUIRE(r.status == SimulationStatus::kComplete);
+    REQUIRE(r.status == AnalysisStatus::kComplete);
     const double period = MeanPeriod(UpwardCrossings(r, kPi / 2));
     errors.push_back(period / t0 - 1);
     INFO(degrees << " deg: period " << period << " s, linearisation " << t0 << " s");
@@ -184,7 +184,7 @@ TEST_CASE("a crank-rocker with masses, gravity and a spring runs through full tu
   options.t_end = 2.0;
   options.output_step = 0.002;
   const SimulationResult r = Simulate(m, loads, DriveLaw{}, options);
-  REQUIRE(r.status == SimulationStatus::kComplete);
+  REQUIRE(r.status == AnalysisStatus::kComplete);
   const double e0 = r.rows.front().kinetic_energy + r.rows.front().potential_energy;
   const double drift = WorstEnergyDrift(r) / std::abs(e0);
   INFO("energy " << e0 << " J, worst drift " << drift << " of it over " << r.rows.back().input / (2 * kPi) << " turns, "
@@ -228,7 +228,7 @@ TEST_CASE("mass-spring-damper on a slide in mm: the damped oscillation", "[simul
   options.t_end = 0.5;
   options.output_step = 0.005;
   const SimulationResult r = Simulate(m, loads, DriveLaw{}, options);
-  REQUIRE(r.status == SimulationStatus::kComplete);
+  REQUIRE(r.status == AnalysisStatus::kComplete);
   const double wn = std::sqrt(k / mass), zeta = c / (2 * std::sqrt(k * mass)), wd = wn * std::sqrt(1 - zeta * zeta);
   const double x0 = 0.020;
   double worst = 0.0;
@@ -257,7 +257,7 @@ TEST_CASE("a flywheel under a torque formula and under a motor curve", "[simulat
   law.kind = DriveLaw::Kind::kFormula;
   law.formula = "2 + 0*phi_dot";  // N m
   SimulationResult r = Simulate(m, loads, law, options);
-  REQUIRE(r.status == SimulationStatus::kComplete);
+  REQUIRE(r.status == AnalysisStatus::kComplete);
   for (const SimulationRow& row : r.rows) {
     CHECK_THAT(row.input, Catch::Matchers::WithinAbs(0.5 * 4.0 * row.time * row.time, 1e-8));  // phi = M t^2 / (2 J)
     CHECK_THAT(row.speed, Catch::Matchers::WithinAbs(4.0 * row.time, 1e-8));
@@ -269,7 +269,7 @@ TEST_CASE("a flywheel under a torque formula and under a motor curve", "[simulat
   law.speeds = {0.0, ws, 2 * ws};
   law.torques = {m0, 0.0, -m0};
   r = Simulate(m, loads, law, options);
-  REQUIRE(r.status == SimulationStatus::kComplete);
+  REQUIRE(r.status == AnalysisStatus::kComplete);
   for (const SimulationRow& row : r.rows) {
     const double expected = ws * (1 - std::exp(-m0 * row.time / (0.5 * ws)));
     CHECK_THAT(row.speed, Catch::Matchers::WithinAbs(expected, 1e-7 * ws));
@@ -278,7 +278,7 @@ TEST_CASE("a flywheel under a torque formula and under a motor curve", "[simulat
   law.speeds = {-1.0, 5.0};
   law.torques = {m0, 5.0};
   r = Simulate(m, loads, law, options);
-  CHECK(r.status == SimulationStatus::kStopped);
+  CHECK(r.status == AnalysisStatus::kPartial);
   CHECK_THAT(r.message, Catch::Contains("motor curve"));
   REQUIRE(!r.rows.empty());
   CHECK(r.rows.back().speed <= 5.0);
@@ -300,7 +300,7 @@ TEST_CASE("the run stops at a dead centre of the drive and refuses a mechanism w
   options.t_end = 5.0;
   options.output_step = 0.01;
   SimulationResult r = Simulate(m, loads, law, options);
-  CHECK(r.status == SimulationStatus::kStopped);
+  CHECK(r.status == AnalysisStatus::kPartial);
   CHECK_THAT(r.message, Catch::Contains("cannot move on"));
   CHECK(r.rows.size() >= 1);
   CHECK(r.rows.back().time < options.t_end);
@@ -308,12 +308,14 @@ TEST_CASE("the run stops at a dead centre of the drive and refuses a mechanism w
 
   loads.masses.clear();
   r = Simulate(m, loads, law, options);
-  CHECK(r.status == SimulationStatus::kInvalidLoads);
+  CHECK(r.status == AnalysisStatus::kFailed);
+  CHECK(r.bad_input);
   CHECK_THAT(r.message, Catch::Contains("no link has a mass"));
 
   options.t_end = -1;
   r = Simulate(m, loads, law, options);
-  CHECK(r.status == SimulationStatus::kInvalidOptions);
+  CHECK(r.status == AnalysisStatus::kFailed);
+  CHECK(r.bad_input);
 }
 
 }  // namespace koppel

@@ -54,7 +54,7 @@ PlotResult ForcesPlot(const Mechanism& m, const Loads& loads, const ForcesPlotOp
   std::string why;
   if (!options.IsValid(m, &why)) return {PlotStatus::kFailed, why, ""};
   const ForcesResult result = AnalyseForces(m, loads, options.forces);
-  if (result.rows.empty() || result.status == ForcesStatus::kInvalidLoads || result.status == ForcesStatus::kCheckFailed)
+  if (result.rows.empty() || result.status == AnalysisStatus::kFailed)
     return {PlotStatus::kFailed, result.message, ""};
   const bool angle = m.InputIsAngle();
   Figure figure;

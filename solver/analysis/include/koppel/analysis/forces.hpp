@@ -13,6 +13,7 @@
 // is false and `problem` says why; the result is then partial, never a huge number as if fine.
 #pragma once
 
+#include "koppel/analysis/status.hpp"
 #include "koppel/core/loads.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/multipliers.hpp"
@@ -37,16 +38,6 @@ struct ForcesOptions {
   bool IsValid(std::string* why) const;  // the sweep's options, and a finite speed
 };
 
-enum class ForcesStatus {
-  kComplete,        // every requested sample has its forces
-  kPartial,         // some samples are missing (sweep gaps) or have no forces (see rows)
-  kCheckFailed,     // the drive by the multipliers and by virtual work disagree (a bug): message
-  kInvalidLoads,    // the loads do not fit the mechanism or a formula does not compile: message
-  kNotAssemblable,  // no pose at the assembly input
-  kInvalidOptions,
-};
-const char* ToString(ForcesStatus status);
-
 struct ForcesRow {
   double input = 0.0;        // rad or length unit
   Eigen::VectorXd q;         // the pose (the solver's coordinates, constraints.hpp)
@@ -63,7 +54,12 @@ struct ForcesRow {
 };
 
 struct ForcesResult {
-  ForcesStatus status = ForcesStatus::kInvalidOptions;
+  // kComplete: every requested sample has its forces; kPartial: some samples are missing (sweep
+  // gaps) or have none (see rows); kFailed: the message says why — bad input (bad_input: the loads
+  // do not fit the mechanism, a formula does not compile, invalid options), no assembly, or the
+  // drive by the multipliers and by virtual work disagree (a bug; the rows are kept).
+  AnalysisStatus status = AnalysisStatus::kNotRun;
+  bool bad_input = false;
   std::string message;
   SweepEvents sweep;          // of the sweep underneath
   bool kinetostatic = false;  // a speed was given
@@ -73,7 +69,7 @@ struct ForcesResult {
   std::vector<ForcesRow> rows;  // the sweep's computed samples, in sweep order
   double worst_disagreement = 0.0;  // max |drive - drive_virtual_work| / load_scale over the rows
 
-  bool complete() const { return status == ForcesStatus::kComplete; }
+  bool complete() const { return status == AnalysisStatus::kComplete; }
   std::string Brief() const;
 };
 

@@ -13,6 +13,7 @@
 // input), a formula has no finite value, or the speed leaves the motor curve.
 #pragma once
 
+#include "koppel/analysis/status.hpp"
 #include "koppel/core/loads.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/continuation.hpp"
@@ -52,15 +53,6 @@ struct SimulationOptions {
   bool IsValid(std::string* why) const;
 };
 
-enum class SimulationStatus {
-  kComplete,         // reached t_end
-  kStopped,          // the motion cannot go on (message): rows up to there
-  kInvalidLoads,     // the loads or the drive law do not fit the mechanism
-  kNotAssemblable,   // no pose at the initial input on the hint's branch
-  kInvalidOptions,
-};
-const char* ToString(SimulationStatus status);
-
 struct SimulationRow {
   double time = 0.0;          // [s]
   double input = 0.0;         // [rad or length unit]
@@ -73,14 +65,18 @@ struct SimulationRow {
 };
 
 struct SimulationResult {
-  SimulationStatus status = SimulationStatus::kInvalidOptions;
+  // kComplete: reached t_end; kPartial: the motion cannot go on (message), rows up to there;
+  // kFailed: bad input (bad_input: the loads, the drive law or the options), or no pose at the
+  // initial input on the hint's branch.
+  AnalysisStatus status = AnalysisStatus::kNotRun;
+  bool bad_input = false;
   std::string message;
   std::vector<SimulationRow> rows;
   long steps = 0;       // accepted integrator steps
   long evaluations = 0;  // right-hand sides (each a solved pose)
   std::vector<SingularPoint> singular_points;  // met on the way (branch points passed)
 
-  bool complete() const { return status == SimulationStatus::kComplete; }
+  bool complete() const { return status == AnalysisStatus::kComplete; }
   std::string Brief() const;
 };
 

@@ -69,20 +69,20 @@ ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesO
     row.input = sweep.inputs[i];
     row.singular = sweep.singular[i] != 0;
     row.q = sweep.poses.row(i).transpose();
-    auto fail = [&](std::string problem) {
+    auto skip = [&](std::string problem) {
       row.problem = std::move(problem);
       ++missing;
       result.rows.push_back(row);
     };
     if (row.singular) {
-      fail("the pose is singular: at a limit point the drive torque to hold the loads is unbounded, at a branch point the "
+      skip("the pose is singular: at a limit point the drive torque to hold the loads is unbounded, at a branch point the "
            "reactions are not determined");
       continue;
     }
     Eigen::VectorXd& q = row.q;
     const SolveReport solved = solver.Correct(row.input, q);
     if (!solved.ok() || !solver.Series(2, series)) {
-      fail("the pose does not solve again: " + solved.message);
+      skip("the pose does not solve again: " + solved.message);
       continue;
     }
     const PoseMotion pose(solver.system(), series, loads.metres_per_unit);
@@ -92,7 +92,7 @@ ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesO
     state.time = speed != 0.0 ? (row.input - options.sweep.from) / speed : 0.0;
     AppliedLoads applied;
     if (!model.Evaluate(pose, state, &applied, &why)) {
-      fail(why);
+      skip(why);
       continue;
     }
     if (options.speed) applied.Add(InertiaLoads(pose, loads.masses, state));
@@ -103,12 +103,12 @@ ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesO
     row.load_scale = LoadScale(pose, applied);
     row.virtual_work = true;
     if (result.indeterminate) {
-      fail("the joint reactions are statically indeterminate (redundant joints)");
+      skip("the joint reactions are statically indeterminate (redundant joints)");
       continue;
     }
     Reactions reactions;
     if (!JointReactions(solver, q, GeneralizedForces(pose, applied), loads.metres_per_unit, &reactions)) {
-      fail("the multipliers could not be solved for at this pose");
+      skip("the multipliers could not be solved for at this pose");
       continue;
     }
     row.drive = reactions.drive;

@@ -1,5 +1,7 @@
 #include "koppel/core/formula.hpp"
 
+#include "koppel/core/angles.hpp"
+
 #include <muParser.h>
 
 #include <cmath>
@@ -34,8 +36,8 @@ bool CompiledFormula::Compile(const std::string& formula, const ParameterSet& pa
   }
   for (size_t i = 0; i < variables.size(); ++i) bound[variables[i]] = &impl->variables[i];
   try {
-    impl->parser.DefineConst("pi", 3.14159265358979323846);
-    impl->parser.DefineConst("deg", 3.14159265358979323846 / 180.0);
+    impl->parser.DefineConst("pi", kPi);
+    impl->parser.DefineConst("deg", kPi / 180.0);
     for (const auto& [name, address] : bound) impl->parser.DefineVar(name, address);
     impl->parser.SetExpr(formula);
     impl->parser.Eval();  // parses now, so that an unknown name is a compile error

@@ -1,6 +1,8 @@
 // Formulas compiled once and evaluated over variables.
 #include "koppel/core/formula.hpp"
 
+#include "koppel/core/angles.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -15,12 +17,12 @@ TEST_CASE("a compiled formula reads its variables and the parameters", "[formula
   CompiledFormula f;
   REQUIRE(f.Compile("F0*sin(phi) + s/2 + 30*deg", parameters, {"phi", "s"}, &error));
   const double values[] = {0.5, 4.0};
-  CHECK(f.Evaluate(values) == Approx(100 * std::sin(0.5) + 2.0 + 3.14159265358979323846 / 6).epsilon(1e-15));
+  CHECK(f.Evaluate(values) == Approx(100 * std::sin(0.5) + 2.0 + kPi / 6).epsilon(1e-15));
   const double others[] = {-1.0, 0.0};
-  CHECK(f.Evaluate(others) == Approx(100 * std::sin(-1.0) + 3.14159265358979323846 / 6).epsilon(1e-15));
+  CHECK(f.Evaluate(others) == Approx(100 * std::sin(-1.0) + kPi / 6).epsilon(1e-15));
   // moved, it still evaluates (the variables live with it)
   CompiledFormula moved = std::move(f);
-  CHECK(moved.Evaluate(values) == Approx(100 * std::sin(0.5) + 2.0 + 3.14159265358979323846 / 6).epsilon(1e-15));
+  CHECK(moved.Evaluate(values) == Approx(100 * std::sin(0.5) + 2.0 + kPi / 6).epsilon(1e-15));
   CHECK(moved.text() == "F0*sin(phi) + s/2 + 30*deg");
 }
 

@@ -72,4 +72,8 @@ std::string UnknownName(const std::string& what, const std::string& word, const 
 // Parses the `catalog` section of a mechanism file (card_reader.cpp).
 std::optional<CatalogCard> ReadCard(YamlReader& reader, const YAML::Node& node, const MechanismFile& file);
 
+// Reads the masses (links.*.mass, cg, inertia), units, gravity and loads into file.loads
+// (loads_reader.cpp). Call once the links, joints, drive and outputs are read.
+void ReadLoads(YamlReader& reader, const YAML::Node& root, MechanismFile& file);
+
 }  // namespace koppel

@@ -18,5 +18,7 @@ void AddFitSubcommand(CLI::App& synth);  // koppel synth fit
 void AddPlotCommand(CLI::App& app);  // plot, draw, view: tools/plot
 void AddDrawCommand(CLI::App& app);
 void AddViewCommand(CLI::App& app);
+void AddForcesCommand(CLI::App& app);    // forces_command.cpp
+void AddSimulateCommand(CLI::App& app);  // simulate_command.cpp
 
 }  // namespace koppel::cli

@@ -99,6 +99,9 @@ class PositionSolver {
   // x = J^-1 rhs with the factorisation of the last converged pose (implicit-function theorem:
   // dq/dp = -J^-1 dF/dp). Precondition: the last Correct/Assemble succeeded.
   Eigen::VectorXd SolveWithJacobian(const Eigen::VectorXd& rhs) const;
+  // x = J^-T rhs with the same factorisation: the Lagrange multipliers (multipliers.hpp). False
+  // when there is none or J is not square (redundant joints: the multipliers are not unique).
+  bool SolveWithJacobianTranspose(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;  // multipliers.cpp
 
   // Rank of the constraint rows (drive row excluded) at q, and the actual mobility
   // NumCoordinates() - rank.

@@ -48,10 +48,7 @@ void RunAnalyze(const AnalyzeArgs& args) {
     Complain(fmt::format("--order must be between 0 and {}", kMaxOrder));
     throw Exit{kExitBadInput};
   }
-  if (SampleCount(from, to, step) > 10'000'000) {
-    Complain("--from/--to/--step ask for more than ten million samples");
-    throw Exit{kExitBadInput};
-  }
+  CheckSampleCount(from, to, step, "--from/--to/--step");
 
   SweepOptions options;
   options.from = to_internal(from);
@@ -103,7 +100,7 @@ void RunAnalyze(const AnalyzeArgs& args) {
       j["message"] = result.message;
       j["stopped_at"] = to_display(result.stopped_at);
     }
-    WriteOutput(args.out, j.dump(1) + "\n");
+    WriteOutput(args.out, JsonText(j));
   }
   if (!result.complete()) {
     Complain(args.file + ": " + result.message);

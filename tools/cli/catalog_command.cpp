@@ -89,7 +89,7 @@ void PrintEntries(const std::vector<const CatalogEntry*>& entries, const Catalog
       j.push_back({{"id", e->file.id}, {"title_de", c.title_de}, {"title_en", c.title_en}, {"kind", c.kind},
                    {"file", e->file.path}, {"features", FeaturesJson(e->features)}});
     }
-    WriteOutput(args.out, j.dump(1) + "\n");
+    WriteOutput(args.out, JsonText(j));
     return;
   }
   std::string csv = "id,title_de,title_en,kind,drives,drives_at_frame,outputs,outputs_at_frame,links,binary,ternary,quaternary,joints,D,S\n";
@@ -174,7 +174,7 @@ void RunShow(const CatalogArgs& args) {
                         {"features", FeaturesJson(e.features)}, {"structure", s.formula},
                         {"gruebler_mobility", s.gruebler_mobility}, {"parameters", params},
                         {"equations", eqs}, {"figures", figs}};
-    WriteOutput(args.out, j.dump(1) + "\n");
+    WriteOutput(args.out, JsonText(j));
     return;
   }
   std::string t;
@@ -255,7 +255,7 @@ void RunCheck(const CatalogArgs& args) {
       }
       j.push_back({{"id", r.id}, {"passed", r.passed()}, {"checks", checks}});
     }
-    WriteOutput(args.out, j.dump(1) + "\n");
+    WriteOutput(args.out, JsonText(j));
   } else {
     std::string csv = "id,variant,kind,check,status,worst,tolerance,value,at,detail\n";
     for (const EntryReport& r : reports) {

@@ -6,6 +6,8 @@
 #include "koppel/core/angles.hpp"
 #include "koppel/analysis/coupler_curve.hpp"
 
+#include <algorithm>
+
 namespace koppel::cli {
 namespace {
 
@@ -34,6 +36,7 @@ void Run(const Args& args) {
       Complain("--step must not be 0");
       throw Exit{kExitBadInput};
     }
+    CheckSampleCount(range.from, range.to, range.step, "--from/--to/--step");
     const CouplerCurve c = TraceCurve(m, point, range);
     Table t;
     t.columns = {m.drive.input_name, "x", "y", "dx", "dy", "arc", "curvature"};
@@ -45,7 +48,7 @@ void Run(const Args& args) {
       j["point"] = m.links[point.link].name + "." + m.links[point.link].points[point.point].name;
       j["complete"] = c.message.empty();
       if (!c.message.empty()) j["message"] = c.message;
-      WriteOutput(args.out, j.dump(1) + "\n");
+      WriteOutput(args.out, JsonText(j));
     } else {
       WriteOutput(args.out, t.ToCsv());
     }
@@ -66,6 +69,7 @@ void Run(const Args& args) {
   }
   std::optional<double> reference;
   if (!args.at.empty()) reference = DegToRad(ParseNumberFlag("--at", args.at));
+  CheckSampleCount(reference.value_or(0) - kPi, reference.value_or(0) + kPi, resolution, "--at/--resolution", kStraightSearchSamples);
   StraightStretch s;
   if (!args.stretch.empty()) {
     const auto colon = args.stretch.find(':');
@@ -73,8 +77,10 @@ void Run(const Args& args) {
       Complain("--stretch A:E needs the form A:E (degrees) and a reference point --at");
       throw Exit{kExitBadInput};
     }
-    s = StretchBand(m, point, *reference, DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(0, colon))),
-                    DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(colon + 1))), resolution);
+    const double a = DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(0, colon))),
+                 e = DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(colon + 1)));
+    CheckSampleCount(std::min({a, e, *reference}), std::max({a, e, *reference}), resolution, "--stretch/--at/--resolution");
+    s = StretchBand(m, point, *reference, a, e, resolution);
   } else {
     const double qg = ParseNumberFlag("--qg", args.qg);
     if (qg <= 0) {
@@ -98,7 +104,7 @@ void Run(const Args& args) {
   sum.Add("L", s.length, "length");
   sum.Add("delta_y", s.band, "length");
   sum.Add("Q_G", s.qg, "1");
-  WriteOutput(args.out, args.format == "json" ? sum.ToJson().dump(1) + "\n" : sum.ToCsv());
+  WriteOutput(args.out, args.format == "json" ? JsonText(sum.ToJson()) : sum.ToCsv());
 }
 
 }  // namespace

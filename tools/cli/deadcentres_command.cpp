@@ -34,6 +34,7 @@ void Run(const Args& args) {
     Complain("--step must not be 0");
     throw Exit{kExitBadInput};
   }
+  CheckSampleCount(range.from, range.to, range.step, "--from/--to/--step");
   const DeadCentreReport r = FindDeadCentres(m, output, 0, range);
   if (r.points.empty() && !r.message.empty()) {
     Complain(args.file + ": " + r.message);
@@ -66,7 +67,7 @@ void Run(const Args& args) {
     nlohmann::json j = {{"mechanism", m.name}, {"output", name}, {"input_unit", in_unit}, {"output_unit", out_unit},
                         {"dead_centres", points}, {"classified", r.classified}, {"summary", summary.ToJson()}};
     if (!r.message.empty()) j["message"] = r.message;
-    WriteOutput(args.out, j.dump(1) + "\n");
+    WriteOutput(args.out, JsonText(j));
   } else if (args.summary) {
     WriteOutput(args.out, summary.ToCsv());
   } else {

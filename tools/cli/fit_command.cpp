@@ -71,8 +71,8 @@ void Run(const Args& args) {
     WriteOutput(args.yaml, WriteMechanismYaml(fitted, "Fitted by koppel synth fit from " + args.problem + "; cost " + fmt::format("{:.3g}", r.cost),
                                               problem.base.sweep, values));
   }
-  WriteOutput(args.out, args.format == "json" ? s.ToJson().dump(1) + "\n" : s.ToCsv());
-  std::cerr << fmt::format("koppel synth fit: cost {:.3g} after {} iterations (start {})\n", r.cost, r.iterations, r.start_index + 1);
+  WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv());
+  if (!args.quiet) std::cerr << fmt::format("koppel synth fit: cost {:.3g} after {} iterations (start {})\n", r.cost, r.iterations, r.start_index + 1);
 }
 
 }  // namespace

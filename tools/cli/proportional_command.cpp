@@ -31,6 +31,7 @@ void Run(const Args& args) {
   }
   std::optional<double> at;
   if (!args.at.empty()) at = in(ParseNumberFlag("--at", args.at));
+  CheckSampleCount(from, to, in(ParseNumberFlag("--resolution", args.resolution)), "--from/--to/--resolution");
   const Proportionality p = ProportionalityDeviation(m, output, from, to, length, at, in(ParseNumberFlag("--resolution", args.resolution)));
   if (!p.ok) {
     Complain(args.file + ": " + p.message);
@@ -48,7 +49,7 @@ void Run(const Args& args) {
   s.Add("reference_length", length, "length");
   s.Add("Q_P", p.qp, angle ? "1/rad" : "1/length");
   s.Add("chord_deviation", p.chord_deviation, "length");
-  WriteOutput(args.out, args.format == "json" ? s.ToJson().dump(1) + "\n" : s.ToCsv());
+  WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv());
 }
 
 }  // namespace

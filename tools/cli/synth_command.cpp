@@ -40,6 +40,7 @@ std::vector<double> Range(const std::string& flag, const std::string& text) {
     Complain(flag + ": needs FROM <= TO and STEP > 0");
     throw Exit{kExitBadInput};
   }
+  CheckSampleCount(a, b, d, flag + " FROM:TO:STEP", kChartCells);
   std::vector<double> values;
   for (int i = 0; a + i * d <= b + 1e-9 * d; ++i) values.push_back(a + i * d);
   return values;
@@ -53,7 +54,7 @@ double Required(const std::string& flag, const std::string& text) {
   return ParseNumberFlag(flag, text);
 }
 
-void Emit(const Args& args, const Summary& s) { WriteOutput(args.out, args.format == "json" ? s.ToJson().dump(1) + "\n" : s.ToCsv()); }
+void Emit(const Args& args, const Summary& s) { WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv()); }
 
 void RunDeadCentre(const Args& args) {
   CheckFormat(args.format);
@@ -131,6 +132,7 @@ void RunChart(const Args& args) {
   if (args.type == "crank-rocker") {
     const auto phis = Range("--phi0", args.phi0.empty() ? "150:210:2" : args.phi0);
     const auto psis = Range("--psi0", args.psi0.empty() ? "20:100:2" : args.psi0);
+    CheckCount(static_cast<double>(phis.size()) * static_cast<double>(psis.size()), "--phi0/--psi0 steps", kChartCells);
     t.columns = {"phi0", "psi0", "beta", "mu_min", "l1", "l2", "l3", "l4"};
     int done = 0;
     for (double phi : phis) {
@@ -154,7 +156,7 @@ void RunChart(const Args& args) {
     throw Exit{kExitBadInput};
   }
   if (!args.quiet) std::cerr << "\n";
-  WriteOutput(args.out, args.format == "json" ? t.ToJson().dump(1) + "\n" : t.ToCsv());
+  WriteOutput(args.out, args.format == "json" ? JsonText(t.ToJson()) : t.ToCsv());
 }
 
 void RunMzc(const Args& args) {

@@ -9,7 +9,7 @@ seconds="${1:-60}"
 cd "$(dirname "$0")/../.."
 root="$PWD"
 build="${KOPPEL_FUZZ_BUILD:-$root/build-fuzz}"
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DKOPPEL_FUZZ=ON -DBUILD_TESTING=OFF ${CMAKE_CXX_COMPILER_LAUNCHER:+-DCMAKE_CXX_COMPILER_LAUNCHER=$CMAKE_CXX_COMPILER_LAUNCHER} >/dev/null
 nice -n 15 cmake --build "$build" --target koppel_mechanism_fuzz -j2 >/dev/null
 corpus="$build/corpus"

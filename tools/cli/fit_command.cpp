@@ -28,6 +28,7 @@ void Run(const Args& args) {
     for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
     throw Exit{kExitBadInput};
   }
+  NoteInputFile(args.problem), NoteInputFile(problem.mechanism_path);  // -o/--yaml never replace them
   problem.options.quiet = args.quiet;
   const FitReport r = Fit(problem.builder, problem.parameters, problem.targets, problem.options);
   if (!r.ok) {

@@ -103,6 +103,19 @@ TEST_CASE("-o refuses the mechanism file being read, also through another name",
     CHECK_THAT(r.err, Catch::Contains("input file"));
   }
   CHECK(test::ReadText(input) == test::ReadText(Entry()));
+
+  // synth fit reads a problem and the mechanism it names: --yaml must not replace either
+  const std::string mechanism = dir.Write("mzc.yaml", test::ReadText(test::CatalogEntryPath("mzc-crank-rocker")));
+  std::string problem = test::ReadText(std::string(KOPPEL_TEST_DATA_DIR) + "/fit-mzc-precision-points.yaml");
+  problem.replace(problem.find("../../catalog/entries/mzc-crank-rocker.yaml"), 43, "mzc.yaml");
+  const std::string problem_path = dir.Write("problem.yaml", problem);
+  for (const std::string& out : {mechanism, problem_path}) {
+    const test::RunResult r = test::RunKoppel("synth fit " + problem_path + " --quiet --yaml " + out);
+    INFO(out << "\n" << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains("input file"));
+  }
+  CHECK(test::ReadText(mechanism) == test::ReadText(test::CatalogEntryPath("mzc-crank-rocker")));
 }
 
 TEST_CASE("-o into a folder where no file can be made exits 2 and names the folder", "[cli][output]") {

@@ -83,7 +83,7 @@ CheckOutcome EvaluateFigure(const MechanismFile& file, const CatalogCard& card, 
   const bool angle_input = m.InputIsAngle();
   const int output = m.FindOutput(f.output);
   if (output < 0) Fail(file, f, "names no output '" + f.output + "'");
-  const bool angle_output = m.outputs[output].IsAngle();
+  const bool angle_output = m.OutputIsAngle(output);
   auto input_internal = [&](double v) { return angle_input ? DegToRad(v) : v; };
   // koppel's value in the figure's unit: degrees when the figure is an angle given in degrees
   auto in_unit = [&](double v) { return f.unit == "deg" ? RadToDeg(v) : v; };

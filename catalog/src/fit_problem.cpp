@@ -105,8 +105,7 @@ FitProblem ReadFitProblem(const std::string& path) {
         const YAML::Node v = r.Require(t, "value", tpath);
         if (v.IsDefined() && !v.IsNull()) {
           const double value = r.Number(v, Child(tpath, "value")).value_or(0);
-          const Output& o = m.outputs[target.output];
-          const bool angle_out = o.IsAngle() || (o.kind == OutputKind::kJoint && m.joints[o.joint].type == JointType::kRevolute);
+          const bool angle_out = m.OutputIsAngle(target.output);
           target.value = angle_out ? DegToRad(value) : value;
         }
       }

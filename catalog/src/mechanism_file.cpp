@@ -314,7 +314,7 @@ class MechanismReader {
         continue;
       }
       if (const YAML::Node z = e.value["zero"]; z.IsDefined()) {
-        const bool angle = o.IsAngle() || (o.kind == OutputKind::kJoint && o.joint >= 0 && m_.joints[o.joint].type == JointType::kRevolute);
+        const bool angle = IsAngleOutput(m_, o);
         if (!angle || o.kind == OutputKind::kTransmissionAngle) {
           r_.Error(z, Child(path, "zero"), owner + ": only a joint angle, link angle or direction has a zero");
         } else if (auto v = r_.Number(z, Child(path, "zero"))) {

@@ -23,9 +23,19 @@ bool PointRefValid(const Mechanism& m, const PointRef& ref) {
 
 int Link::FindPoint(const std::string& point_name) const { return FindByName(points, point_name); }
 
-bool Output::IsAngle() const {
-  return kind == OutputKind::kLinkAngle || kind == OutputKind::kDirection ||
-         kind == OutputKind::kTransmissionAngle;
+bool Mechanism::OutputIsAngle(int output) const { return IsAngleOutput(*this, outputs[output]); }
+
+bool IsAngleOutput(const Mechanism& m, const Output& o) {
+  switch (o.kind) {
+    case OutputKind::kJoint:
+      return o.joint >= 0 && o.joint < static_cast<int>(m.joints.size()) && m.joints[o.joint].type == JointType::kRevolute;
+    case OutputKind::kLinkAngle:
+    case OutputKind::kDirection:
+    case OutputKind::kTransmissionAngle: return true;
+    case OutputKind::kPoint:
+    case OutputKind::kDistance: return false;
+  }
+  return false;
 }
 
 int Mechanism::FindLink(const std::string& link_name) const { return FindByName(links, link_name); }
@@ -142,7 +152,9 @@ double LengthScale(const Mechanism& m) {
   for (const Link& link : m.links) {
     for (const NamedPoint& p : link.points) scale = std::max(scale, p.local.norm());
   }
-  return std::max(scale, 1e-3);
+  // No floor: a mechanism drawn in micrometres or kilometres keeps its own scale, so that every
+  // tolerance built on it gives the same dimensionless results.
+  return scale > 0.0 ? scale : 1.0;
 }
 
 }  // namespace koppel

@@ -32,7 +32,7 @@ TEST_CASE("analyze prints the documented columns for the three catalog files", "
   REQUIRE(sc.exit_code == 0);
   const auto lines = Lines(sc.out);
   REQUIRE(lines.size() == 362);  // header + 0..360 step 1
-  CHECK(lines[0] == "phi,s,s_d1,s_d2,mu,mu_d1,mu_d2");
+  CHECK(lines[0] == "phi,s,s_d1,s_d2,mu,mu_d1,mu_d2,singular");
   // row phi = 0 (e = 0.8): s = l1 (sin 0 + cos psi / lambda), sin psi = -(lambda + eps) (seed 000)
   const auto row0 = Numbers(lines[1]);
   CHECK(row0[0] == 0.0);

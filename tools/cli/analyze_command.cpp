@@ -1,20 +1,19 @@
 // koppel analyze: a sweep of the drive with every declared output and its transfer functions.
 #include "commands.hpp"
 #include "common.hpp"
+#include "sweep_report.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
 
 #include <fmt/core.h>
 
-#include <iostream>
-
 namespace koppel::cli {
 namespace {
 
 struct AnalyzeArgs {
   std::string file;
-  std::string from, to, step;
+  std::string from, to, step, at_branch_point;
   std::vector<std::string> sets;
   std::string format = "csv";
   std::string out;
@@ -29,6 +28,78 @@ std::string DerivativeUnit(bool output_is_angle, bool input_is_angle, int k) {
   return value + "/" + per + (k > 1 ? "^" + std::to_string(k) : "");
 }
 
+// The table of a sweep: the input, every output's derivatives 0..order, and the singular flag.
+// A transfer function that cannot be computed at a row (above the row's valid order) is empty
+// in CSV and null in JSON, never a number.
+struct SweepTable {
+  std::vector<std::string> columns, units;
+  std::vector<int> order_of_column;  // derivative order of each column (-1: input, flag)
+  std::vector<bool> angle_value;     // a column of angle values: printed in degrees
+};
+
+SweepTable Layout(const Mechanism& m, int order) {
+  SweepTable t;
+  const bool angle_input = m.InputIsAngle();
+  t.columns.push_back(m.drive.input_name);
+  t.units.push_back(angle_input ? "deg" : "length");
+  t.order_of_column.push_back(-1);
+  t.angle_value.push_back(false);
+  for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
+    const Output& out = m.outputs[o];
+    const bool angle = m.OutputIsAngle(o);
+    for (int c = 0; c < out.Components(); ++c) {
+      const std::string base = out.Components() == 2 ? out.name + (c == 0 ? "_x" : "_y") : out.name;
+      for (int k = 0; k <= order; ++k) {
+        t.columns.push_back(k == 0 ? base : base + "_d" + std::to_string(k));
+        t.units.push_back(DerivativeUnit(angle, angle_input, k));
+        t.order_of_column.push_back(k);
+        t.angle_value.push_back(k == 0 && angle);
+      }
+    }
+  }
+  t.columns.push_back("singular");
+  t.units.push_back("1");
+  t.order_of_column.push_back(-1);
+  t.angle_value.push_back(false);
+  return t;
+}
+
+std::string ToCsv(const Mechanism& m, const SweepTable& t, const SweepResult& r) {
+  std::string out;
+  for (size_t c = 0; c < t.columns.size(); ++c) out += (c ? "," : "") + t.columns[c];
+  out += "\n";
+  for (size_t i = 0; i < r.inputs.size(); ++i) {
+    out += FormatNumber(m.InputIsAngle() ? RadToDeg(r.inputs[i]) : r.inputs[i]);
+    for (int c = 0; c < r.outputs.cols(); ++c) {
+      const double v = r.outputs(i, c);
+      out += ",";
+      if (t.order_of_column[c + 1] <= r.valid_order[i]) out += FormatNumber(t.angle_value[c + 1] ? RadToDeg(v) : v);
+    }
+    out += r.singular[i] ? ",1\n" : ",0\n";
+  }
+  return out;
+}
+
+nlohmann::json ToJson(const Mechanism& m, const SweepTable& t, const SweepResult& r) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (size_t i = 0; i < r.inputs.size(); ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    row.push_back(m.InputIsAngle() ? RadToDeg(r.inputs[i]) : r.inputs[i]);
+    for (int c = 0; c < r.outputs.cols(); ++c) {
+      const double v = t.angle_value[c + 1] ? RadToDeg(r.outputs(i, c)) : r.outputs(i, c);
+      FormatNumber(v);  // the same refusal of non-finite numbers as CSV
+      if (t.order_of_column[c + 1] <= r.valid_order[i]) {
+        row.push_back(v);
+      } else {
+        row.push_back(nullptr);
+      }
+    }
+    row.push_back(static_cast<int>(r.singular[i]));
+    rows.push_back(row);
+  }
+  return {{"columns", t.columns}, {"units", t.units}, {"rows", rows}};
+}
+
 void RunAnalyze(const AnalyzeArgs& args) {
   CheckFormat(args.format);
   const MechanismFile file = LoadMechanism(args.file, args.sets);
@@ -36,18 +107,9 @@ void RunAnalyze(const AnalyzeArgs& args) {
   const bool angle_input = m.InputIsAngle();
   // The YAML and the command line give the input in degrees (R drive) or lengths (P drive).
   auto to_internal = [&](double v) { return angle_input ? DegToRad(v) : v; };
-  auto to_display = [&](double v) { return angle_input ? RadToDeg(v) : v; };
   const double from = args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from);
   const double to = args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to);
   const double step = args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step);
-  if (step == 0.0) {
-    Complain("--step must not be 0");
-    throw Exit{kExitBadInput};
-  }
-  if (args.order < 0 || args.order > kMaxOrder) {
-    Complain(fmt::format("--order must be between 0 and {}", kMaxOrder));
-    throw Exit{kExitBadInput};
-  }
   CheckSampleCount(from, to, step, "--from/--to/--step");
 
   SweepOptions options;
@@ -55,57 +117,32 @@ void RunAnalyze(const AnalyzeArgs& args) {
   options.to = to_internal(to);
   options.step = to_internal(step);
   options.order = args.order;
+  options.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
+  std::string why;
+  if (!options.IsValid(&why)) {
+    Complain("--from/--to/--step/--order: " + why);
+    throw Exit{kExitBadInput};
+  }
   const SweepResult result = Sweep(m, options);
-
-  // columns: input, then per output component: value, d1 .. d_order
-  Table table;
-  std::vector<std::string> units;
-  table.columns.push_back(m.drive.input_name);
-  units.push_back(angle_input ? "deg" : "length");
-  std::vector<bool> column_is_angle_value;
-  for (const Output& o : m.outputs) {
-    for (int c = 0; c < o.Components(); ++c) {
-      const std::string base = o.Components() == 2 ? o.name + (c == 0 ? "_x" : "_y") : o.name;
-      for (int k = 0; k <= result.order; ++k) {
-        table.columns.push_back(k == 0 ? base : base + "_d" + std::to_string(k));
-        units.push_back(DerivativeUnit(o.IsAngle(), angle_input, k));
-        column_is_angle_value.push_back(k == 0 && o.IsAngle());
-      }
-    }
-  }
-  for (size_t i = 0; i < result.inputs.size(); ++i) {
-    std::vector<double> row;
-    row.reserve(table.columns.size());
-    row.push_back(to_display(result.inputs[i]));
-    for (int c = 0; c < result.outputs.cols(); ++c) {
-      const double v = result.outputs(i, c);
-      row.push_back(column_is_angle_value[c] ? RadToDeg(v) : v);
-    }
-    table.rows.push_back(std::move(row));
-  }
+  const SweepTable table = Layout(m, options.order);
 
   if (args.format == "csv") {
-    WriteOutput(args.out, table.ToCsv());
+    WriteOutput(args.out, ToCsv(m, table, result));
   } else {
-    nlohmann::json j = table.ToJson();
+    nlohmann::json j = ToJson(m, table, result);
     j["mechanism"] = m.name;
     j["file"] = file.path;
     j["input"] = {{"name", m.drive.input_name}, {"unit", angle_input ? "deg" : "length"},
                   {"from", from}, {"to", to}, {"step", step}};
-    j["order"] = result.order;
-    j["units"] = units;
+    j["order"] = options.order;
     j["complete"] = result.complete();
     j["status"] = ToString(result.status);
-    if (!result.complete()) {
-      j["message"] = result.message;
-      j["stopped_at"] = to_display(result.stopped_at);
-    }
+    j.update(SweepEventsJson(m, result));
+    if (!result.complete()) j["message"] = result.message;
     WriteOutput(args.out, JsonText(j));
   }
-  if (!result.complete()) {
-    Complain(args.file + ": " + result.message);
-    throw Exit{kExitFailed};
-  }
+  ReportSweep(args.file, m, result);
+  if (!result.complete()) throw Exit{kExitFailed};
 }
 
 }  // namespace
@@ -118,18 +155,23 @@ void AddAnalyzeCommand(CLI::App& app) {
       "Columns: the input (degrees for an R drive, length for a P drive), then for each output NAME:\n"
       "NAME, NAME_d1, NAME_d2 ... (d_k = k-th derivative with respect to the input in radians, or in\n"
       "length units for a P drive); a point output K gives K_x, K_y and their derivatives. Angle\n"
-      "outputs are printed in degrees; their derivatives in radians. Derivatives are exact (Taylor\n"
-      "series through the constraint equations), not differences of positions.\n"
-      "The sweep follows the assembly branch chosen by the file's `assembly` hint and stops, with\n"
-      "exit code 1 and a message, where the mechanism cannot be driven further (dead centre of the\n"
-      "drive, not assemblable).\n"
+      "outputs (R joints, links, directions, transmission angles) are printed in degrees; their\n"
+      "derivatives in radians. Derivatives are exact (Taylor series through the constraint equations),\n"
+      "not differences of positions. The last column, singular, is 1 where the pose is a singular\n"
+      "position (reciprocal condition of the Jacobian below 1e-6): there the transfer functions up to 3rd\n"
+      "order are the branch's limits and higher orders are left empty.\n"
+      "The sweep starts at the file's `assembly` hint and follows that branch outward to both ends of the\n"
+      "range: through branch points (see --at-branch-point), up to limit points (dead centres of the\n"
+      "drive). It prints every row it reaches; when part of the range cannot be driven, it names the gaps\n"
+      "and the singular points that bound them on stderr and exits 1.\n"
       "Example: koppel analyze catalog/entries/slider-crank-offset.yaml --set e=0 --step 5");
   cmd->add_option("file", args->file, "Mechanism YAML file")->required();
   cmd->add_option("--from", args->from, "First input value [deg or length] (default: the file's sweep.from, else 0)");
   cmd->add_option("--to", args->to, "Last input value [deg or length] (default: the file's sweep.to, else 360)");
   cmd->add_option("--step", args->step, "Input step [deg or length] (default: the file's sweep.step, else 1)");
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE (a formula; repeatable)");
-  cmd->add_option("--order", args->order, "Highest transfer-function order in the table, 0..8 (default 2)");
+  cmd->add_option("--order", args->order, fmt::format("Highest transfer-function order in the table, 0..{} (default 2)", kMaxOrder));
+  AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_option("--format", args->format, "csv (default) or json");
   cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout");
   cmd->callback([args] { RunAnalyze(*args); });

@@ -57,10 +57,10 @@ struct CountLimit {
   const char* name;  // the constant, e.g. "kMaxSweepSamples"
   const char* what;  // "samples per sweep"
 };
-inline constexpr CountLimit kSweepSamples{kMaxSweepSamples, "kMaxSweepSamples", "samples per sweep"};
-inline constexpr CountLimit kStraightSearchSamples{kMaxStraightSearchSamples, "kMaxStraightSearchSamples",
+inline constexpr CountLimit kSweepSamples{static_cast<double>(kMaxSweepSamples), "kMaxSweepSamples", "samples per sweep"};
+inline constexpr CountLimit kStraightSearchSamples{static_cast<double>(kMaxStraightSearchSamples), "kMaxStraightSearchSamples",
                                                    "samples per straight-line search"};
-inline constexpr CountLimit kChartCells{kMaxChartCells, "kMaxChartCells", "cells per chart"};
+inline constexpr CountLimit kChartCells{static_cast<double>(kMaxChartCells), "kMaxChartCells", "cells per chart"};
 
 // The one sample-count check of every sweeping command, before anything is allocated: a range
 // from..to by step (any one unit) must be finite, its step non-zero and not lost in the

@@ -20,9 +20,7 @@ void Run(const Args& args) {
   const MechanismFile file = LoadMechanism(args.file, args.sets);
   const Mechanism& m = file.mechanism;
   const int output = ResolveScalarOutput(m, args.output);
-  const bool angle_in = m.InputIsAngle(), angle_out = m.outputs[output].IsAngle() ||
-                                                      (m.outputs[output].kind == OutputKind::kJoint &&
-                                                       m.joints[m.outputs[output].joint].type == JointType::kRevolute);
+  const bool angle_in = m.InputIsAngle(), angle_out = m.OutputIsAngle(output);
   auto in = [&](double v) { return angle_in ? DegToRad(v) : v; };
   auto in_display = [&](double v) { return angle_in ? RadToDeg(v) : v; };
   auto out_display = [&](double v) { return angle_out ? RadToDeg(v) : v; };

@@ -41,6 +41,9 @@ CouplerCurve TraceCurve(const Mechanism& m, const PointRef& point, const SweepOp
   CouplerCurve curve;
   curve.status = sweep.status;
   curve.message = sweep.message;
+  curve.singular = sweep.singular;
+  curve.gaps = sweep.gaps;
+  curve.singular_points = sweep.singular_points;
   const int n = static_cast<int>(sweep.inputs.size());
   for (int i = 0; i < n; ++i) {
     // columns: x, x', x'', y, y', y''

@@ -60,9 +60,7 @@ DeadCentreReport FindDeadCentres(const Mechanism& m, int output, int component, 
     report.status = sweep.status;
     report.message = sweep.message;  // dead centres are still searched over the part swept
   }
-  int column = 0;
-  for (int o = 0; o < output; ++o) column += m.outputs[o].Components() * 3;
-  column += component * 3;
+  const int column = OutputColumn(m, output, component, 2);
   const int n = static_cast<int>(sweep.inputs.size());
   const double resolution = std::abs(options.step);
   for (int i = 0; i + 1 < n; ++i) {

@@ -16,9 +16,7 @@ StationaryPoint RefineStationary(const Mechanism& m, int output, int component, 
     result.message = "the starting pose does not solve";
     return result;
   }
-  int column = 0;
-  for (int o = 0; o < output; ++o) column += m.outputs[o].Components() * 3;
-  column += component * 3;
+  const int column = OutputColumn(m, output, component, 2);
   std::vector<double> derivatives(solver.OutputWidth(2));
   for (int it = 0; it < options.max_iterations; ++it) {
     solver.OutputDerivatives(path.Series(2), 2, derivatives.data());
@@ -38,7 +36,7 @@ StationaryPoint RefineStationary(const Mechanism& m, int output, int component, 
       return result;
     }
     if (std::abs(step) > options.max_step) step = std::copysign(options.max_step, step);
-    const SolveReport moved = path.AdvanceTo(path.input() + step, options.max_step);
+    const WalkReport moved = path.AdvanceTo(path.input() + step, options.max_step);
     if (!moved.ok()) {
       result.message = "the branch ends before the stationary point: " + moved.message;
       return result;

@@ -50,6 +50,8 @@ PositionSolver::PositionSolver(const Mechanism& mechanism, NewtonOptions options
   q_solved_.setZero(n);
   jacobian_.resize(m, n);
   if (square_) lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+  column_scale_.setOnes(n);
+  for (int i = 2; i < n; i += 3) column_scale_(i) = 1.0 / system_.length_scale();
   q2_.resize(n);
   q8_.resize(n);
   r2_.resize(m);
@@ -63,22 +65,29 @@ void PositionSolver::Evaluate(const Eigen::VectorXd& q, double input) {
 
 bool PositionSolver::Factorize() {
   double max_pivot = 0.0, min_pivot = 0.0;
+  scaled_determinant_ = 0.0;
   if (square_ && jacobian_.rows() > 0) {
     lu_.compute(jacobian_);
     const auto& lu = lu_.matrixLU();
     int sign = static_cast<int>(lu_.permutationP().determinant());
-    min_pivot = std::abs(lu(0, 0));
+    // Partial pivoting permutes rows only, so column j of U still belongs to coordinate j and
+    // the pivots of J S are U_jj S_jj: the scaled ratio and determinant come for free.
+    double determinant = sign;
+    min_pivot = std::abs(lu(0, 0) * column_scale_(0));
     for (int i = 0; i < lu.rows(); ++i) {
-      const double d = lu(i, i);
+      const double d = lu(i, i) * column_scale_(i);
       max_pivot = std::max(max_pivot, std::abs(d));
       min_pivot = std::min(min_pivot, std::abs(d));
+      determinant *= d;
       if (d < 0) sign = -sign;
     }
     pivot_ratio_ = max_pivot > 0 ? min_pivot / max_pivot : 0.0;
+    scaled_determinant_ = determinant;
     jacobian_sign_ = pivot_ratio_ > kSingularPivotRatio ? sign : 0;
   } else {
     // Redundant constraints (more rows than coordinates): least squares through QR, no sign.
-    qr_.compute(jacobian_);
+    // Column pivoting ranks the columns by size, so scale them first to compare like with like.
+    qr_.compute(jacobian_ * column_scale_.asDiagonal());
     const auto& r = qr_.matrixR();
     const int k = std::min(r.rows(), r.cols());
     max_pivot = k > 0 ? std::abs(r(0, 0)) : 0.0;
@@ -93,7 +102,8 @@ void PositionSolver::SolveFactorized(const Eigen::VectorXd& rhs, Eigen::VectorXd
   if (square_) {
     x.noalias() = lu_.solve(rhs);
   } else {
-    x.noalias() = qr_.solve(rhs);
+    x.noalias() = qr_.solve(rhs);   // of J S: undo the column scaling
+    x.array() *= column_scale_.array();
   }
 }
 
@@ -236,28 +246,50 @@ Eigen::VectorXd PositionSolver::InitialGuess() const {
   return q;
 }
 
-SolveReport PositionSolver::Assemble(Eigen::VectorXd& q) {
-  const double input = mechanism_.hint.input;
-  const double scale = system_.length_scale();
+SolveReport PositionSolver::Assemble(Eigen::VectorXd& q) { return AssembleAt(mechanism_.hint.input, q); }
+
+SolveReport PositionSolver::AssembleAt(double input, Eigen::VectorXd& q) {
+  // The guess honours the drive at the hint's input; at another input the drive row pulls the
+  // driven link there during the least-squares phase.
   Eigen::VectorXd x = InitialGuess();
+  SolveReport report = AssembleFromGuess(input, x);
+  if (report.ok()) q = x;
+  return report;
+}
+
+SolveReport PositionSolver::AssembleFrom(double input, Eigen::VectorXd& q) {
+  Eigen::VectorXd x = q;
+  SolveReport report = AssembleFromGuess(input, x);
+  if (report.ok()) q = x;
+  return report;
+}
+
+SolveReport PositionSolver::AssembleFromGuess(double input, Eigen::VectorXd& x) {
+  const double scale = system_.length_scale();
+  // Levenberg–Marquardt in dimensionless variables: residuals over L and the scaled Jacobian
+  // J S (theta columns over L), so that a mechanism drawn in micrometres and one in kilometres
+  // take the same steps. A step dz of the scaled problem moves the coordinates by L S dz.
+  auto scaled_jacobian = [&] { return Eigen::MatrixXd(jacobian_ * column_scale_.asDiagonal()); };
   Evaluate(x, input);
   double cost = residual_.squaredNorm();
-  Eigen::MatrixXd normal = jacobian_.transpose() * jacobian_;
-  Eigen::VectorXd gradient = jacobian_.transpose() * residual_;
+  Eigen::MatrixXd j_hat = scaled_jacobian();
+  Eigen::MatrixXd normal = j_hat.transpose() * j_hat;
+  Eigen::VectorXd gradient = j_hat.transpose() * residual_ / scale;
   double lambda = 1e-3 * std::max(normal.diagonal().maxCoeff(), 1e-12);
   int it = 0;
   for (; it < kAssemblyIterations && residual_.lpNorm<Eigen::Infinity>() > kAssemblyHandover * scale; ++it) {
     Eigen::MatrixXd damped = normal;
     damped.diagonal() += lambda * (normal.diagonal().array() + 1e-9).matrix();
-    const Eigen::VectorXd dx = -damped.ldlt().solve(gradient);
-    const Eigen::VectorXd trial = x + dx;
+    const Eigen::VectorXd dz = -damped.ldlt().solve(gradient);
+    const Eigen::VectorXd trial = x + scale * column_scale_.cwiseProduct(dz);
     Evaluate(trial, input);
     const double trial_cost = residual_.squaredNorm();
     if (std::isfinite(trial_cost) && trial_cost < cost) {
       x = trial;
       cost = trial_cost;
-      normal = jacobian_.transpose() * jacobian_;
-      gradient = jacobian_.transpose() * residual_;
+      j_hat = scaled_jacobian();
+      normal = j_hat.transpose() * j_hat;
+      gradient = j_hat.transpose() * residual_ / scale;
       lambda = std::max(lambda / 3.0, 1e-15);
     } else {
       Evaluate(x, input);  // restore residual_ for the stall test and the report
@@ -282,7 +314,6 @@ SolveReport PositionSolver::Assemble(Eigen::VectorXd& q) {
   }
   SolveReport report = Correct(input, x);
   report.iterations += it;
-  if (report.ok()) q = x;
   return report;
 }
 
@@ -314,6 +345,12 @@ bool PositionSolver::Series(int order, Eigen::MatrixXd& coefficients) {
   if (coefficients.rows() != NumCoordinates() || coefficients.cols() != order + 1)
     coefficients.resize(NumCoordinates(), order + 1);
   return order <= 2 ? SeriesImpl<2>(order, coefficients) : SeriesImpl<kMaxOrder>(order, coefficients);
+}
+
+int OutputColumn(const Mechanism& m, int output, int component, int order) {
+  int column = 0;
+  for (int o = 0; o < output; ++o) column += m.outputs[o].Components() * (order + 1);
+  return column + component * (order + 1);
 }
 
 int PositionSolver::OutputWidth(int order) const {

@@ -1,165 +1,260 @@
 #include "koppel/solver/sweep.hpp"
 
+#include "koppel/core/angles.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace koppel {
 namespace {
 
+// An assembled pose with a pivot gauge above this is taken as regular without an SVD.
+constexpr double kRegularPivotRatio = 1e-3;
+
 std::string FormatInput(const Mechanism& m, double input) {
-  char buffer[64];
-  if (m.InputIsAngle()) {
-    std::snprintf(buffer, sizeof buffer, "%s = %.9g deg", m.drive.input_name.c_str(), input * 180.0 / 3.14159265358979323846);
-  } else {
-    std::snprintf(buffer, sizeof buffer, "%s = %.9g", m.drive.input_name.c_str(), input);
-  }
-  return buffer;
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "%s = %.10g", m.drive.input_name.c_str(), m.InputIsAngle() ? RadToDeg(input) : input);
+  return std::string(buffer) + (m.InputIsAngle() ? " deg" : "");
 }
+
+std::string FormatInterval(const Mechanism& m, double a, double b) {
+  char buffer[48];
+  std::snprintf(buffer, sizeof buffer, "%.10g", m.InputIsAngle() ? RadToDeg(b) : b);
+  return FormatInput(m, a) + " .. " + buffer + (m.InputIsAngle() ? " deg" : "");
+}
+
+struct Assembly {
+  Eigen::VectorXd q;
+  double input = 0.0;
+  std::string error;  // empty on success
+};
+
+// Assembles at the hint. When the hint's input is itself a singular position, the hint cannot say
+// which of the branches meeting there it means; the mechanism is then assembled a window's
+// half-width beside it (where the hint still describes the pose) and the walks cross back.
+Assembly AssembleForSweep(const Mechanism& m, PositionSolver& solver, const ContinuationOptions& options,
+                          std::vector<std::string>& notes) {
+  Assembly a;
+  a.input = m.hint.input;
+  a.q.resize(solver.NumCoordinates());
+  const SolveReport report = solver.Assemble(a.q);
+  if (report.ok() && (solver.PivotRatio() > kRegularPivotRatio || ReciprocalCondition(solver.system(), a.q) >= kSingularRowRcond))
+    return a;
+  if (!report.ok() && report.status != SolveStatus::kSingular) {
+    a.error = "cannot assemble at " + FormatInput(m, a.input) + ": " + report.message;
+    return a;
+  }
+  const double shift = options.branch_window * (m.InputIsAngle() ? 1.0 : solver.system().length_scale());
+  for (double side : {+1.0, -1.0}) {
+    Eigen::VectorXd q(solver.NumCoordinates());
+    if (!solver.AssembleAt(a.input + side * shift, q).ok()) continue;
+    if (ReciprocalCondition(solver.system(), q) < kSingularRowRcond) continue;
+    notes.push_back("the assembly input " + FormatInput(m, a.input) +
+                    " is a singular position, where the hint cannot choose between the branches that meet; "
+                    "koppel assembled at " + FormatInput(m, a.input + side * shift) +
+                    " and follows that branch (give the assembly hint at another input to choose)");
+    a.q = q;
+    a.input += side * shift;
+    return a;
+  }
+  a.error = "cannot assemble at " + FormatInput(m, a.input) + ": the pose there is singular and no regular pose was found beside it";
+  return a;
+}
+
+// The end of one outward walk.
+struct WalkEnd {
+  bool complete = true;
+  double input = 0.0;  // where it stopped (when not complete)
+  std::string message;
+};
 
 }  // namespace
 
-Continuation::Continuation(PositionSolver& solver, ContinuationOptions options)
-    : solver_(solver), options_(options) {
-  q_.resize(solver.NumCoordinates());
-  q_trial_.resize(solver.NumCoordinates());
-  predicted_.resize(solver.NumCoordinates());
-}
-
-SolveReport Continuation::Start(double input, const Eigen::VectorXd& q) {
-  q_trial_ = q;
-  SolveReport report = solver_.Correct(input, q_trial_);
-  if (report.ok()) {
-    q_ = q_trial_;
-    input_ = input;
-    series_order_ = -1;
+const char* ToString(SweepStatus status) {
+  switch (status) {
+    case SweepStatus::kNotRun: return "not run";
+    case SweepStatus::kComplete: return "complete";
+    case SweepStatus::kPartial: return "partial";
+    case SweepStatus::kNotAssemblable: return "not assemblable";
+    case SweepStatus::kInvalidOptions: return "invalid options";
   }
-  return report;
+  return "not run";
 }
 
-const Eigen::MatrixXd& Continuation::Series(int order) {
-  if (series_order_ != order) {
-    solver_.Series(order, series_);
-    series_order_ = order;
+bool SweepOptions::IsValid(std::string* why) const {
+  auto fail = [&](std::string text) {
+    if (why) *why = std::move(text);
+    return false;
+  };
+  if (!std::isfinite(from) || !std::isfinite(to)) return fail("the sweep limits must be finite numbers");
+  if (!std::isfinite(step) || step == 0.0) return fail("the step must be a finite number other than 0");
+  if (order < 0 || order > kMaxOrder) return fail("the order must lie between 0 and " + std::to_string(kMaxOrder));
+  if (SampleCount(from, to, step) > static_cast<double>(kMaxSweepSamples))
+    return fail("the range and step ask for more than " + std::to_string(kMaxSweepSamples) + " samples");
+  return continuation.IsValid(why);
+}
+
+double SampleCount(double from, double to, double step) {
+  if (step == 0.0) return 1.0;
+  return std::floor(std::abs(to - from) / std::abs(step) + 1e-9) + 1.0;
+}
+
+std::string SweepResult::Brief() const {
+  std::string brief = std::string(ToString(status)) + ": " + std::to_string(inputs.size()) + " of " +
+                      std::to_string(requested_samples) + " samples";
+  int limits = 0, branches = 0, flagged = 0;
+  for (const SingularPoint& p : singular_points) (p.kind == SingularKind::kLimitPoint ? limits : branches)++;
+  for (std::uint8_t s : singular) flagged += s;
+  if (limits) brief += ", " + std::to_string(limits) + " limit point" + (limits > 1 ? "s" : "");
+  if (branches) brief += ", " + std::to_string(branches) + " branch point" + (branches > 1 ? "s" : "");
+  if (flagged) brief += ", " + std::to_string(flagged) + " singular row" + (flagged > 1 ? "s" : "");
+  if (!gaps.empty()) brief += ", " + std::to_string(gaps.size()) + " gap" + (gaps.size() > 1 ? "s" : "");
+  return brief;
+}
+
+SweepResult Sweep(const Mechanism& m, const SweepOptions& options) {
+  SweepResult result;
+  result.order = options.order;
+  std::string why;
+  if (!options.IsValid(&why)) {
+    result.status = SweepStatus::kInvalidOptions;
+    result.message = why;
+    return result;
   }
-  return series_;
-}
+  PositionSolver solver(m);
+  const int n = solver.NumCoordinates();
+  const int samples = static_cast<int>(SampleCount(options.from, options.to, options.step));
+  const double step = options.to >= options.from ? std::abs(options.step) : -std::abs(options.step);
+  result.requested_samples = samples;
 
-SolveReport Continuation::AdvanceTo(double target, double max_step) {
-  const double scale = solver_.system().length_scale();
-  const double min_step = options_.min_step_fraction * max_step;
-  double step = std::min(max_step, std::abs(target - input_));
-  SolveReport last;
-  last.status = SolveStatus::kConverged;
-  bool sign_flipped = false;
-  while (input_ != target) {
-    const double remaining = target - input_;
-    const double h = std::copysign(std::min(step, std::abs(remaining)), remaining);
-    const double next = (std::abs(remaining) <= step) ? target : input_ + h;
-    // predictor: second-order Taylor step along the branch
-    const Eigen::MatrixXd& c = Series(std::max(series_order_, 2));
-    q_trial_ = c.col(0) + h * c.col(1) + (h * h) * c.col(2);
-    const int sign_before = solver_.JacobianSign();
-    predicted_ = q_trial_;  // a member: no allocation inside a sweep
-    SolveReport report = solver_.Correct(next, q_trial_);
-    const bool flipped = report.ok() && sign_before != 0 && solver_.JacobianSign() != sign_before;
-    const bool accepted = report.ok() && !flipped && report.iterations <= options_.max_corrector_iterations &&
-                          (q_trial_ - predicted_).lpNorm<Eigen::Infinity>() <= options_.max_correction * scale;
-    if (accepted) {
-      q_ = q_trial_;
-      input_ = next;
-      series_order_ = -1;
-      step = std::min(max_step, 2.0 * step);
-      continue;
+  const Assembly assembly = AssembleForSweep(m, solver, options.continuation, result.notes);
+  if (!assembly.error.empty()) {
+    result.status = SweepStatus::kNotAssemblable;
+    result.message = assembly.error;
+    result.reached = {m.hint.input, m.hint.input};
+    result.gaps.push_back({options.from, options.to});
+    return result;
+  }
+
+  const int width = solver.OutputWidth(options.order);
+  Table outputs(samples, width), poses(samples, n);
+  std::vector<std::uint8_t> done(samples, 0), singular(samples, 0);
+  std::vector<std::int8_t> valid(samples, static_cast<std::int8_t>(options.order));
+  // Samples at or above the assembly input are reached walking up, the others walking down; each
+  // walk visits its samples outward from the assembly.
+  std::vector<int> up, down;
+  up.reserve(samples);
+  down.reserve(samples);
+  for (int i = 0; i < samples; ++i) (options.from + i * step >= assembly.input ? up : down).push_back(i);
+  auto by_input = [&](bool ascending) {
+    return [&, ascending](int a, int b) { return ascending == (step > 0) ? a < b : a > b; };
+  };
+  std::sort(up.begin(), up.end(), by_input(true));
+  std::sort(down.begin(), down.end(), by_input(false));
+
+  const int derivative_order = std::max(options.order, 2);
+  auto walk = [&](const std::vector<int>& indices) {
+    WalkEnd end;
+    Continuation path(solver, options.continuation);
+    path.Start(assembly.input, assembly.q);
+    for (int i : indices) {
+      const WalkReport report = path.AdvanceTo(options.from + i * step, std::numeric_limits<double>::infinity());
+      if (!report.ok()) {
+        end = {false, report.input, report.message};
+        break;
+      }
+      const Eigen::MatrixXd& coefficients = path.Series(derivative_order);
+      solver.OutputDerivatives(coefficients, options.order, outputs.row(i).data());
+      valid[i] = static_cast<std::int8_t>(std::min(path.ValidOrder(), options.order));
+      if (valid[i] < options.order) {
+        // transfer functions the pose cannot give are zeroed; valid_order tells the reader
+        for (int column = 0; column < width; ++column) {
+          if (column % (options.order + 1) > valid[i]) outputs(i, column) = 0.0;
+        }
+      }
+      singular[i] = path.AtSingularPose() ? 1 : 0;
+      poses.row(i) = path.q().transpose();
+      done[i] = 1;
     }
-    sign_flipped |= flipped;
-    last = report;
-    // restore the factorisation at the current pose, then try a shorter step
-    q_trial_ = q_;
-    solver_.Correct(input_, q_trial_);
-    series_order_ = -1;
-    step *= 0.5;
-    if (step < min_step) {
-      SolveReport failure;
-      const bool singular = sign_flipped || last.status == SolveStatus::kSingular || solver_.PivotRatio() < 1e-4;
-      failure.status = singular ? SolveStatus::kSingular : SolveStatus::kDidNotConverge;
-      failure.residual_norm = last.residual_norm;
-      failure.iterations = last.iterations;
-      failure.message = singular ? "the mechanism reaches a singular position (the Jacobian loses rank: a dead centre "
-                                   "with respect to the drive, or a branch point); it cannot be driven past it"
-                                 : "no pose could be found beyond this input (" + last.message + ")";
-      return failure;
-    }
+    result.singular_points.insert(result.singular_points.end(), path.singular_points().begin(), path.singular_points().end());
+    return end;
+  };
+  const WalkEnd up_end = walk(up);
+  const WalkEnd down_end = walk(down);
+  std::sort(result.singular_points.begin(), result.singular_points.end(),
+            [](const SingularPoint& a, const SingularPoint& b) { return a.input < b.input; });
+
+  // the drivable part of the range, and the gaps around it
+  const double low = std::min(options.from, options.to), high = std::max(options.from, options.to);
+  const double reached_low = down_end.complete ? std::min(low, assembly.input) : down_end.input;
+  const double reached_high = up_end.complete ? std::max(high, assembly.input) : up_end.input;
+  result.reached = {reached_low, reached_high};
+  std::vector<InputInterval> gaps;  // ascending
+  if (reached_low > low) gaps.push_back({low, std::min(reached_low, high)});
+  if (reached_high < high) gaps.push_back({std::max(reached_high, low), high});
+  if (gaps.size() == 2 && gaps[0].to >= gaps[1].from) gaps = {{low, high}};
+  if (step < 0) {
+    std::reverse(gaps.begin(), gaps.end());
+    for (InputInterval& g : gaps) std::swap(g.from, g.to);
   }
-  return last.ok() ? last : SolveReport{SolveStatus::kConverged, 0.0, 0, -1, ""};
+  result.gaps = gaps;
+
+  // the computed rows, in sweep order
+  int count = 0;
+  for (int i = 0; i < samples; ++i) count += done[i];
+  result.outputs.resize(count, width);
+  result.poses.resize(count, n);
+  result.inputs.reserve(count);
+  result.singular.reserve(count);
+  result.valid_order.reserve(count);
+  for (int i = 0, row = 0; i < samples; ++i) {
+    if (!done[i]) continue;
+    result.inputs.push_back(options.from + i * step);
+    result.outputs.row(row) = outputs.row(i);
+    result.poses.row(row) = poses.row(i);
+    result.singular.push_back(singular[i]);
+    result.valid_order.push_back(valid[i]);
+    ++row;
+  }
+
+  if (count == samples) {
+    result.status = SweepStatus::kComplete;
+    return result;
+  }
+  result.status = SweepStatus::kPartial;
+  std::string text = std::to_string(samples - count) + " of " + std::to_string(samples) + " samples lie outside the drivable part of the branch (";
+  for (size_t g = 0; g < result.gaps.size(); ++g) text += (g ? "; " : "") + FormatInterval(m, result.gaps[g].from, result.gaps[g].to);
+  text += ")";
+  for (const WalkEnd* end : {&up_end, &down_end}) {
+    if (!end->complete) text += "; " + end->message;
+  }
+  result.message = text;
+  return result;
 }
 
 InputRange DrivableRange(const Mechanism& mechanism, double span, double step) {
   InputRange range;
-  SweepOptions options;
-  options.order = 0;
-  options.step = step;
-  options.from = mechanism.hint.input;
-  options.to = mechanism.hint.input + span;
-  const SweepResult up = Sweep(mechanism, options);
-  range.high = up.complete() ? options.to : up.stopped_at;
-  range.high_limited = !up.complete();
-  options.to = mechanism.hint.input - span;
-  const SweepResult down = Sweep(mechanism, options);
-  range.low = down.complete() ? options.to : down.stopped_at;
-  range.low_limited = !down.complete();
-  return range;
-}
-
-int SampleCount(double from, double to, double step) {
-  if (step == 0.0) return 1;
-  const double n = std::floor(std::abs(to - from) / std::abs(step) + 1e-9);
-  return static_cast<int>(n) + 1;
-}
-
-SweepResult Sweep(const Mechanism& mechanism, const SweepOptions& options) {
-  SweepResult result;
-  result.order = std::clamp(options.order, 0, kMaxOrder);
   PositionSolver solver(mechanism);
-  const int samples = SampleCount(options.from, options.to, options.step);
-  const double step = std::copysign(std::abs(options.step), options.to - options.from);
-  result.requested_samples = samples;
-  result.outputs.resize(samples, solver.OutputWidth(result.order));
-  result.poses.resize(samples, solver.NumCoordinates());
-  result.inputs.reserve(samples);
-
-  Eigen::VectorXd q(solver.NumCoordinates());
-  const SolveReport assembled = solver.Assemble(q);
-  if (!assembled.ok()) {
-    result.status = SolveStatus::kNotAssemblable;
-    result.stopped_at = mechanism.hint.input;
-    result.message = "cannot assemble at " + FormatInput(mechanism, mechanism.hint.input) + ": " + assembled.message;
-    result.outputs.resize(0, result.outputs.cols());
-    result.poses.resize(0, result.poses.cols());
-    return result;
+  ContinuationOptions options;
+  if (std::abs(step) > 0) options.max_step = std::min(options.max_step, std::abs(step));
+  std::vector<std::string> notes;
+  const Assembly assembly = AssembleForSweep(mechanism, solver, options, notes);
+  if (!assembly.error.empty()) {
+    range.low = range.high = mechanism.hint.input;
+    range.low_limited = range.high_limited = true;
+    return range;
   }
-  Continuation path(solver, options.continuation);
-  path.Start(mechanism.hint.input, q);
-  const double max_step = std::abs(options.step) > 0 ? std::abs(options.step) : 3.14159265358979323846 / 180.0;
-  for (int i = 0; i < samples; ++i) {
-    const double target = options.from + i * step;
-    const SolveReport report = path.AdvanceTo(target, max_step);
-    if (!report.ok()) {
-      result.status = report.status;
-      result.stopped_at = path.input();
-      result.message = "sweep stopped at " + FormatInput(mechanism, path.input()) + ": " + report.message + "; " +
-                       std::to_string(samples - i) + " of " + std::to_string(samples) + " samples not computed";
-      break;
-    }
-    const Eigen::MatrixXd& coefficients = path.Series(std::max(result.order, 2));
-    result.inputs.push_back(target);
-    solver.OutputDerivatives(coefficients, result.order, result.outputs.row(i).data());
-    result.poses.row(i) = path.q().transpose();
+  for (double direction : {+1.0, -1.0}) {
+    Continuation path(solver, options);
+    path.Start(assembly.input, assembly.q);
+    const double target = assembly.input + direction * span;
+    const WalkReport report = path.AdvanceTo(target, std::numeric_limits<double>::infinity());
+    (direction > 0 ? range.high : range.low) = report.ok() ? target : report.input;
+    (direction > 0 ? range.high_limited : range.low_limited) = !report.ok();
   }
-  const int done = static_cast<int>(result.inputs.size());
-  result.outputs.conservativeResize(done, Eigen::NoChange);
-  result.poses.conservativeResize(done, Eigen::NoChange);
-  return result;
+  return range;
 }
 
 }  // namespace koppel

@@ -134,22 +134,29 @@ TEST_CASE("a crank-rocker driven at the rocker stops at the dead centre and says
   o.to = DegToRad(180);
   o.step = DegToRad(1);
   const SweepResult up = Sweep(driven, o);
-  CHECK(up.status == SolveStatus::kSingular);
-  CHECK_THAT(up.message, Catch::Contains("singular") && Catch::Contains("phi = 133.0795"));
-  CHECK(std::abs(RadToDeg(up.stopped_at - std::max(upper, lower))) < 1e-6);
+  CHECK(up.status == SweepStatus::kPartial);
+  CHECK_THAT(up.message, Catch::Contains("limit point") && Catch::Contains("phi = 133.0795"));
+  // limit points are located to 1e-11 rad; the law of cosines is the reference
+  CHECK(std::abs(up.reached.to - std::max(upper, lower)) < 1e-9);
+  REQUIRE(up.singular_points.size() == 1);
+  CHECK(up.singular_points[0].kind == SingularKind::kLimitPoint);
+  CHECK(std::abs(up.singular_points[0].input - std::max(upper, lower)) < 1e-9);
+  REQUIRE(up.gaps.size() == 1);
+  CHECK(up.gaps[0].from == up.reached.to);
+  CHECK(up.gaps[0].to == o.to);
   CHECK(AllFinite(up));
   CHECK(up.inputs.size() == 24);  // 110 .. 133 deg
   o.to = DegToRad(90);
   const SweepResult down = Sweep(driven, o);
-  CHECK(down.status == SolveStatus::kSingular);
-  CHECK(std::abs(RadToDeg(down.stopped_at - std::min(upper, lower))) < 1e-6);
+  CHECK(down.status == SweepStatus::kPartial);
+  CHECK(std::abs(down.reached.from - std::min(upper, lower)) < 1e-9);
   CHECK(AllFinite(down));
 }
 
 TEST_CASE("a mechanism that cannot be assembled is reported, naming a joint", "[sweep]") {
   const Mechanism m = test::FourBar(1.0, 2.0, 2.0, 10.0, 1.0, 0.0, 1);  // 1 + 2 + 2 < 10
   const SweepResult r = Sweep(m, FullTurn());
-  CHECK(r.status == SolveStatus::kNotAssemblable);
+  CHECK(r.status == SweepStatus::kNotAssemblable);
   CHECK_THAT(r.message, Catch::Contains("joint '"));
   CHECK(r.inputs.empty());
 }

@@ -9,15 +9,15 @@ namespace koppel {
 
 // Samples of one sweep (analyze, deadcentres, curve, proportional): a step of 0.00036 deg over a
 // full turn; every sample keeps its pose and outputs, so more is gigabytes nobody reads.
-inline constexpr double kMaxSweepSamples = 1'000'000;
+inline constexpr long kMaxSweepSamples = 1'000'000;
 
 // Samples of the straight-line search (curve --straight): the search tries every pair of end
 // points, so its work grows with the square; 40 000 is 0.009 deg over +-180 deg, about a second.
-inline constexpr double kMaxStraightSearchSamples = 40'000;
+inline constexpr long kMaxStraightSearchSamples = 40'000;
 
 // Cells of one design chart (synth chart): each cell is a small optimisation (~0.2 ms), so this
 // is at most a minute of work; the default chart has 1 271.
-inline constexpr double kMaxChartCells = 250'000;
+inline constexpr long kMaxChartCells = 250'000;
 
 // Bytes of one input file: hand-written mechanisms are a few kilobytes and a generated one with
 // the most parameters allowed fits; beyond it the reader would hold a runaway file (/dev/zero).

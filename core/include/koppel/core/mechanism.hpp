@@ -83,7 +83,6 @@ struct Output {
   PointRef q;      // kDistance, kDirection
   double offset = 0.0;  // angle outputs: subtracted from the value (a zero reference) [rad]
 
-  bool IsAngle() const;
   int Components() const { return kind == OutputKind::kPoint ? 2 : 1; }
 };
 
@@ -112,7 +111,14 @@ struct Mechanism {
 
   // Unit of the drive input: true for an angle (R joint), false for a length (P joint).
   bool InputIsAngle() const;
+  // Unit of an output's value, see IsAngleOutput.
+  bool OutputIsAngle(int output) const;
 };
+
+// Unit of an output's value: true for an angle (an R joint's value, a link angle, a direction,
+// a transmission angle), false for a length (a P joint's displacement, a point, a distance).
+// The one place that decides it.
+bool IsAngleOutput(const Mechanism& mechanism, const Output& output);
 
 // An R joint named `name` between links a and b at the point of that name on each (the usual
 // way to pin two links in code). Point indices are -1 where a link lacks the point.
@@ -134,8 +140,9 @@ Mechanism MirrorMechanism(const Mechanism& mechanism);
 // a drive on an existing joint).
 std::vector<std::string> CheckConsistency(const Mechanism& mechanism);
 
-// Characteristic length: the largest distance of any point from its body origin, at least 1e-3.
-// Used to scale tolerances with the mechanism's size.
+// Characteristic length L: the largest distance of any point from its body origin (1 when every
+// point sits at its origin). Every tolerance of the solver is relative to L, so a mechanism
+// scaled by 1e-6 or 1e6 gives the same dimensionless results.
 double LengthScale(const Mechanism& mechanism);
 
 }  // namespace koppel

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,9 +18,12 @@
 namespace koppel {
 
 struct CouplerCurve {
-  SolveStatus status = SolveStatus::kConverged;
+  SweepStatus status = SweepStatus::kNotRun;  // of the sweep that traced it
   std::string message;
   std::vector<double> inputs;
+  std::vector<std::uint8_t> singular;        // per sample: the pose is singular (see SweepResult)
+  std::vector<InputInterval> gaps;           // parts of the range the branch cannot reach
+  std::vector<SingularPoint> singular_points;
   std::vector<Eigen::Vector2d> points;       // global position
   std::vector<Eigen::Vector2d> d1, d2;       // d/dinput, d2/dinput2
   std::vector<double> arc_length;            // from the first sample, along the curve

@@ -24,7 +24,7 @@ struct DeadCentre {
 };
 
 struct DeadCentreReport {
-  SolveStatus status = SolveStatus::kConverged;
+  SweepStatus status = SweepStatus::kNotRun;  // of the sweep searched
   std::string message;
   std::vector<DeadCentre> points;  // in input order
   // For an output with one extended and one folded dead centre per turn (the classic crank

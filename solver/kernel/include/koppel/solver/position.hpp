@@ -45,6 +45,11 @@ struct NewtonOptions {
 // Largest order of transfer function the solver computes (Taylor coefficients of q).
 inline constexpr int kMaxOrder = 8;
 
+// The column of d^0 of `output` (`component` 0 or 1 for a point) in a table laid out by
+// PositionSolver::OutputDerivatives up to `order`; its k-th derivative is k columns further.
+// The one place that knows the layout.
+int OutputColumn(const Mechanism& mechanism, int output, int component, int order);
+
 class PositionSolver {
  public:
   explicit PositionSolver(const Mechanism& mechanism, NewtonOptions options = {});
@@ -60,6 +65,12 @@ class PositionSolver {
   // then Levenberg–Marquardt, then Newton. The hint describes the pose at mechanism.hint.input;
   // this assembles at exactly that input. On success q is the assembled pose.
   SolveReport Assemble(Eigen::VectorXd& q);
+  // The same from the hint's guess, at another input (near the hint's, where the hint still
+  // describes the pose): used when the hint's input is itself a singular position.
+  SolveReport AssembleAt(double input, Eigen::VectorXd& q);
+  // Levenberg–Marquardt and Newton from the guess `q` at `input` (no hint): the tool for
+  // finding every assembly of a mechanism from many starting guesses.
+  SolveReport AssembleFrom(double input, Eigen::VectorXd& q);
 
   // Coefficients of the Taylor series of q about the last converged pose: column k holds
   // d^k q / d input^k / k!, k = 0..order (order <= kMaxOrder). Uses the factorisation of the
@@ -75,8 +86,15 @@ class PositionSolver {
   // Sign of det J at the last converged pose (square systems), 0 when J is singular or not
   // square. A change of sign along a path means the path crossed a singular position.
   int JacobianSign() const { return jacobian_sign_; }
-  // Smallest |U_ii| / largest |U_ii| of the last LU: a cheap distance-to-singularity gauge.
+  // Smallest over largest pivot of the last LU of the scaled Jacobian J_hat = J S, where S divides
+  // the theta columns by L so that every entry is dimensionless: a cheap distance-to-singularity
+  // gauge (an SVD gives the exact reciprocal condition, see singular.hpp).
   double PivotRatio() const { return pivot_ratio_; }
+  // det(J_hat) at the last factorised pose (square systems; 0 otherwise): a smooth, signed test
+  // function whose simple roots along a branch are its singular positions.
+  double ScaledDeterminant() const { return scaled_determinant_; }
+  // The Jacobian at the last pose Correct/Assemble evaluated.
+  const Eigen::MatrixXd& jacobian() const { return jacobian_; }
 
   // x = J^-1 rhs with the factorisation of the last converged pose (implicit-function theorem:
   // dq/dp = -J^-1 dF/dp). Precondition: the last Correct/Assemble succeeded.
@@ -97,6 +115,7 @@ class PositionSolver {
   const Mechanism& mechanism_;
   ConstraintSystem system_;
   NewtonOptions options_;
+  SolveReport AssembleFromGuess(double input, Eigen::VectorXd& x);  // x: the guess, then the result
   bool square_ = true;
   Eigen::VectorXd residual_, step_, rhs_;
   Eigen::MatrixXd jacobian_;
@@ -107,6 +126,8 @@ class PositionSolver {
   bool factorized_ = false;
   int jacobian_sign_ = 0;
   double pivot_ratio_ = 0.0;
+  double scaled_determinant_ = 0.0;
+  Eigen::VectorXd column_scale_;  // 1 for x, y columns; 1/L for theta columns
   // Taylor workspaces, allocated once.
   mutable std::vector<Taylor<2>> q2_, r2_;
   mutable std::vector<Taylor<kMaxOrder>> q8_, r8_;

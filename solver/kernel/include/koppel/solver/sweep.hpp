@@ -1,82 +1,79 @@
-// Sweeps of the drive input by predictor–corrector continuation: the Taylor series of q
-// (1st and 2nd order transfer functions) predicts, Newton corrects. A step is accepted only
-// when Newton converges quickly, the correction stays small and det J keeps its sign, so the
-// sweep stays on the assembly branch it started on; otherwise the step is halved. Where no
-// step gets through, the sweep stops and says where and why.
+// Sweeps of the drive input: every output and its transfer functions at the samples
+// from, from + step, ... up to `to`, on the assembly branch the mechanism's hint chooses.
+//
+// The sweep assembles at the hint's input and walks outward from there (continuation.hpp), up
+// to the larger end of the range and down to the smaller, so every sample it can reach on that
+// branch is computed — including those on the way from the assembly to `from` — and the parts
+// of the range the branch cannot be driven through (beyond a limit point, or a branch point with
+// BranchPointAction::kStop) are listed as gaps. A sample at a singular pose is flagged; inside a
+// branch-point window its transfer functions up to 3rd order are the branch's (the interpolant
+// of the window), higher orders are marked not computable.
 #pragma once
 
+#include "koppel/core/limits.hpp"  // kMaxSweepSamples
 #include "koppel/core/mechanism.hpp"
+#include "koppel/solver/continuation.hpp"
 #include "koppel/solver/position.hpp"
+#include "koppel/solver/singular.hpp"
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace koppel {
 
-struct ContinuationOptions {
-  // Smallest sub-step, relative to the requested step: the resolution with which a
-  // singular position is located (1e-9 of a 1 degree step is about 2e-11 rad).
-  double min_step_fraction = 1e-9;
-  // Newton iterations a corrector may use before the step counts as too long.
-  int max_corrector_iterations = 8;
-  // Largest Newton correction, relative to the length scale, before the step counts as a
-  // possible branch jump.
-  double max_correction = 0.05;
-};
-
-// Walks one mechanism along its input. Holds the solver's factorisation at the current pose.
-class Continuation {
- public:
-  Continuation(PositionSolver& solver, ContinuationOptions options = {});
-
-  // Starts at (input, q); q need only be close: Newton polishes it.
-  SolveReport Start(double input, const Eigen::VectorXd& q);
-  // Moves to `target`, in sub-steps of at most `max_step` (> 0). On failure the state stays
-  // at the last input reached and the report says why (kSingular: the Jacobian went singular
-  // or changed sign on the way; kDidNotConverge: no sub-step could be corrected).
-  SolveReport AdvanceTo(double target, double max_step);
-
-  double input() const { return input_; }
-  const Eigen::VectorXd& q() const { return q_; }
-  // Taylor coefficients of q at the current pose (columns 0..order), see PositionSolver::Series.
-  const Eigen::MatrixXd& Series(int order);
-
- private:
-  PositionSolver& solver_;
-  ContinuationOptions options_;
-  double input_ = 0.0;
-  Eigen::VectorXd q_, q_trial_, predicted_;
-  Eigen::MatrixXd series_;
-  int series_order_ = -1;
-};
-
 struct SweepOptions {
-  double from = 0.0;          // drive input: radians for an R drive, length for a P drive
+  double from = 0.0;  // drive input: radians for an R drive, length for a P drive
   double to = 2.0 * 3.14159265358979323846;
-  double step = 3.14159265358979323846 / 180.0;
-  int order = 2;              // highest transfer function order in the table (0..kMaxOrder)
+  double step = 3.14159265358979323846 / 180.0;  // != 0; its sign is ignored (from -> to)
+  int order = 2;  // highest transfer function order in the table (0..kMaxOrder)
   ContinuationOptions continuation;
+
+  // Empty *why and true when usable: finite from/to/step, step != 0, order in 0..kMaxOrder, at
+  // most kMaxSweepSamples samples, valid continuation options.
+  bool IsValid(std::string* why) const;
 };
 
 // Row-major so that one sample's outputs are contiguous (written in place by the solver).
 using Table = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-struct SweepResult {
-  SolveStatus status = SolveStatus::kConverged;  // kConverged: every requested sample computed
-  std::string message;                           // why the sweep stopped, empty when complete
-  double stopped_at = 0.0;                       // last input reached when it stopped
-  int order = 2;
-  int requested_samples = 0;
-  std::vector<double> inputs;  // computed samples only
-  Table outputs;               // inputs.size() x OutputWidth(order), see OutputDerivatives
-  Table poses;         // inputs.size() x NumCoordinates()
-  bool complete() const { return status == SolveStatus::kConverged; }
+struct InputInterval {
+  double from = 0.0, to = 0.0;  // in sweep order (from may be above to)
 };
 
-// Assembles at the mechanism's hint, follows the branch to `from`, then samples from..to.
-// Precondition: CheckConsistency(mechanism) is empty and options.step != 0.
+enum class SweepStatus {
+  kNotRun,
+  kComplete,        // every requested sample computed
+  kPartial,         // some samples lie beyond the drivable part of the branch: see gaps
+  kNotAssemblable,  // no pose at the assembly input
+  kInvalidOptions,  // see SweepOptions::IsValid
+};
+const char* ToString(SweepStatus status);
+
+struct SweepResult {
+  SweepStatus status = SweepStatus::kNotRun;
+  std::string message;             // why samples are missing; empty when complete
+  std::vector<std::string> notes;  // what the user should know although every sample was computed
+  int order = 2;
+  int requested_samples = 0;
+  std::vector<double> inputs;  // the computed samples, in sweep order
+  Table outputs;               // inputs.size() x OutputWidth(order), see OutputDerivatives
+  Table poses;                 // inputs.size() x NumCoordinates()
+  std::vector<std::uint8_t> singular;   // per row: 1 when its pose is singular (rcond < kSingularRowRcond)
+  std::vector<std::int8_t> valid_order;  // per row: transfer functions above this order are not computable there (stored as 0)
+  std::vector<SingularPoint> singular_points;  // met by the walks, in input order
+  std::vector<InputInterval> gaps;             // parts of from..to that are not drivable, in sweep order
+  InputInterval reached;  // the input interval the walks covered, around the assembly input (low, high)
+
+  bool complete() const { return status == SweepStatus::kComplete; }
+  // One line: status, rows, singular points and gaps.
+  std::string Brief() const;
+};
+
+// Assembles at the mechanism's hint and samples from..to on that branch.
+// Precondition: CheckConsistency(mechanism) is empty.
 SweepResult Sweep(const Mechanism& mechanism, const SweepOptions& options);
 
 // The input interval the drive can reach from the assembly hint, following the branch up to
@@ -87,7 +84,8 @@ struct InputRange {
 };
 InputRange DrivableRange(const Mechanism& mechanism, double span, double step);
 
-// Number of samples of from..to in steps of |step| (the last one at most `to`).
-int SampleCount(double from, double to, double step);
+// Number of samples of from..to in steps of |step| (the last one at most `to`), as a double so
+// that absurd requests can be refused before anything is allocated; 1 for a zero step.
+double SampleCount(double from, double to, double step);
 
 }  // namespace koppel

@@ -1,0 +1,156 @@
+// Walking a mechanism along its drive input by predictor–corrector continuation, on one branch.
+//
+// Predictor: the 2nd-order Taylor series of q(input) (exact transfer functions). Corrector:
+// Newton. A step is accepted only when Newton converges in a few iterations, the correction is
+// small (in units of L, radians for angles) and the first-order transfer functions at the new
+// pose continue the predicted ones — a step that lands on another assembly branch changes them
+// by O(1). The sign of det J is never a reason to accept a step; its change only tells that a
+// singular position was crossed, which is then located and reported.
+//
+// Singular positions (see singular.hpp):
+// - limit point: no step gets past; the walk ends there, located to `limit_resolution`.
+// - branch point: crossed along the incoming branch (ContinuationOptions::at_branch_point says
+//   whether to continue on the branch that continues the incoming one analytically, to stop, or
+//   to switch to the other). The crossing jumps from a pose A a window's half-width before the
+//   point to a pose B as far beyond it, predicting along A's Taylor series and verifying at B
+//   that the transfer functions continue; the point itself is located as the root of det(J S)
+//   between A and B. Inside the window, poses and the transfer functions up to 3rd order come from
+//   the Hermite interpolant of A and B: both ends are well-conditioned, the point is not.
+#pragma once
+
+#include "koppel/core/mechanism.hpp"
+#include "koppel/solver/position.hpp"
+#include "koppel/solver/singular.hpp"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+struct ContinuationOptions {
+  // Largest continuation step [rad for an R drive, units of L for a P drive]: the predictor's
+  // error (~ q''' h^3) stays far below the distance between assembly branches.
+  double max_step = 0.05;
+  // Limit points are located to this [rad, or units of L].
+  double limit_resolution = 1e-11;
+  // Steps shorter than this fraction of max_step mean a singular position is near: the pose is
+  // examined (an SVD) and a branch point is crossed rather than crept around.
+  double stall_fraction = 1e-7;
+  // Half-width of the window around a branch point [rad, or units of L]; see the file comment.
+  double branch_window = 1e-2;
+  // Newton iterations a corrector may use before the step counts as too long.
+  int max_corrector_iterations = 8;
+  // Largest Newton correction of a predicted pose [units of L; rad for angles].
+  double max_correction = 0.02;
+  // Largest change of the first-order transfer functions against their prediction, relative to
+  // (1 + their size) in units of L and rad.
+  double max_tangent_change = 0.02;
+  BranchPointAction at_branch_point = BranchPointAction::kContinue;
+  // Continuation steps one AdvanceTo may take: a walk to a far input is refused, never endless.
+  long max_steps = 20'000'000;
+
+  // Empty *why and true when every field is usable; otherwise the first problem.
+  bool IsValid(std::string* why) const;
+};
+
+enum class WalkStatus {
+  kNotRun,
+  kReached,          // the target input was reached
+  kLimitPoint,       // a limit point of the drive lies between: the branch ends there
+  kBranchPointStop,  // a branch point lies between and the options say stop
+  kTooFar,           // the target needs more than max_steps steps
+  kFailed,           // no pose could be found (Newton failed without a singular position)
+};
+const char* ToString(WalkStatus status);
+
+struct WalkReport {
+  WalkStatus status = WalkStatus::kNotRun;
+  double input = 0.0;   // where the walk stands: the target when reached
+  std::string message;  // why it ended short; empty when reached
+  bool ok() const { return status == WalkStatus::kReached; }
+};
+
+// Walks one mechanism along its input. Holds the solver's factorisation at the current pose.
+class Continuation {
+ public:
+  Continuation(PositionSolver& solver, ContinuationOptions options = {});
+  ~Continuation();
+
+  // Starts at (input, q); q need only be close: Newton polishes it.
+  SolveReport Start(double input, const Eigen::VectorXd& q);
+  // Moves to `target` in steps of at most min(max_step, options.max_step) (max_step > 0). On
+  // failure the walk stands at the last input it reached and the report says why.
+  WalkReport AdvanceTo(double target, double max_step);
+
+  double input() const { return input_; }
+  const Eigen::VectorXd& q() const { return q_; }
+  // Taylor coefficients d^k q / d input^k / k! at the current pose (columns 0..order). Columns
+  // above ValidOrder() are zero: not computable here.
+  const Eigen::MatrixXd& Series(int order);
+  // kMaxOrder at a regular pose; 3 at a singular pose inside a branch-point window, where
+  // higher orders through J^-1 would be noise.
+  int ValidOrder() const { return valid_order_; }
+  // True when the current pose is singular: reciprocal condition of J S below kSingularRowRcond.
+  bool AtSingularPose();
+  // Every singular position the walk met, in the order met.
+  const std::vector<SingularPoint>& singular_points() const { return singular_points_; }
+
+ private:
+  struct Window;
+  struct StepResult {
+    bool accepted = false;
+    bool sign_changed = false;
+  };
+  // max |a - b| over the coordinates, in units of L (positions) and rad (angles)
+  double ScaledPoseNorm(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
+  // the same for first-order transfer functions dq/dinput (b may be null: |a| itself)
+  double ScaledTangentNorm(const Eigen::VectorXd& a, const Eigen::VectorXd* b) const;
+  enum class Crossing { kNotCrossed, kPassed, kFinished };
+  StepResult TryStep(double next);
+  void Accept(double next);
+  void SetRegularPose(double input, const Eigen::VectorXd& q);
+  bool RestoreFactorization();
+  bool RegularWalkTo(double target);
+  Crossing CrossBranchPoint(double estimate, double direction, double target, WalkReport* finished);
+  Crossing LeaveOrEnterWindow(double target, WalkReport* finished);
+  void EvaluateInWindow(double input);
+  WalkReport Reached() const;
+  WalkReport Ended(WalkStatus status, std::string message) const;
+  std::string Where(double input) const;
+
+  PositionSolver& solver_;
+  ContinuationOptions options_;
+  double length_scale_ = 1.0;
+  double input_scale_ = 1.0;  // 1 for an R drive, L for a P drive
+  bool started_ = false;
+  // the current pose
+  double input_ = 0.0;
+  Eigen::VectorXd q_;
+  bool factorized_here_ = false;  // the solver's factorisation belongs to the current pose
+  bool from_window_ = false;      // the current pose came from a window's interpolant
+  int sign_ = 0;
+  double determinant_ = 0.0;
+  double rcond_ = -1.0;           // < 0: not yet computed
+  double pivot_ratio_ = 0.0;      // of the current pose's factorisation
+  int valid_order_ = kMaxOrder;
+  Eigen::MatrixXd series_;
+  int series_order_ = -1;
+  Eigen::MatrixXd window_series_;  // the interpolant's coefficients at a window pose
+  // the pose before the last accepted step
+  double previous_input_ = 0.0;
+  Eigen::VectorXd previous_q_;
+  double previous_determinant_ = 0.0;
+  bool has_previous_ = false;
+  // workspaces, allocated once: no allocation per step
+  Eigen::VectorXd q_trial_, predicted_, tangent_predicted_;
+  Eigen::MatrixXd trial_series_;
+  std::unique_ptr<Window> window_;
+  std::vector<SingularPoint> singular_points_;
+};
+
+}  // namespace koppel

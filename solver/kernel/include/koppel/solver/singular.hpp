@@ -1,0 +1,86 @@
+// Singular positions (singuläre Lagen) of the position equations F(q, input) = 0, as a sweep of
+// the drive meets them.
+//
+// J = dF/dq is square for a one-DOF mechanism: its rows are the joints' constraint rows J_c and
+// the drive row. J is singular in two kinds of position:
+// - limit point (dead centre of the drive, Totlage des Antriebs): J_c still has full rank, so the
+//   mechanism without its drive moves on one smooth curve, but that motion does not move the
+//   drive joint. The input cannot pass the point on this branch: a sweep ends there.
+// - branch point (Verzweigungslage, e.g. the change point of a Grashof-neutral four-bar, a loop
+//   folding flat, a slider-crank with l2 = l1 + |e|): J_c itself loses rank. The mechanism can
+//   carry a self-stress there and two branches of the curve cross; both continue in the input.
+//
+// Every quantity here uses the scaled Jacobian J S (theta columns divided by the length scale L),
+// whose entries are dimensionless, so that thresholds mean the same for any size of mechanism.
+#pragma once
+
+#include "koppel/solver/constraints.hpp"
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+enum class SingularKind { kLimitPoint, kBranchPoint };
+const char* ToString(SingularKind kind);  // "limit", "branch-point"
+
+// What a sweep does where two branches cross: continue on the branch that continues the
+// incoming one analytically (a parallelogram stays a parallelogram), stop there, or switch to
+// the other branch.
+enum class BranchPointAction { kContinue, kStop, kSwitch };
+const char* ToString(BranchPointAction action);  // "continue", "stop", "switch"
+std::optional<BranchPointAction> ParseBranchPointAction(const std::string& text);
+
+// A pose counts as a branch point when sigma_{n-1} / sigma_1 of the constraint rows (drive row
+// left out) is below this: the mechanism without its drive is then within about 1e-12 L of a
+// flat, self-stressed pose, closer than any real design is built (and as close as the rounding
+// of a Grashof-neutral design puts it). Otherwise a singular J is a limit point.
+inline constexpr double kBranchPointRcond = 1e-6;
+// Rows of a sweep whose pose has a reciprocal condition of J S below this are flagged singular:
+// a k-th order transfer function computed there through J^-1 may carry errors of order
+// eps / rcond^k.
+inline constexpr double kSingularRowRcond = 1e-6;
+
+// One singular position met by a sweep.
+struct SingularPoint {
+  SingularKind kind = SingularKind::kLimitPoint;
+  double input = 0.0;       // where [rad for an R drive, length for a P drive]
+  double rcond = 0.0;       // reciprocal condition of J S at the pose located there
+  std::vector<int> joints;  // the joints whose equations carry the singularity (see below)
+  BranchPointAction action = BranchPointAction::kContinue;  // branch points: what the sweep did
+};
+
+// The scaled Jacobian J S, all rows (with_drive_row) or the constraint rows only.
+Eigen::MatrixXd ScaledJacobian(const ConstraintSystem& system, const Eigen::VectorXd& q, bool with_drive_row);
+
+// sigma_min / sigma_max of J S at q (0 for a rank-deficient J): the exact distance-to-singularity
+// gauge behind the flags and the classification.
+double ReciprocalCondition(const ConstraintSystem& system, const Eigen::VectorXd& q);
+
+struct SingularStructure {
+  double rcond = 0.0;             // of J S
+  double constraint_rcond = 0.0;  // sigma_{n-1} / sigma_1 of J_c S
+  SingularKind kind = SingularKind::kLimitPoint;
+  // Joints with a share of the near-null left singular vector (a self-stress of the constraints
+  // for a branch point; the drive's reaction and the load path for a limit point): the joints or
+  // the loop involved. Shares below 1e-4 of the largest count as zero.
+  std::vector<int> joints;
+};
+
+// Classifies the singularity nearest to pose q (an SVD; meant for poses where the pivot gauge
+// already says J is nearly singular).
+SingularStructure AnalyseSingularity(const ConstraintSystem& system, const Eigen::VectorXd& q);
+
+// At a branch point (q, input) with one branch's tangent dq/dinput, the other branch's tangent:
+// both lie on the line t + a w, w the motion of J's null space (the drive held), and satisfy the
+// bifurcation equation psi^T F''[t + a w, t + a w] = 0 (psi the left null vector, F'' the second
+// derivative of the residuals in q, exact through Taylor<2>). One root is a = 0; the other gives
+// the answer. Empty when the point is no simple crossing (complex roots) or the other branch does
+// not cross in the input (it would run at constant input).
+std::optional<Eigen::VectorXd> OtherBranchTangent(const ConstraintSystem& system, const Eigen::VectorXd& q, double input,
+                                                  const Eigen::VectorXd& tangent);
+
+}  // namespace koppel

@@ -1,0 +1,505 @@
+#include "koppel/solver/continuation.hpp"
+
+#include "hermite.hpp"
+#include "koppel/core/angles.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace koppel {
+namespace {
+
+// A pose whose pivot gauge is above this is taken as regular without an SVD: on mechanism
+// Jacobians the pivot ratio of partial pivoting tracks the reciprocal condition within a modest
+// factor, and rows are flagged only three decades further down.
+constexpr double kRegularPivotRatio = 1e-3;
+// A pose examined at a stall is near a singular position below this reciprocal condition.
+constexpr double kNearSingularRcond = 1e-3;
+// Taylor order at the two ends of a branch-point window: orders up to 3 are accurate at both
+// (their errors grow like eps / rcond^k, and rcond ~ 1e-2 there).
+constexpr int kWindowOrder = 3;
+// Attempts at crossing a branch point, each with a window a quarter as wide as the one before.
+constexpr int kCrossingAttempts = 3;
+// Newton iterates closer to a branch point than this pivot gauge no longer give a reliable
+// determinant sign: the root search stops there.
+constexpr double kRootPivotRatio = 1e-12;
+// Steps a walk between two nearby regular poses may take (it never passes a singular position).
+constexpr long kRegularWalkSteps = 100000;
+
+std::string JointNames(const Mechanism& m, const std::vector<int>& joints) {
+  std::string names;
+  for (int j : joints) names += (names.empty() ? "" : ", ") + m.joints[j].name;
+  return names;
+}
+
+// Root of det(J S) along the interpolated branch between two poses of opposite sign (Illinois
+// variant of regula falsi; every iterate is a Newton-corrected pose of the branch).
+double LocateRoot(PositionSolver& solver, const HermiteSegment& branch, double x0, double g0, double x1, double g1,
+                  double input_scale, Eigen::VectorXd& q) {
+  Eigen::MatrixXd c;
+  int side = 0;
+  for (int it = 0; it < 60; ++it) {
+    const double x = (x0 * g1 - x1 * g0) / (g1 - g0);
+    if (std::abs(x1 - x0) <= 1e-13 * input_scale) return x;
+    branch.Coefficients(x, 0, c);
+    q = c.col(0);
+    if (!solver.Correct(x, q).ok() || solver.PivotRatio() < kRootPivotRatio) return x;
+    const double g = solver.ScaledDeterminant();
+    if (g == 0.0) return x;
+    if ((g > 0) == (g1 > 0)) {
+      x1 = x;
+      g1 = g;
+      if (side == -1) g0 *= 0.5;
+      side = -1;
+    } else {
+      x0 = x;
+      g0 = g;
+      if (side == +1) g1 *= 0.5;
+      side = +1;
+    }
+  }
+  return (x0 * g1 - x1 * g0) / (g1 - g0);
+}
+
+}  // namespace
+
+struct Continuation::Window {
+  HermiteSegment incoming;  // A .. B on the incoming branch (continue, stop; switch: up to the point)
+  HermiteSegment outgoing;  // switch only: the point .. B' on the other branch
+  double star = 0.0;        // the branch point
+  double near_end = 0.0;    // A
+  double far_end = 0.0;     // B (B'), or the point itself when the walk stops there
+  Eigen::VectorXd near_q, far_q;
+  double direction = 1.0;   // +1: entered with increasing input
+  bool stop = false;
+  bool Contains(double input) const {
+    return direction * (input - near_end) >= 0.0 && direction * (far_end - input) >= 0.0;
+  }
+};
+
+const char* ToString(WalkStatus status) {
+  switch (status) {
+    case WalkStatus::kNotRun: return "not run";
+    case WalkStatus::kReached: return "reached";
+    case WalkStatus::kLimitPoint: return "limit point";
+    case WalkStatus::kBranchPointStop: return "stopped at a branch point";
+    case WalkStatus::kTooFar: return "too far";
+    case WalkStatus::kFailed: return "failed";
+  }
+  return "failed";
+}
+
+bool ContinuationOptions::IsValid(std::string* why) const {
+  auto fail = [&](const char* text) {
+    if (why) *why = text;
+    return false;
+  };
+  auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+  if (!positive(max_step)) return fail("max_step must be positive and finite");
+  if (!positive(limit_resolution) || limit_resolution >= max_step) return fail("limit_resolution must be positive and below max_step");
+  if (!positive(stall_fraction) || stall_fraction >= 1.0) return fail("stall_fraction must lie in (0, 1)");
+  if (!positive(branch_window) || branch_window > 0.5) return fail("branch_window must lie in (0, 0.5]");
+  if (max_corrector_iterations < 1) return fail("max_corrector_iterations must be at least 1");
+  if (!positive(max_correction)) return fail("max_correction must be positive");
+  if (!positive(max_tangent_change)) return fail("max_tangent_change must be positive");
+  if (max_steps < 1) return fail("max_steps must be at least 1");
+  if (why) why->clear();
+  return true;
+}
+
+Continuation::Continuation(PositionSolver& solver, ContinuationOptions options)
+    : solver_(solver), options_(options), length_scale_(solver.system().length_scale()) {
+  const int n = solver.NumCoordinates();
+  input_scale_ = solver.system().mechanism().InputIsAngle() ? 1.0 : length_scale_;
+  q_.setZero(n);
+  previous_q_.setZero(n);
+  q_trial_.setZero(n);
+  predicted_.setZero(n);
+  tangent_predicted_.setZero(n);
+  series_.setZero(n, kWindowOrder + 1);
+  trial_series_.setZero(n, kWindowOrder + 1);
+}
+
+Continuation::~Continuation() = default;
+
+double Continuation::ScaledPoseNorm(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {
+  double norm = 0.0;
+  for (int i = 0; i < a.size(); ++i) norm = std::max(norm, std::abs(a(i) - b(i)) * (i % 3 == 2 ? 1.0 : 1.0 / length_scale_));
+  return norm;
+}
+
+double Continuation::ScaledTangentNorm(const Eigen::VectorXd& a, const Eigen::VectorXd* b) const {
+  double norm = 0.0;
+  for (int i = 0; i < a.size(); ++i) {
+    const double d = b ? a(i) - (*b)(i) : a(i);
+    norm = std::max(norm, std::abs(d) * (i % 3 == 2 ? 1.0 : 1.0 / length_scale_) * input_scale_);
+  }
+  return norm;
+}
+
+std::string Continuation::Where(double input) const {
+  const Mechanism& m = solver_.system().mechanism();
+  char buffer[96];
+  if (m.InputIsAngle()) {
+    std::snprintf(buffer, sizeof buffer, "%s = %.10g deg", m.drive.input_name.c_str(), RadToDeg(input));
+  } else {
+    std::snprintf(buffer, sizeof buffer, "%s = %.10g", m.drive.input_name.c_str(), input);
+  }
+  return buffer;
+}
+
+WalkReport Continuation::Reached() const { return {WalkStatus::kReached, input_, ""}; }
+
+WalkReport Continuation::Ended(WalkStatus status, std::string message) const {
+  return {status, input_, std::move(message)};
+}
+
+void Continuation::SetRegularPose(double input, const Eigen::VectorXd& q) {
+  input_ = input;
+  q_ = q;
+  from_window_ = false;
+  RestoreFactorization();
+}
+
+bool Continuation::RestoreFactorization() {
+  q_trial_ = q_;
+  if (!solver_.Correct(input_, q_trial_).ok()) return false;
+  q_ = q_trial_;
+  factorized_here_ = true;
+  from_window_ = false;
+  sign_ = solver_.JacobianSign();
+  determinant_ = solver_.ScaledDeterminant();
+  pivot_ratio_ = solver_.PivotRatio();
+  rcond_ = -1.0;
+  valid_order_ = kMaxOrder;
+  series_order_ = -1;
+  return true;
+}
+
+SolveReport Continuation::Start(double input, const Eigen::VectorXd& q) {
+  q_trial_ = q;
+  SolveReport report = solver_.Correct(input, q_trial_);
+  if (report.ok()) {
+    started_ = true;
+    input_ = input;
+    q_ = q_trial_;
+    factorized_here_ = true;
+    from_window_ = false;
+    sign_ = solver_.JacobianSign();
+    determinant_ = solver_.ScaledDeterminant();
+    pivot_ratio_ = solver_.PivotRatio();
+    rcond_ = -1.0;
+    valid_order_ = kMaxOrder;
+    series_order_ = -1;
+    has_previous_ = false;
+    window_.reset();
+  }
+  return report;
+}
+
+const Eigen::MatrixXd& Continuation::Series(int order) {
+  order = std::clamp(order, 0, kMaxOrder);
+  if (from_window_) {
+    // orders up to 3 from the interpolant; higher ones through J^-1 where the pose is regular
+    if (order <= kWindowOrder || series_order_ >= order) return series_;
+    if (AtSingularPose()) {
+      series_.conservativeResize(Eigen::NoChange, order + 1);
+      series_.rightCols(order - kWindowOrder).setZero();
+      series_order_ = order;
+      return series_;
+    }
+    const double input = input_;
+    if (!RestoreFactorization()) return series_;
+    solver_.Series(order, series_);
+    series_.leftCols(kWindowOrder + 1) = window_series_;  // the interpolant is the better one there
+    series_order_ = order;
+    from_window_ = true;
+    input_ = input;
+    return series_;
+  }
+  if (series_order_ >= order) return series_;
+  if (!factorized_here_) RestoreFactorization();
+  solver_.Series(order, series_);
+  series_order_ = order;
+  return series_;
+}
+
+bool Continuation::AtSingularPose() {
+  if (rcond_ < 0.0) {
+    rcond_ = (!from_window_ && pivot_ratio_ > kRegularPivotRatio) ? pivot_ratio_
+                                                                   : ReciprocalCondition(solver_.system(), q_);
+  }
+  return rcond_ < kSingularRowRcond;
+}
+
+void Continuation::Accept(double next) {
+  previous_input_ = input_;
+  previous_q_ = q_;
+  previous_determinant_ = determinant_;
+  has_previous_ = true;
+  input_ = next;
+  q_ = q_trial_;
+  factorized_here_ = true;
+  from_window_ = false;
+  sign_ = solver_.JacobianSign();
+  determinant_ = solver_.ScaledDeterminant();
+  pivot_ratio_ = solver_.PivotRatio();
+  rcond_ = -1.0;
+  valid_order_ = kMaxOrder;
+  std::swap(series_, trial_series_);  // the trial's series (order 2) is the new pose's
+  series_order_ = 2;
+}
+
+Continuation::StepResult Continuation::TryStep(double next) {
+  StepResult out;
+  const double h = next - input_;
+  const Eigen::MatrixXd& c = Series(2);
+  predicted_ = c.col(0) + h * c.col(1) + (h * h) * c.col(2);
+  tangent_predicted_ = c.col(1) + (2.0 * h) * c.col(2);
+  q_trial_ = predicted_;
+  const SolveReport report = solver_.Correct(next, q_trial_);
+  factorized_here_ = false;
+  if (!report.ok() || report.iterations > options_.max_corrector_iterations) return out;
+  if (ScaledPoseNorm(q_trial_, predicted_) > options_.max_correction) return out;
+  // the first-order transfer functions must continue the predicted ones: on another branch they
+  // differ by O(1), on this one by O(h^2)
+  solver_.Series(2, trial_series_);
+  const double change = ScaledTangentNorm(trial_series_.col(1), &tangent_predicted_);
+  if (change > options_.max_tangent_change * (1.0 + ScaledTangentNorm(tangent_predicted_, nullptr))) return out;
+  const int sign = solver_.JacobianSign();
+  out.sign_changed = sign_ != 0 && sign != 0 && sign != sign_;
+  out.accepted = true;
+  Accept(next);
+  return out;
+}
+
+bool Continuation::RegularWalkTo(double target) {
+  const double cap = options_.max_step * input_scale_;
+  double h = std::min(cap, std::abs(target - input_));
+  long steps = 0;
+  while (input_ != target) {
+    if (++steps > kRegularWalkSteps) return false;
+    const double remaining = target - input_;
+    const double next = std::abs(remaining) <= h ? target : input_ + std::copysign(h, remaining);
+    if (TryStep(next).accepted) {
+      h = std::min(cap, 2.0 * h);
+      continue;
+    }
+    h *= 0.5;
+    if (h < options_.limit_resolution * input_scale_) return false;
+  }
+  return true;
+}
+
+Continuation::Crossing Continuation::CrossBranchPoint(double estimate, double direction, double target,
+                                                      WalkReport* finished) {
+  const ConstraintSystem& system = solver_.system();
+  const double start_input = input_;
+  const Eigen::VectorXd start_q = q_;
+  double delta = options_.branch_window * input_scale_;
+  for (int attempt = 0; attempt < kCrossingAttempts; ++attempt, delta *= 0.25) {
+    if (attempt > 0) SetRegularPose(start_input, start_q);
+    // A: a regular pose of the incoming branch, a window's half-width before the point
+    const double a_input = estimate - direction * delta;
+    if (!RegularWalkTo(a_input)) continue;
+    const Eigen::MatrixXd a_series = Series(kWindowOrder).leftCols(kWindowOrder + 1);
+    const Eigen::VectorXd a_q = q_;
+    const double a_det = determinant_;
+    // B: as far beyond, predicted along A's Taylor series, the transfer functions verified
+    const double b_input = estimate + direction * delta;
+    const double span = b_input - a_input;
+    Eigen::VectorXd predicted = Eigen::VectorXd::Zero(a_q.size()), tangent = Eigen::VectorXd::Zero(a_q.size());
+    for (int k = kWindowOrder; k >= 0; --k) predicted = predicted * span + a_series.col(k);
+    for (int k = kWindowOrder; k >= 1; --k) tangent = tangent * span + k * a_series.col(k);
+    Eigen::VectorXd b_q = predicted;
+    const SolveReport at_b = solver_.Correct(b_input, b_q);
+    factorized_here_ = false;
+    if (!at_b.ok() || ScaledPoseNorm(b_q, predicted) > options_.max_correction) continue;
+    Eigen::MatrixXd b_series;
+    solver_.Series(kWindowOrder, b_series);
+    if (ScaledTangentNorm(b_series.col(1), &tangent) > options_.max_tangent_change * (1.0 + ScaledTangentNorm(tangent, nullptr)))
+      continue;
+    const double b_det = solver_.ScaledDeterminant();
+    const HermiteSegment incoming(a_input, a_series, b_input, b_series);
+    Eigen::VectorXd scratch = a_q;
+    const double star = (a_det > 0) != (b_det > 0) && a_det != 0.0 && b_det != 0.0
+                            ? LocateRoot(solver_, incoming, a_input, a_det, b_input, b_det, input_scale_, scratch)
+                            : estimate;
+    Eigen::MatrixXd at_star;
+    incoming.Coefficients(star, 1, at_star);
+    const SingularStructure structure = AnalyseSingularity(system, at_star.col(0));
+
+    auto window = std::make_unique<Window>();
+    window->direction = direction;
+    window->star = star;
+    window->near_end = a_input;
+    window->near_q = a_q;
+    window->incoming = incoming;
+    window->far_end = b_input;
+    window->far_q = b_q;
+    SingularPoint point{SingularKind::kBranchPoint, star, structure.rcond, structure.joints, options_.at_branch_point};
+    if (options_.at_branch_point == BranchPointAction::kStop) {
+      window->far_end = star;
+      window->stop = true;
+    } else if (options_.at_branch_point == BranchPointAction::kSwitch) {
+      const std::optional<Eigen::VectorXd> other = OtherBranchTangent(system, at_star.col(0), star, at_star.col(1));
+      Eigen::VectorXd other_q;
+      Eigen::MatrixXd other_series;
+      bool switched = false;
+      if (other) {
+        other_q = at_star.col(0) + (b_input - star) * *other;
+        const Eigen::VectorXd other_predicted = other_q;
+        const Eigen::VectorXd incoming_tangent = at_star.col(1);
+        const double separation = ScaledTangentNorm(*other, &incoming_tangent) * std::abs(b_input - star) / input_scale_;
+        if (solver_.Correct(b_input, other_q).ok() && ScaledPoseNorm(other_q, b_q) > 0.25 * separation &&
+            ScaledPoseNorm(other_q, other_predicted) < 0.25 * separation) {
+          solver_.Series(kWindowOrder, other_series);
+          switched = ScaledTangentNorm(other_series.col(1), &*other) <=
+                     5.0 * options_.max_tangent_change * (1.0 + ScaledTangentNorm(*other, nullptr));
+        }
+        factorized_here_ = false;
+      }
+      if (!switched) {
+        singular_points_.push_back(point);
+        SetRegularPose(a_input, a_q);
+        *finished = Ended(WalkStatus::kFailed, "cannot switch to the other branch at the branch point " + Where(star) +
+                                                   ": the other branch does not cross there in the input");
+        return Crossing::kFinished;
+      }
+      Eigen::MatrixXd star_data(a_q.size(), 2);
+      star_data.col(0) = at_star.col(0);
+      star_data.col(1) = *other;
+      window->outgoing = HermiteSegment(star, star_data, b_input, other_series);
+      window->far_q = other_q;
+    }
+    singular_points_.push_back(point);
+    window_ = std::move(window);
+    has_previous_ = false;
+    return LeaveOrEnterWindow(target, finished);
+  }
+  // No crossing was found: not a branch point after all. Back to where the caller stood.
+  SetRegularPose(start_input, start_q);
+  return Crossing::kNotCrossed;
+}
+
+Continuation::Crossing Continuation::LeaveOrEnterWindow(double target, WalkReport* finished) {
+  const Window& w = *window_;
+  if (w.Contains(target)) {
+    EvaluateInWindow(target);
+    *finished = Reached();
+    return Crossing::kFinished;
+  }
+  if (w.direction * (target - w.far_end) > 0.0) {
+    if (w.stop) {
+      EvaluateInWindow(w.star);
+      *finished = Ended(WalkStatus::kBranchPointStop,
+                        "a branch point at " + Where(w.star) + " (joints " +
+                            JointNames(solver_.system().mechanism(), singular_points_.back().joints) +
+                            "); stopped there as asked (--at-branch-point stop)");
+      return Crossing::kFinished;
+    }
+    const double far_end = w.far_end;
+    const Eigen::VectorXd far_q = w.far_q;
+    window_.reset();
+    SetRegularPose(far_end, far_q);
+    return Crossing::kPassed;
+  }
+  const double near_end = w.near_end;
+  const Eigen::VectorXd near_q = w.near_q;
+  window_.reset();
+  SetRegularPose(near_end, near_q);
+  return Crossing::kPassed;
+}
+
+void Continuation::EvaluateInWindow(double input) {
+  const Window& w = *window_;
+  const bool outgoing = !w.outgoing.empty() && w.direction * (input - w.star) > 0.0;
+  const HermiteSegment& segment = outgoing ? w.outgoing : w.incoming;
+  segment.Coefficients(input, kWindowOrder, window_series_);
+  series_ = window_series_;
+  series_order_ = kWindowOrder;
+  input_ = input;
+  q_ = window_series_.col(0);
+  from_window_ = true;
+  factorized_here_ = false;
+  has_previous_ = false;
+  rcond_ = ReciprocalCondition(solver_.system(), q_);
+  valid_order_ = rcond_ < kSingularRowRcond ? segment.ValidOrder() : kMaxOrder;
+}
+
+WalkReport Continuation::AdvanceTo(double target, double max_step) {
+  if (!started_) return Ended(WalkStatus::kFailed, "the walk was not started");
+  if (!std::isfinite(target) || !(max_step > 0.0)) return Ended(WalkStatus::kFailed, "invalid target or step");
+  const double cap = std::min(max_step, options_.max_step * input_scale_);
+  if (std::abs(target - input_) / cap > static_cast<double>(options_.max_steps)) {
+    return Ended(WalkStatus::kTooFar, Where(target) + " lies more than " + std::to_string(options_.max_steps) +
+                                          " continuation steps from " + Where(input_));
+  }
+  WalkReport finished;
+  if (window_ && LeaveOrEnterWindow(target, &finished) == Crossing::kFinished) return finished;
+  double h = cap;
+  bool examined = false;
+  long steps = 0;
+  while (input_ != target) {
+    if (++steps > options_.max_steps) {
+      return Ended(WalkStatus::kTooFar, "more than " + std::to_string(options_.max_steps) + " continuation steps");
+    }
+    const double remaining = target - input_;
+    const double direction = remaining > 0.0 ? 1.0 : -1.0;
+    const double next = std::abs(remaining) <= h ? target : input_ + direction * h;
+    const StepResult step = TryStep(next);
+    if (step.accepted && !step.sign_changed) {
+      examined = false;
+      h = std::min(cap, 2.0 * h);
+      continue;
+    }
+    if (step.accepted) {
+      // det J changed sign: a singular position lies between the previous pose and this one,
+      // and the step got across on the incoming branch. Go back, locate it and cross it properly.
+      const double estimate =
+          (previous_input_ * determinant_ - input_ * previous_determinant_) / (determinant_ - previous_determinant_);
+      SetRegularPose(previous_input_, previous_q_);
+      const Crossing crossing = CrossBranchPoint(estimate, direction, target, &finished);
+      if (crossing == Crossing::kFinished) return finished;
+      if (crossing == Crossing::kPassed) {
+        h = cap;
+        examined = false;
+        continue;
+      }
+      h *= 0.5;  // not a branch point: approach it with shorter steps
+      continue;
+    }
+    h *= 0.5;
+    if (!examined && h < options_.stall_fraction * cap) {
+      // Steps this short mean a singular position is near. A branch point is crossed here rather
+      // than crept around (creeping would follow a roundoff-sized detour onto the other branch).
+      examined = true;
+      const SingularStructure s = AnalyseSingularity(solver_.system(), q_);
+      if (s.rcond < kNearSingularRcond && s.kind == SingularKind::kBranchPoint) {
+        const Crossing crossing = CrossBranchPoint(input_, direction, target, &finished);
+        if (crossing == Crossing::kFinished) return finished;
+        if (crossing == Crossing::kPassed) {
+          h = cap;
+          examined = false;
+          continue;
+        }
+      }
+    }
+    if (h < options_.limit_resolution * input_scale_) {
+      const SingularStructure s = AnalyseSingularity(solver_.system(), q_);
+      if (s.rcond < kNearSingularRcond && s.kind == SingularKind::kLimitPoint) {
+        singular_points_.push_back({SingularKind::kLimitPoint, input_, s.rcond, s.joints, options_.at_branch_point});
+        return Ended(WalkStatus::kLimitPoint,
+                     "a limit point of the drive (a singular position: dead centre with respect to the input; joints " +
+                         JointNames(solver_.system().mechanism(), s.joints) + ") at " + Where(input_) +
+                         ": the input cannot pass it on this branch");
+      }
+      return Ended(WalkStatus::kFailed, "no pose could be found beyond " + Where(input_) +
+                                            " (Newton did not converge, and the pose there is not singular)");
+    }
+  }
+  return Reached();
+}
+
+}  // namespace koppel

@@ -1,0 +1,152 @@
+#include "koppel/solver/singular.hpp"
+
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <cmath>
+
+namespace koppel {
+namespace {
+
+// A joint's share of a left singular vector below this fraction of the largest counts as zero:
+// the vector is exact to about 1e-10 at a located singular point.
+constexpr double kJointShare = 1e-4;
+
+Eigen::VectorXd ColumnScale(const ConstraintSystem& system) {
+  Eigen::VectorXd scale = Eigen::VectorXd::Ones(system.NumCoordinates());
+  for (int i = 2; i < scale.size(); i += 3) scale(i) = 1.0 / system.length_scale();
+  return scale;
+}
+
+double Ratio(double small, double large) { return large > 0.0 ? small / large : 0.0; }
+
+// Joints whose constraint rows (and the drive joint, for the drive row) carry a share of `rows`.
+std::vector<int> JointsOf(const ConstraintSystem& system, const Eigen::VectorXd& rows) {
+  const int n_joints = static_cast<int>(system.mechanism().joints.size());
+  std::vector<double> share(n_joints, 0.0);
+  for (int k = 0; k < n_joints; ++k) share[k] = rows.segment(system.FirstRowOf(k), 2).norm();
+  if (rows.size() > system.DriveRow()) {
+    double& drive = share[system.mechanism().drive.joint];
+    drive = std::max(drive, std::abs(rows(system.DriveRow())));
+  }
+  const double largest = *std::max_element(share.begin(), share.end());
+  std::vector<int> joints;
+  for (int k = 0; k < n_joints; ++k) {
+    if (share[k] > kJointShare * largest) joints.push_back(k);
+  }
+  return joints;
+}
+
+// Coefficient of t^2 of F(q + t v, input): half the second derivative F''[v, v].
+Eigen::VectorXd HalfSecondDerivative(const ConstraintSystem& system, const Eigen::VectorXd& q, double input,
+                                     const Eigen::VectorXd& v) {
+  const int n = system.NumCoordinates(), m = system.NumEquations();
+  std::vector<Taylor<2>> qs(n), rs(m);
+  for (int i = 0; i < n; ++i) {
+    qs[i].c[0] = q(i);
+    qs[i].c[1] = v(i);
+  }
+  system.Residuals(qs.data(), Taylor<2>(input), rs.data());
+  Eigen::VectorXd out(m);
+  for (int i = 0; i < m; ++i) out(i) = rs[i].c[2];
+  return out;
+}
+
+}  // namespace
+
+const char* ToString(SingularKind kind) {
+  switch (kind) {
+    case SingularKind::kLimitPoint: return "limit";
+    case SingularKind::kBranchPoint: return "branch-point";
+  }
+  return "limit";
+}
+
+const char* ToString(BranchPointAction action) {
+  switch (action) {
+    case BranchPointAction::kContinue: return "continue";
+    case BranchPointAction::kStop: return "stop";
+    case BranchPointAction::kSwitch: return "switch";
+  }
+  return "continue";
+}
+
+std::optional<BranchPointAction> ParseBranchPointAction(const std::string& text) {
+  for (BranchPointAction a : {BranchPointAction::kContinue, BranchPointAction::kStop, BranchPointAction::kSwitch}) {
+    if (text == ToString(a)) return a;
+  }
+  return std::nullopt;
+}
+
+Eigen::MatrixXd ScaledJacobian(const ConstraintSystem& system, const Eigen::VectorXd& q, bool with_drive_row) {
+  Eigen::MatrixXd jacobian(system.NumEquations(), system.NumCoordinates());
+  system.Jacobian(q.data(), jacobian);
+  const Eigen::MatrixXd scaled = jacobian * ColumnScale(system).asDiagonal();
+  return with_drive_row ? scaled : Eigen::MatrixXd(scaled.topRows(system.NumEquations() - 1));
+}
+
+double ReciprocalCondition(const ConstraintSystem& system, const Eigen::VectorXd& q) {
+  const Eigen::MatrixXd j = ScaledJacobian(system, q, true);
+  if (j.cols() == 0) return 1.0;
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(j);
+  const Eigen::VectorXd& s = svd.singularValues();
+  return Ratio(s(s.size() - 1), s(0));
+}
+
+SingularStructure AnalyseSingularity(const ConstraintSystem& system, const Eigen::VectorXd& q) {
+  SingularStructure out;
+  const int n = system.NumCoordinates();
+  if (n == 0) return out;
+  const Eigen::MatrixXd full = ScaledJacobian(system, q, true);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd_full(full, Eigen::ComputeFullU);
+  const Eigen::VectorXd& s_full = svd_full.singularValues();
+  out.rcond = Ratio(s_full(s_full.size() - 1), s_full(0));
+  // The constraint rows of a one-DOF mechanism have rank n - 1 everywhere but at branch points.
+  const Eigen::MatrixXd constraints = full.topRows(full.rows() - 1);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd_c(constraints, Eigen::ComputeFullU);
+  const Eigen::VectorXd& s_c = svd_c.singularValues();
+  const int r = std::min<int>(n - 1, static_cast<int>(s_c.size()));
+  out.constraint_rcond = r >= 1 ? Ratio(s_c(r - 1), s_c(0)) : 1.0;
+  if (out.constraint_rcond < kBranchPointRcond) {
+    out.kind = SingularKind::kBranchPoint;
+    // the self-stress: the constraint rows' left singular vector of sigma_{n-1}
+    Eigen::VectorXd rows = Eigen::VectorXd::Zero(full.rows());
+    rows.head(constraints.rows()) = svd_c.matrixU().col(r - 1);
+    out.joints = JointsOf(system, rows);
+  } else {
+    out.kind = SingularKind::kLimitPoint;
+    out.joints = JointsOf(system, svd_full.matrixU().col(std::min<int>(n, full.rows()) - 1));
+  }
+  return out;
+}
+
+std::optional<Eigen::VectorXd> OtherBranchTangent(const ConstraintSystem& system, const Eigen::VectorXd& q, double input,
+                                                  const Eigen::VectorXd& tangent) {
+  const int n = system.NumCoordinates();
+  if (n == 0 || system.NumEquations() != n) return std::nullopt;
+  const Eigen::MatrixXd full = ScaledJacobian(system, q, true);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(full, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::VectorXd psi = svd.matrixU().col(n - 1);
+  // J (S v) = (J S) v: the null direction in coordinates, the drive held (drive row of J S v = 0)
+  const Eigen::VectorXd w = ColumnScale(system).cwiseProduct(svd.matrixV().col(n - 1));
+  auto second = [&](const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
+    // psi^T F''[u, v] by polarisation of the half second derivatives
+    return psi.dot(HalfSecondDerivative(system, q, input, u + v) - HalfSecondDerivative(system, q, input, u) -
+                   HalfSecondDerivative(system, q, input, v));
+  };
+  const double a = 2.0 * psi.dot(HalfSecondDerivative(system, q, input, tangent));
+  const double b = second(tangent, w);
+  const double c = 2.0 * psi.dot(HalfSecondDerivative(system, q, input, w));
+  // c a^2 + 2 b a + a0 = 0 for the coefficient along w; a0 = psi^T F''[t, t] is ~0 on a branch
+  const double scale = std::max({std::abs(a), std::abs(b), std::abs(c), 1e-300});
+  if (std::abs(c) <= 1e-9 * scale) return std::nullopt;  // the other branch runs at constant input
+  const double discriminant = b * b - a * c;
+  if (discriminant < 0.0) return std::nullopt;  // an isolated point, not a crossing
+  const double root = std::sqrt(discriminant);
+  const double alpha1 = (-b + root) / c, alpha2 = (-b - root) / c;
+  const double other = std::abs(alpha1) > std::abs(alpha2) ? alpha1 : alpha2;
+  if (other == 0.0) return std::nullopt;
+  return Eigen::VectorXd(tangent + other * w);
+}
+
+}  // namespace koppel

@@ -1,0 +1,99 @@
+#include "sweep_report.hpp"
+
+#include "common.hpp"
+
+#include "koppel/core/angles.hpp"
+
+#include <fmt/core.h>
+
+#include <iostream>
+
+namespace koppel::cli {
+namespace {
+
+double Shown(const Mechanism& m, double input) { return m.InputIsAngle() ? RadToDeg(input) : input; }
+
+std::string JointNames(const Mechanism& m, const std::vector<int>& joints) {
+  std::string names;
+  for (int j : joints) names += (names.empty() ? "" : ", ") + m.joints[j].name;
+  return names;
+}
+
+std::string Describe(const Mechanism& m, const SingularPoint& p) {
+  const char* what = p.kind == SingularKind::kLimitPoint ? "singular position: limit point (dead centre of the drive)"
+                                                         : "singular position: branch point (two branches cross)";
+  std::string text = std::string(what) + " at " + FormatInput(m, p.input) + " (joints " + JointNames(m, p.joints) +
+                     fmt::format("; reciprocal condition of the Jacobian {:.3g})", p.rcond);
+  if (p.kind == SingularKind::kLimitPoint) return text + ": the drive cannot pass it on this branch";
+  switch (p.action) {
+    case BranchPointAction::kContinue: return text + ": continued on the branch that continues the incoming one";
+    case BranchPointAction::kStop: return text + ": stopped there (--at-branch-point stop)";
+    case BranchPointAction::kSwitch: return text + ": switched to the other branch (--at-branch-point switch)";
+  }
+  return text;
+}
+
+}  // namespace
+
+void AddBranchPointOption(CLI::App* command, std::string& value) {
+  command->add_option("--at-branch-point", value,
+                      "Where two branches cross (change point of a Grashof-neutral linkage, a loop folding flat):\n"
+                      "continue (default) on the branch that continues the incoming one analytically, stop there, or\n"
+                      "switch to the other branch");
+}
+
+BranchPointAction ParseBranchPointFlag(const std::string& text) {
+  if (text.empty()) return BranchPointAction::kContinue;
+  if (const auto action = ParseBranchPointAction(text)) return *action;
+  Complain("--at-branch-point must be continue, stop or switch, not '" + text + "'");
+  throw Exit{kExitBadInput};
+}
+
+std::string FormatInput(const Mechanism& m, double input) {
+  return m.drive.input_name + " = " + FormatNumber(Shown(m, input)) + (m.InputIsAngle() ? " deg" : "");
+}
+
+void ReportSingularPoints(const std::string& file, const Mechanism& m, const std::vector<SingularPoint>& points) {
+  for (const SingularPoint& p : points) Complain(file + ": " + Describe(m, p));
+}
+
+void ReportSweep(const std::string& file, const Mechanism& m, const SweepResult& sweep) {
+  for (const std::string& note : sweep.notes) Complain(file + ": " + note);
+  ReportSingularPoints(file, m, sweep.singular_points);
+  std::string flagged;
+  int count = 0;
+  for (size_t i = 0; i < sweep.inputs.size(); ++i) {
+    if (!sweep.singular[i]) continue;
+    if (++count <= 8) flagged += (flagged.empty() ? "" : ", ") + FormatNumber(Shown(m, sweep.inputs[i]));
+  }
+  if (count > 0) {
+    Complain(file + ": " + std::to_string(count) + " row" + (count > 1 ? "s" : "") + " at singular poses (" + m.drive.input_name +
+             " = " + flagged + (count > 8 ? ", ..." : "") + (m.InputIsAngle() ? " deg" : "") +
+             "), flagged in the 'singular' column: their transfer functions up to 3rd order are the branch's limits "
+             "there, higher orders are left empty");
+  }
+  if (!sweep.complete() && !sweep.message.empty()) Complain(file + ": " + sweep.message);
+}
+
+nlohmann::json SingularPointsJson(const Mechanism& m, const std::vector<SingularPoint>& points) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const SingularPoint& p : points) {
+    nlohmann::json joints = nlohmann::json::array();
+    for (int j : p.joints) joints.push_back(m.joints[j].name);
+    nlohmann::json entry = {{"input", Shown(m, p.input)}, {"kind", ToString(p.kind)}, {"joints", joints}, {"rcond", p.rcond}};
+    if (p.kind == SingularKind::kBranchPoint) entry["action"] = ToString(p.action);
+    list.push_back(entry);
+  }
+  return list;
+}
+
+nlohmann::json SweepEventsJson(const Mechanism& m, const SweepResult& sweep) {
+  nlohmann::json gaps = nlohmann::json::array();
+  for (const InputInterval& g : sweep.gaps) gaps.push_back({{"from", Shown(m, g.from)}, {"to", Shown(m, g.to)}});
+  return {{"singular_points", SingularPointsJson(m, sweep.singular_points)},
+          {"gaps", gaps},
+          {"notes", sweep.notes},
+          {"reached", {{"from", Shown(m, sweep.reached.from)}, {"to", Shown(m, sweep.reached.to)}}}};
+}
+
+}  // namespace koppel::cli

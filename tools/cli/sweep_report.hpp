@@ -1,0 +1,34 @@
+// What every sweeping command (analyze, curve, deadcentres, proportional, range) tells about the
+// walk along the drive: the --at-branch-point flag, the singular points met, the flagged rows,
+// the gaps of the requested range, as stderr lines and as JSON.
+#pragma once
+
+#include "koppel/core/mechanism.hpp"
+#include "koppel/solver/sweep.hpp"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace koppel::cli {
+
+// Adds --at-branch-point continue|stop|switch to a command; `value` receives the text.
+void AddBranchPointOption(CLI::App* command, std::string& value);
+// The action named by the flag's text. Exit{2} with the choices otherwise.
+BranchPointAction ParseBranchPointFlag(const std::string& text);
+
+// An input value for people: degrees for an R drive ("phi = 180 deg"), length for a P drive.
+std::string FormatInput(const Mechanism& mechanism, double input);
+
+// Prints on stderr, prefixed by the file: the notes, every singular point (input, kind, joints,
+// reciprocal condition, what the sweep did), the rows flagged singular, and the gaps.
+void ReportSweep(const std::string& file, const Mechanism& mechanism, const SweepResult& sweep);
+void ReportSingularPoints(const std::string& file, const Mechanism& mechanism, const std::vector<SingularPoint>& points);
+
+// The same as JSON: {"singular_points": [...], "gaps": [...], "notes": [...], "reached": {...}},
+// inputs in the drive's display unit (deg or length).
+nlohmann::json SweepEventsJson(const Mechanism& mechanism, const SweepResult& sweep);
+nlohmann::json SingularPointsJson(const Mechanism& mechanism, const std::vector<SingularPoint>& points);
+
+}  // namespace koppel::cli

@@ -38,7 +38,7 @@ std::optional<Extremum> FindExtremum(const Mechanism& m, const SweepResult& swee
   const Eigen::VectorXd q = sweep.poses.row(best).transpose();
   const StationaryPoint p = RefineStationary(m, output, component, sweep.inputs[best], q);
   const bool interior = best > 0 && best < n - 1;
-  if (!p.found) {
+  if (!p.ok()) {
     if (interior) {
       *detail = p.message;
       return std::nullopt;
@@ -136,7 +136,7 @@ CheckOutcome EvaluateFigure(const MechanismFile& file, const CatalogCard& card, 
     options.step = input_internal(card.step);
     const DeadCentreReport r = FindDeadCentres(m, output, f.component, options);
     if (!r.has_stroke || !r.classified) {
-      out.detail = r.message.empty() ? "no extended and folded dead centre found" : r.message;
+      out.detail = r.sweep.message.empty() ? "no extended and folded dead centre found" : r.sweep.message;
       return out;
     }
     const double turn = 2 * kPi;
@@ -155,7 +155,7 @@ CheckOutcome EvaluateFigure(const MechanismFile& file, const CatalogCard& card, 
     if (!a || !b) Fail(file, f, error);
     const Proportionality p = ProportionalityDeviation(m, output, input_internal(*a), input_internal(*b), CrankLength(m), std::nullopt,
                                                        input_internal(card.step) / 20);
-    if (!p.ok) {
+    if (!Usable(p.status)) {
       out.detail = p.message;
       return out;
     }
@@ -169,7 +169,7 @@ CheckOutcome EvaluateFigure(const MechanismFile& file, const CatalogCard& card, 
     std::optional<double> at;
     if (const auto a = f.args.find("at"); a != f.args.end()) at = input_internal(file.parameters.Evaluate(a->second, &error).value_or(0));
     const StraightStretch s = LongestStraightStretch(m, m.outputs[output].p, *limit, at, kPi, DegToRad(0.02));
-    if (!s.found) {
+    if (!s.ok()) {
       out.detail = s.message;
       return out;
     }

@@ -9,6 +9,20 @@
 #include <filesystem>
 
 namespace koppel {
+namespace {
+
+// The mechanism file's text without its catalog card, read once: the builder parses it from
+// memory for every evaluation, and the card (a third to two thirds of a catalog entry) does not
+// make the mechanism. Precondition: the file was read without problems.
+std::string MechanismTextWithoutCard(const std::string& path) {
+  YAML::Node document = YAML::LoadFile(path);
+  document.remove("catalog");
+  YAML::Emitter out;
+  out << document;
+  return out.c_str();
+}
+
+}  // namespace
 
 FitProblem ReadFitProblem(const std::string& path) {
   const YAML::Node root = ParseYamlText(ReadInputText(path), path);
@@ -17,13 +31,15 @@ FitProblem ReadFitProblem(const std::string& path) {
   YamlReader r(path, nullptr);
   r.set_fallback(YAML::Mark());
   if (!r.ExpectMap(root, "")) throw InputError(r.diagnostics());
-  r.CheckKeys(root, "", {"mechanism", "parameters", "starts", "require", "targets"});
+  r.CheckKeys(root, "", {"mechanism", "parameters", "starts", "require", "tolerance", "targets"});
   const YAML::Node mech = r.Require(root, "mechanism", "");
   if (!r.diagnostics().empty()) throw InputError(r.diagnostics());
   const std::string relative = r.Text(mech, "mechanism").value_or("");
   problem.mechanism_path = (std::filesystem::path(path).parent_path() / relative).string();
+  std::string mechanism_text;
   try {
     problem.base = ReadMechanismFile(problem.mechanism_path);
+    mechanism_text = MechanismTextWithoutCard(problem.mechanism_path);
   } catch (const InputError& e) {
     std::vector<Diagnostic> all = {{path, mech.Mark().line + 1, mech.Mark().column + 1, "mechanism", "the mechanism file has problems:"}};
     all.insert(all.end(), e.diagnostics().begin(), e.diagnostics().end());
@@ -55,7 +71,23 @@ FitProblem ReadFitProblem(const std::string& path) {
     }
     problem.parameters.push_back(p);
   }
-  if (const YAML::Node s = root["starts"]; s.IsDefined()) problem.options.starts = std::max(1, r.Count(s, "starts").value_or(1));
+  if (const YAML::Node s = root["starts"]; s.IsDefined()) {
+    problem.options.starts = r.Count(s, "starts").value_or(problem.options.starts);
+    if (problem.options.starts < 1 || problem.options.starts > 10000) r.Error(s, "starts", "needs 1 to 10000 starts");
+  }
+  // tolerance: one number for every target in its own unit (length or deg), or {length, angle}
+  if (const YAML::Node tol = root["tolerance"]; tol.IsDefined()) {
+    if (tol.IsMap()) {
+      r.CheckKeys(tol, "tolerance", {"length", "angle"});
+      if (tol["length"].IsDefined()) problem.options.length_tolerance = r.Number(tol["length"], "tolerance.length").value_or(0);
+      if (tol["angle"].IsDefined()) problem.options.angle_tolerance = DegToRad(r.Number(tol["angle"], "tolerance.angle").value_or(0));
+    } else {
+      const double v = r.Number(tol, "tolerance").value_or(0);
+      problem.options.length_tolerance = v;
+      problem.options.angle_tolerance = DegToRad(v);
+    }
+    if (!(problem.options.length_tolerance > 0 && problem.options.angle_tolerance > 0)) r.Error(tol, "tolerance", "a tolerance must be positive");
+  }
   if (const YAML::Node q = root["require"]; q.IsDefined() && r.ExpectMap(q, "require")) {
     r.CheckKeys(q, "require", {"from", "to"});
     problem.options.require_from = input_of(r.Number(r.Require(q, "from", "require"), "require.from").value_or(0));
@@ -68,7 +100,7 @@ FitProblem ReadFitProblem(const std::string& path) {
       const std::string tpath = Index("targets", static_cast<int>(i));
       if (!r.ExpectMap(t, tpath)) continue;
       r.CheckKeys(t, tpath, {"point", "output", "deadcentre", "straight", "input", "from", "to", "samples", "at", "value", "weight",
-                             "free_input", "name"});
+                             "free_input", "name", "tolerance"});
       FitTarget target;
       if (t["straight"].IsDefined()) {
         // a straight line over [from, to]: `input` is `from`
@@ -80,6 +112,7 @@ FitProblem ReadFitProblem(const std::string& path) {
       } else if (t["input"].IsDefined()) target.input = input_of(r.Number(t["input"], Child(tpath, "input")).value_or(0));
       else r.Error(t, Child(tpath, "input"), "missing required key 'input' (the start value when free_input)");
       if (t["weight"].IsDefined()) target.weight = r.Number(t["weight"], Child(tpath, "weight")).value_or(1);
+      if (t["weight"].IsDefined() && target.weight == 0) r.Error(t["weight"], Child(tpath, "weight"), "a weight must not be 0");
       if (t["free_input"].IsDefined()) target.input_free = r.Flag(t["free_input"], Child(tpath, "free_input")).value_or(false);
       const char* kind = t["point"].IsDefined() ? "point" : t["deadcentre"].IsDefined() ? "deadcentre" : t["straight"].IsDefined() ? "straight" : "output";
       const std::string name = t[kind].IsDefined() ? r.Text(t[kind], Child(tpath, kind)).value_or("") : "";
@@ -105,9 +138,15 @@ FitProblem ReadFitProblem(const std::string& path) {
         const YAML::Node v = r.Require(t, "value", tpath);
         if (v.IsDefined() && !v.IsNull()) {
           const double value = r.Number(v, Child(tpath, "value")).value_or(0);
-          const bool angle_out = m.OutputIsAngle(target.output);
-          target.value = angle_out ? DegToRad(value) : value;
+          target.value = TargetUnit(m, target) == FitUnit::kAngle ? DegToRad(value) : value;
         }
+      }
+      if (const YAML::Node tol = t["tolerance"]; tol.IsDefined()) {
+        // in the target's unit: degrees for an angle output or a dead centre of an R drive
+        const double v = r.Number(tol, Child(tpath, "tolerance")).value_or(0);
+        const bool angle_target = TargetUnit(m, target) == FitUnit::kAngle;
+        if (!(v > 0)) r.Error(tol, Child(tpath, "tolerance"), "a tolerance must be positive");
+        target.tolerance = angle_target ? DegToRad(v) : v;
       }
       problem.targets.push_back(target);
     }
@@ -118,11 +157,11 @@ FitProblem ReadFitProblem(const std::string& path) {
   // the builder: the mechanism file again with the free parameters as overrides
   const std::string mechanism_path = problem.mechanism_path;
   const std::vector<FitParameter> free = problem.parameters;
-  problem.builder = [mechanism_path, free](const std::vector<double>& values, Mechanism* out, std::string* error) {
+  problem.builder = [mechanism_path, mechanism_text, free](const std::vector<double>& values, Mechanism* out, std::string* error) {
     Overrides overrides;
     for (size_t j = 0; j < free.size(); ++j) overrides.emplace_back(free[j].name, fmt::format("{:.17g}", values[j]));
     try {
-      *out = ReadMechanismFile(mechanism_path, overrides).mechanism;
+      *out = ParseMechanismText(mechanism_text, mechanism_path, overrides).mechanism;
       return true;
     } catch (const InputError& e) {
       *error = e.what();

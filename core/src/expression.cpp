@@ -1,4 +1,5 @@
 #include "koppel/core/expression.hpp"
+#include "koppel/core/angles.hpp"
 
 #include "koppel/core/limits.hpp"
 
@@ -10,7 +11,7 @@
 
 namespace koppel {
 namespace {
-constexpr double kPiValue = 3.14159265358979323846;
+constexpr double kPiValue = kPi;
 
 std::atomic<long long> parameter_reads{0};
 

@@ -44,4 +44,50 @@ Eigen::Vector2d FourBarCouplerPoint(double l1, double l2, double l3, double l4, 
   return a + k * turned;
 }
 
+std::optional<RockerValues> FourBarRocker(double a, double b, double c, double d, double phi, int side) {
+  const Eigen::Vector2d pa(a * std::cos(phi), a * std::sin(phi)), b0(d, 0.0);
+  const Eigen::Vector2d ab0 = b0 - pa;
+  const double dist = ab0.norm();
+  if (dist > b + c || dist < std::abs(b - c) || dist == 0.0) return std::nullopt;
+  const double along = (b * b - c * c + dist * dist) / (2 * dist);
+  const double across = std::sqrt(std::max(0.0, b * b - along * along));
+  const Eigen::Vector2d u = ab0 / dist, n(-u.y(), u.x());
+  const Eigen::Vector2d pb = pa + along * u + side * across * n;
+  const double psi = std::atan2(pb.y() - b0.y(), pb.x() - b0.x());
+  const double theta = std::atan2(pb.y() - pa.y(), pb.x() - pa.x());
+  return RockerValues{psi, a * std::sin(phi - theta) / (c * std::sin(psi - theta)), pb};
+}
+
+std::vector<double> FourBarLimits(double a, double b, double c, double d) {
+  std::vector<double> limits;
+  for (double r : {b + c, std::abs(b - c)}) {
+    const double x = (a * a + d * d - r * r) / (2 * a * d);
+    if (std::abs(x) >= 1) continue;
+    const double phi = std::acos(x);
+    limits.push_back(phi);
+    limits.push_back(2 * M_PI - phi);
+  }
+  return limits;
+}
+
+std::optional<SlideValues> SliderCrankBranch(double l1, double l2, double e, double phi, int side) {
+  const double ax = l1 * std::sin(phi), ay = -e - l1 * std::cos(phi);
+  const double root2 = l2 * l2 - ay * ay;
+  if (root2 <= 0) return std::nullopt;
+  const double root = std::sqrt(root2);
+  return SlideValues{ax + side * root, l1 * std::cos(phi) - side * ay * l1 * std::sin(phi) / root};
+}
+
+std::vector<double> SliderCrankLimits(double l1, double l2, double e) {
+  std::vector<double> limits;
+  for (double ay : {l2, -l2}) {
+    const double x = (-e - ay) / l1;  // cos phi
+    if (std::abs(x) >= 1) continue;
+    const double phi = std::acos(x);
+    limits.push_back(phi);
+    limits.push_back(2 * M_PI - phi);
+  }
+  return limits;
+}
+
 }  // namespace koppel::test

@@ -3,6 +3,9 @@
 
 #include <Eigen/Core>
 
+#include <optional>
+#include <vector>
+
 namespace koppel::test {
 
 // Seed 000 (Ebene Schubkurbel mit einstellbarer Versetzung), "Übertragungsfunktionen":
@@ -32,5 +35,28 @@ double ProportionalS(double l6, double l1, double h, double phi);
 // A = l1 (cos phi, sin phi); B the intersection of circle(A, l2) and circle(B0, l3) to the left
 // (side = +1) or right (side = -1) of A -> B0; K = A + k R(kappa) (B - A)/|B - A|.
 Eigen::Vector2d FourBarCouplerPoint(double l1, double l2, double l3, double l4, double k, double kappa, double phi, int side);
+
+// Four-bar by circle intersection (any textbook, e.g. Luck/Modler, Getriebetechnik, ch. 3):
+// A0 = 0, B0 = (d, 0), A = a (cos phi, sin phi), |AB| = b, |B0B| = c, B to the left (side +1) or
+// right (side -1) of A -> B0; psi = angle of B0 -> B. psi' from the loop's velocity equation
+// a phi' sin(phi - theta) = c psi' sin(psi - theta), theta the coupler angle A -> B.
+// Empty where the dyad cannot close.
+struct RockerValues {
+  double psi, psi1;
+  Eigen::Vector2d b;
+};
+std::optional<RockerValues> FourBarRocker(double a, double b, double c, double d, double phi, int side);
+// Crank angles in [0, 2 pi) of the four-bar's limit points (|A B0| = b + c or |b - c|, law of cosines).
+std::vector<double> FourBarLimits(double a, double b, double c, double d);
+
+// Seed 000's slider-crank on either assembly branch: A = (l1 sin phi, -e - l1 cos phi),
+// B = (s, 0) with s = A_x + side sqrt(l2^2 - A_y^2); s' by differentiating that. Empty where
+// the coupler cannot reach the slide line.
+struct SlideValues {
+  double s, s1;
+};
+std::optional<SlideValues> SliderCrankBranch(double l1, double l2, double e, double phi, int side);
+// Crank angles in [0, 2 pi) of its limit points (|A_y| = l2).
+std::vector<double> SliderCrankLimits(double l1, double l2, double e);
 
 }  // namespace koppel::test

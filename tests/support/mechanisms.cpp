@@ -136,4 +136,102 @@ Mechanism WattSixBar() {
   return m;
 }
 
+Mechanism PlainFourBar(double a, double b, double c, double d, double input, Eigen::Vector2d hint_b, bool drive_at_rocker) {
+  Mechanism m;
+  m.name = "four-bar";
+  m.links = {{"frame", true, {{"A0", {0, 0}}, {"B0", {d, 0}}}},
+             {"crank", false, {{"A0", {0, 0}}, {"A", {a, 0}}}},
+             {"coupler", false, {{"A", {0, 0}}, {"B", {b, 0}}}},
+             {"rocker", false, {{"B0", {0, 0}}, {"B", {c, 0}}}}};
+  m.joints = {Revolute(m, "A0", "frame", "crank"), Revolute(m, "A", "crank", "coupler"), Revolute(m, "B", "coupler", "rocker"),
+              Revolute(m, "B0", "frame", "rocker")};
+  m.drive.joint = drive_at_rocker ? 3 : 0;
+  Output psi, theta;
+  psi.name = "psi";
+  psi.kind = OutputKind::kLinkAngle;
+  psi.link = 3;
+  theta.name = "theta";
+  theta.kind = OutputKind::kLinkAngle;
+  theta.link = 2;
+  m.outputs = {psi, theta};
+  m.hint.input = input;
+  Hint(m, "coupler", "B", hint_b);
+  return m;
+}
+
+Mechanism FoldingSixBar(double r, double gamma, double e, double fold_direction) {
+  Mechanism m;
+  m.name = "folding-six-bar";
+  const Eigen::Vector2d d0(4 + e * std::cos(fold_direction), e * std::sin(fold_direction));
+  m.links = {{"frame", true, {{"A0", {0, 0}}, {"B0", {4, 0}}, {"D0", d0}}},
+             {"crank", false, {{"A0", {0, 0}}, {"A", {1, 0}}}},
+             {"coupler", false, {{"A", {0, 0}}, {"B", {3.5, 0}}}},
+             {"rocker", false, {{"B0", {0, 0}}, {"B", {3, 0}}, {"C", {r * std::cos(gamma), r * std::sin(gamma)}}}},
+             {"link5", false, {{"C", {0, 0}}, {"D", {e, 0}}}},
+             {"link6", false, {{"D0", {0, 0}}, {"D", {r, 0}}}}};
+  m.joints = {Revolute(m, "A0", "frame", "crank"), Revolute(m, "A", "crank", "coupler"), Revolute(m, "B", "coupler", "rocker"),
+              Revolute(m, "B0", "frame", "rocker"), Revolute(m, "C", "rocker", "link5"), Revolute(m, "D", "link5", "link6"),
+              Revolute(m, "D0", "frame", "link6")};
+  m.drive.joint = 0;
+  Output psi, chi;
+  psi.name = "psi";
+  psi.kind = OutputKind::kLinkAngle;
+  psi.link = 3;
+  chi.name = "chi";
+  chi.kind = OutputKind::kLinkAngle;
+  chi.link = 5;
+  m.outputs = {psi, chi};
+  // assembled at phi = 90 deg with B above A0B0 and the second loop a parallelogram
+  const Eigen::Vector2d a(0, 1), b0(4, 0), u = (b0 - a).normalized(), n(-u.y(), u.x());
+  const double dist = (b0 - a).norm(), along = (3.5 * 3.5 - 3.0 * 3.0 + dist * dist) / (2 * dist);
+  const Eigen::Vector2d b = a + along * u + std::sqrt(3.5 * 3.5 - along * along) * n;
+  const double psi_at = std::atan2(b.y(), b.x() - 4);
+  const Eigen::Vector2d c = b0 + r * Eigen::Vector2d(std::cos(psi_at + gamma), std::sin(psi_at + gamma));
+  m.hint.input = M_PI / 2;
+  Hint(m, "coupler", "B", b);
+  Hint(m, "link6", "D", c + (d0 - b0));
+  return m;
+}
+
+Mechanism FiveBar() {
+  Mechanism m;
+  m.name = "five-bar";
+  m.links = {{"frame", true, {{"A0", {0, 0}}, {"E0", {4, 0}}}},
+             {"crank", false, {{"A0", {0, 0}}, {"A", {1.5, 0}}}},
+             {"l2", false, {{"A", {0, 0}}, {"C", {3, 0}}}},
+             {"l3", false, {{"C", {0, 0}}, {"E", {3, 0}}}},
+             {"l4", false, {{"E0", {0, 0}}, {"E", {1.5, 0}}}}};
+  m.joints = {Revolute(m, "A0", "frame", "crank"), Revolute(m, "A", "crank", "l2"), Revolute(m, "C", "l2", "l3"),
+              Revolute(m, "E", "l3", "l4"), Revolute(m, "E0", "frame", "l4")};
+  m.drive.joint = 0;
+  m.hint.input = M_PI / 2;
+  Hint(m, "l2", "C", {2, 3});
+  Hint(m, "l4", "E", {4, 1.5});
+  return m;
+}
+
+Mechanism RedundantParallelogram() {
+  Mechanism m = PlainFourBar(1, 3, 1, 3, M_PI / 2, {3, 1});
+  m.name = "redundant-parallelogram";
+  m.links[0].points.push_back({"E0", {1.5, 0}});
+  m.links[2].points.push_back({"E", {1.5, 0}});
+  m.links.push_back({"third", false, {{"E0", {0, 0}}, {"E", {1, 0}}}});
+  m.joints.push_back(Revolute(m, "E0", "frame", "third"));
+  m.joints.push_back(Revolute(m, "E", "coupler", "third"));
+  return m;
+}
+
+Mechanism Scaled(const Mechanism& original, double factor) {
+  Mechanism m = original;
+  for (Link& link : m.links) {
+    for (NamedPoint& p : link.points) p.local *= factor;
+  }
+  for (AssemblyHint::Entry& e : m.hint.points) e.global *= factor;
+  if (!m.InputIsAngle()) {
+    m.drive.zero *= factor;
+    m.hint.input *= factor;
+  }
+  return m;
+}
+
 }  // namespace koppel::test

@@ -31,4 +31,6 @@ std::string ReadText(const std::string& path) {
 
 std::string CatalogEntryPath(const std::string& id) { return std::string(KOPPEL_CATALOG_DIR) + "/" + id + ".yaml"; }
 
+std::string TestDataPath(const std::string& name) { return std::string(KOPPEL_TEST_DATA_DIR) + "/" + name; }
+
 }  // namespace koppel::test

@@ -24,5 +24,6 @@ class TempDir {
 
 std::string ReadText(const std::string& path);
 std::string CatalogEntryPath(const std::string& id);  // catalog/entries/<id>.yaml
+std::string TestDataPath(const std::string& name);    // tests/data/<name>
 
 }  // namespace koppel::test

@@ -36,7 +36,7 @@ TEST_CASE("curve --straight reproduces seed 003's reading example", "[cli]") {
   CHECK(v.at("phi_A") == Approx(98.3).margin(0.05));
   CHECK(v.at("L") == Approx(3.91).margin(0.005));
   const test::RunResult table = test::RunKoppel("curve " + test::CatalogEntryPath("mzc-crank-rocker") + " --point coupler.K --step 90");
-  CHECK_THAT(table.out, Catch::StartsWith("phi,x,y,dx,dy,arc,curvature\n0,"));
+  CHECK_THAT(table.out, Catch::StartsWith("phi,x,y,dx,dy,arc,curvature,singular\n0,"));
   CHECK(test::RunKoppel("curve " + test::CatalogEntryPath("mzc-crank-rocker") + " --point Q").exit_code == 2);
   CHECK(test::RunKoppel("curve " + test::CatalogEntryPath("mzc-crank-rocker") + " --point B").exit_code == 2);  // on two links
 }

@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -24,13 +25,71 @@ TEST_CASE("synth deadcentre crank-rocker writes a mechanism that deadcentres con
   const test::RunResult dc = test::RunKoppel("deadcentres " + yaml + " --output psi --summary");
   REQUIRE(dc.exit_code == 0);
   const auto v = test::ParseSummary(dc.out);
-  CHECK(v.at("psi_H") == Approx(60).margin(1e-9));                      // the rocker swing psi0
+  CHECK(v.at("psi_H") == Approx(60).margin(1e-9));                                          // the rocker swing psi0
   CHECK(std::fmod(v.at("phi_a") - v.at("phi_i") + 720, 360) == Approx(164).margin(1e-9));  // phi0, folded -> extended
+  // the document's sense: the rocker turns counter-clockwise (as the crank) from folded to extended
+  CHECK(v.at("psi_a") - v.at("psi_i") == Approx(60).margin(1e-9));
   CHECK(test::RunKoppel("analyze " + yaml + " --step 10").exit_code == 0);
-  const test::RunResult best = test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60");
-  CHECK(test::ParseSummary(best.out).at("mu_min") == Approx(40.56).margin(0.01));
   CHECK(test::RunKoppel("synth deadcentre crank-rocker --phi0 164").exit_code == 2);  // --psi0 missing
-  CHECK(test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60 --beta 170").exit_code == 1);
+  CHECK(test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60 --rocker-sense sideways").exit_code == 2);
+  CHECK(test::RunKoppel("synth deadcentre crank-rocker --phi0 400 --psi0 60").exit_code == 2);
+  const test::RunResult outside = test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60 --beta 70");
+  CHECK(outside.exit_code == 1);
+  CHECK_THAT(outside.err, Catch::Contains("outside the arc LE"));
+  CHECK(outside.out.empty());
+}
+
+TEST_CASE("issue 12: synth deadcentre crank-rocker --phi0 196 --psi0 60 is a crank-rocker in the stated sense", "[cli][synth]") {
+  // the reported bug: l1 = 5.8e-7 and "mu_min 38 deg" with exit 0
+  test::TempDir dir;
+  for (const std::string sense : {"same", "opposite"}) {
+    INFO(sense);
+    const std::string yaml = (dir.path() / (sense + ".yaml")).string();
+    const test::RunResult r = test::RunKoppel("synth deadcentre crank-rocker --phi0 196 --psi0 60 --rocker-sense " + sense + " -o " + yaml);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const auto s = test::ParseSummary(r.out);
+    CHECK(s.at("l1") > 0.3);
+    CHECK(s.at("reanalysed_phi0") == Approx(196).margin(1e-9));
+    CHECK(s.at("reanalysed_psi0") == Approx(60).margin(1e-9));
+    const auto v = test::ParseSummary(test::RunKoppel("deadcentres " + yaml + " --output psi --summary").out);
+    CHECK(std::fmod(v.at("phi_a") - v.at("phi_i") + 720, 360) == Approx(196).margin(1e-9));
+    CHECK(v.at("psi_a") - v.at("psi_i") == Approx(sense == "same" ? 60 : -60).margin(1e-9));
+    // mu_min as the analysis finds it over a full turn of the written file
+    const test::RunResult a = test::RunKoppel("analyze " + yaml + " --step 0.5");
+    REQUIRE(a.exit_code == 0);
+    double mu_min = 90;
+    std::istringstream rows(a.out);
+    std::string line;
+    std::getline(rows, line);
+    const int mu_column = static_cast<int>(std::count(line.begin(), line.begin() + line.find(",mu,"), ',')) + 1;
+    while (std::getline(rows, line)) {
+      std::istringstream cells(line);
+      std::string cell;
+      for (int c = 0; c <= mu_column; ++c) std::getline(cells, cell, ',');
+      mu_min = std::min(mu_min, std::stod(cell));
+    }
+    CHECK(s.at("mu_min") == Approx(mu_min).margin(1e-9));  // the minimum sits at phi = 0 or 180, on the samples
+  }
+  // the mirror image turns clockwise, the document's drawing; deadcentres sweeps it backwards
+  const std::string cw = (dir.path() / "cw.yaml").string();
+  REQUIRE(test::RunKoppel("synth deadcentre crank-rocker --phi0 196 --psi0 60 --sense cw -o " + cw).exit_code == 0);
+  const auto m = test::ParseSummary(test::RunKoppel("deadcentres " + cw + " --output psi --summary").out);
+  CHECK(m.at("psi_H") == Approx(60).margin(1e-9));
+}
+
+TEST_CASE("synth deadcentre refuses degenerate and impossible crank-rockers with exit 1", "[cli][synth]") {
+  const test::RunResult at180 = test::RunKoppel("synth deadcentre crank-rocker --phi0 180 --psi0 60");
+  CHECK(at180.exit_code == 1);
+  CHECK_THAT(at180.err, Catch::Contains("vanish") && Catch::Contains("choose beta"));
+  CHECK(at180.out.empty());
+  const test::RunResult none = test::RunKoppel("synth deadcentre crank-rocker --phi0 300 --psi0 30 --rocker-sense opposite");
+  CHECK(none.exit_code == 1);
+  CHECK_THAT(none.err, Catch::Contains("no crank-rocker has phi0 = 300 deg"));
+  // a chosen beta at phi0 = 180 deg is a genuine crank-rocker
+  CHECK(test::RunKoppel("synth deadcentre crank-rocker --phi0 180 --psi0 60 --beta 30").exit_code == 0);
+  const test::RunResult help = test::RunKoppel("synth deadcentre --help");
+  CHECK_THAT(help.out, Catch::Contains("--rocker-sense same (default, the document's definition)") && Catch::Contains("folded dead centre"));
 }
 
 TEST_CASE("synth deadcentre slider-crank and the charts", "[cli][synth]") {
@@ -41,12 +100,24 @@ TEST_CASE("synth deadcentre slider-crank and the charts", "[cli][synth]") {
   CHECK(test::ParseSummary(r.out).at("e_s0") == Approx(0.16).margin(0.005));
   const auto v = test::ParseSummary(test::RunKoppel("deadcentres " + yaml + " --output s --summary").out);
   CHECK(v.at("s_H") == Approx(1.0).margin(1e-9));
-  const test::RunResult chart = test::RunKoppel("synth chart slider-crank --phi0 110:130:10 --quiet");
+  const test::RunResult beyond = test::RunKoppel("synth deadcentre slider-crank --phi0 240 --stroke 1 -o " + yaml);
+  REQUIRE(beyond.exit_code == 0);
+  CHECK(test::ParseSummary(beyond.out).at("e") < 0);
+  const auto w = test::ParseSummary(test::RunKoppel("deadcentres " + yaml + " --output s --summary").out);
+  CHECK(std::fmod(w.at("phi_a") - w.at("phi_i") + 720, 360) == Approx(240).margin(1e-9));
+  CHECK(test::RunKoppel("synth deadcentre slider-crank --phi0 180 --stroke 1").exit_code == 1);
+  CHECK(test::RunKoppel("synth deadcentre slider-crank --phi0 120 --stroke 1 --offset 0.6").exit_code == 1);
+  const test::RunResult chart = test::RunKoppel("synth chart slider-crank --phi0 170:180:10 --quiet");
   REQUIRE(chart.exit_code == 0);
-  CHECK_THAT(chart.out, Catch::StartsWith("phi0,e_s0,l1_s0,l2_s0,mu_min,beta\n110,"));
-  const test::RunResult cr = test::RunKoppel("synth chart crank-rocker --phi0 164:164:1 --psi0 60:60:1 --quiet");
+  CHECK_THAT(chart.out, Catch::StartsWith("phi0,status,e_s0,l1_s0,l2_s0,mu_min,beta\n170,ok,"));
+  CHECK_THAT(chart.out, Catch::Contains("\n180,boundary,,,,,\n"));
+  const test::RunResult cr = test::RunKoppel("synth chart crank-rocker --phi0 164:164:1 --psi0 60:60:1 --rocker-sense both --quiet");
   REQUIRE(cr.exit_code == 0);
-  CHECK_THAT(cr.out, Catch::Contains("\n164,60,38.16"));
+  CHECK_THAT(cr.out, Catch::Contains("\n164,60,same,ok,40.37") && Catch::Contains("\n164,60,opposite,ok,38.16"));
+  // where no crank-rocker exists the chart says so instead of leaving the row out
+  const test::RunResult gap = test::RunKoppel("synth chart crank-rocker --phi0 120:120:1 --psi0 60:60:1 --quiet --format json");
+  REQUIRE(gap.exit_code == 0);
+  CHECK_THAT(gap.out, Catch::Contains("\"none\"") && Catch::Contains("null"));
   CHECK(test::RunKoppel("synth chart crank-rocker --phi0 170:160:1").exit_code == 2);
 }
 
@@ -72,11 +143,80 @@ TEST_CASE("synth fit: five precision points recover seed 003's dimensions", "[cl
   CHECK(v.at("l3") == Approx(2.5 * std::sqrt(3.0)).margin(1e-8));
   CHECK(v.at("k") == Approx(25.0 / 3).margin(1e-8));
   CHECK(v.at("full_rotation") == 1);
+  CHECK(v.at("starts") == 16);  // the default
+  CHECK(v.at("target1_K_residual") < 1e-9);
+  CHECK_THAT(r.out, Catch::Contains("target1_K_residual,") && Catch::Contains(",length\n"));
   CHECK(test::RunKoppel("analyze " + fitted + " --step 30").exit_code == 0);
   const std::string bad = dir.Write("bad.yaml", "mechanism: nowhere.yaml\nparameters: {}\ntargets: []\n");
   const test::RunResult b = test::RunKoppel("synth fit " + bad);
   CHECK(b.exit_code == 2);
   CHECK_THAT(b.err, Catch::Contains("bad.yaml:1:"));
+}
+
+TEST_CASE("issue 12: synth fit with direction targets at 153/202/223 deg finds the exact design", "[cli][synth]") {
+  // the reported bug: cost 6.46 and every target missed with exit 0 (202 deg compared with an
+  // output reported as -158 deg); then a local minimum with the single default start
+  const std::string problem = std::string(KOPPEL_TEST_DATA_DIR) + "/fit-direction-three-points.yaml";
+  const test::RunResult r = test::RunKoppel("synth fit " + problem);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto v = test::ParseSummary(r.out);
+  for (const std::string t : {"target1_dir", "target2_dir", "target3_dir"}) {
+    CHECK(v.at(t + "_residual") < 1e-8);  // degrees: 1e-10 rad
+    CHECK(v.at(t + "_met") == 1);
+    CHECK_THAT(r.out, Catch::Contains(t + "_residual,") && Catch::Contains(t + "_tolerance,1e-06,deg\n"));
+  }
+  CHECK(v.at("l1") == Approx(1.674809355059234).margin(1e-9));
+  CHECK(v.at("starts_at_best") >= 2);
+  // each start's Ceres report on stderr, and how many reached the best
+  CHECK_THAT(r.err, Catch::Contains("start 16:") && Catch::Contains("starts reached it"));
+  CHECK_THAT(test::RunKoppel("synth fit " + problem + " --quiet").err, !Catch::Contains("start 16:"));
+  // the same problem with one start: its start does not assemble at every target
+  test::TempDir dir;
+  const std::string text = test::ReadText(problem);
+  const std::string one = dir.Write("one.yaml", test::Replace(text, "require:", "starts: 1\nrequire:"));
+  dir.Write("fit-direction-fourbar.yaml", test::ReadText(std::string(KOPPEL_TEST_DATA_DIR) + "/fit-direction-fourbar.yaml"));
+  const test::RunResult single = test::RunKoppel("synth fit " + one + " --quiet");
+  CHECK(single.exit_code == 1);
+  CHECK_THAT(single.err, Catch::Contains("no start gave a design"));
+}
+
+TEST_CASE("synth fit: a problem that cannot be met exits 1 naming the targets and by how much", "[cli][synth]") {
+  const test::RunResult r = test::RunKoppel("synth fit " + std::string(KOPPEL_TEST_DATA_DIR) + "/fit-direction-unmeetable.yaml --quiet");
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.err, Catch::Contains("target 4 'impossible' misses by") && Catch::Contains("deg (tolerance 0.001 deg)"));
+  // what could be computed is still printed
+  const auto v = test::ParseSummary(r.out);
+  CHECK(v.at("target4_impossible_met") == 0);
+  CHECK(v.at("target4_impossible_residual") > 0.001);
+}
+
+TEST_CASE("synth fit: a design that does not assemble over require reports its drivable range", "[cli][synth]") {
+  test::TempDir dir;
+  const std::string mechanism = dir.Write("fourbar.yaml", test::ReadText(std::string(KOPPEL_TEST_DATA_DIR) + "/fit-direction-fourbar.yaml"));
+  // l1 = 2.9: 2.9 + 3.5 > 3 + 3, a non-Grashof linkage whose crank cannot turn fully; the target
+  // is its own direction at 20 deg, so the fit meets it and only the range fails
+  const test::RunResult probe = test::RunKoppel("analyze " + mechanism + " --set l1=2.9 --from 20 --to 20");
+  REQUIRE(probe.exit_code == 0);
+  const std::string row = probe.out.substr(probe.out.find('\n') + 1);
+  const double dir20 = std::stod(row.substr(row.find(',') + 1));
+  const std::string problem = dir.Write("range.yaml", "mechanism: fourbar.yaml\nparameters:\n  l1: {start: 2.8, lower: 2.7, upper: 3.0}\n"
+                                                      "starts: 1\nrequire: {from: 0, to: 360}\ntargets:\n  - {output: dir, input: 20, value: " +
+                                                          std::to_string(dir20) + "}\n");
+  const test::RunResult r = test::RunKoppel("synth fit " + problem + " --quiet");
+  INFO(r.err);
+  CHECK(r.exit_code == 1);
+  const auto v = test::ParseSummary(r.out);
+  CHECK(v.at("assembles_over_required_range") == 0);
+  CHECK(v.at("drivable_from") < 0);
+  CHECK(v.at("drivable_to") > 20);
+  CHECK(v.at("drivable_to") < 360);
+  CHECK_THAT(r.err, Catch::Contains("does not assemble over the required range 0 .. 360 deg: its drive reaches"));
+  // a tolerance that is not a positive number is bad input, with its line
+  const std::string bad = dir.Write("bad.yaml", test::Replace(test::ReadText(problem), "starts: 1", "starts: 1\ntolerance: -1"));
+  const test::RunResult b = test::RunKoppel("synth fit " + bad);
+  CHECK(b.exit_code == 2);
+  CHECK_THAT(b.err, Catch::Contains("bad.yaml:5:") && Catch::Contains("positive"));
 }
 
 }  // namespace koppel

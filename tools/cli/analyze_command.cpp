@@ -137,11 +137,11 @@ void RunAnalyze(const AnalyzeArgs& args) {
     j["order"] = options.order;
     j["complete"] = result.complete();
     j["status"] = ToString(result.status);
-    j.update(SweepEventsJson(m, result));
+    j.update(SweepEventsJson(m, EventsOf(result)));
     if (!result.complete()) j["message"] = result.message;
     WriteOutput(args.out, JsonText(j));
   }
-  ReportSweep(args.file, m, result);
+  ReportSweep(args.file, m, EventsOf(result));
   if (!result.complete()) throw Exit{kExitFailed};
 }
 

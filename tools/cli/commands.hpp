@@ -12,6 +12,11 @@ void AddCurveCommand(CLI::App& app);
 void AddProportionalCommand(CLI::App& app);
 void AddCognatesCommand(CLI::App& app);
 void AddSynthCommand(CLI::App& app);
+void AddRangeCommand(CLI::App& app);
+void AddClassifyCommand(CLI::App& app);
 void AddFitSubcommand(CLI::App& synth);  // koppel synth fit
+void AddPlotCommand(CLI::App& app);  // plot, draw, view: tools/plot
+void AddDrawCommand(CLI::App& app);
+void AddViewCommand(CLI::App& app);
 
 }  // namespace koppel::cli

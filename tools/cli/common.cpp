@@ -1,6 +1,7 @@
 #include "common.hpp"
 
 #include "koppel/core/expression.hpp"
+#include "koppel/solver/assembly.hpp"
 
 #include <fmt/core.h>
 
@@ -18,7 +19,15 @@ MechanismFile LoadMechanism(const std::string& path, const std::vector<std::stri
     std::vector<std::pair<std::string, std::string>> overrides;
     for (const std::string& s : sets) overrides.push_back(ParseAssignment(s));
     NoteInputFile(path);
-    return ReadMechanismFile(path, overrides);
+    MechanismFile file = ReadMechanismFile(path, overrides);
+    // one drive needs mobility 1: anything else is a modelling error, not a solver failure
+    const MobilityReport mobility = CheckMobility(file.mechanism);
+    if (!mobility.ok()) {
+      Complain(path + ": " + mobility.error);
+      throw Exit{kExitBadInput};
+    }
+    if (!mobility.note.empty()) Complain(path + ": note: " + mobility.note);
+    return file;
   } catch (const InputError& e) {
     for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
     throw Exit{kExitBadInput};

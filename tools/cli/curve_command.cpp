@@ -2,6 +2,7 @@
 // the straight-line analysis (Geradführung) of seed 003.
 #include "commands.hpp"
 #include "common.hpp"
+#include "sweep_report.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "koppel/analysis/coupler_curve.hpp"
@@ -12,7 +13,7 @@ namespace koppel::cli {
 namespace {
 
 struct Args {
-  std::string file, point, from, to, step, at, qg = "0.005", stretch, resolution = "0.02";
+  std::string file, point, from, to, step, at, qg = "0.005", stretch, resolution = "0.02", at_branch_point;
   std::vector<std::string> sets;
   bool straight = false;
   std::string format = "csv", out;
@@ -27,35 +28,39 @@ void Run(const Args& args) {
   auto in = [&](double v) { return angle ? DegToRad(v) : v; };
   auto shown = [&](double v) { return angle ? RadToDeg(v) : v; };
   const std::string unit = angle ? "deg" : "length";
+  ContinuationOptions continuation;
+  continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
   if (!args.straight) {
     SweepOptions range;
+    range.continuation = continuation;
     range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
     range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
     range.step = in(args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step));
-    if (range.step == 0) {
-      Complain("--step must not be 0");
+    std::string why;
+    CheckSampleCount(range.from, range.to, range.step, "--from/--to/--step");
+    if (!range.IsValid(&why)) {
+      Complain("--from/--to/--step: " + why);
       throw Exit{kExitBadInput};
     }
-    CheckSampleCount(range.from, range.to, range.step, "--from/--to/--step");
     const CouplerCurve c = TraceCurve(m, point, range);
     Table t;
-    t.columns = {m.drive.input_name, "x", "y", "dx", "dy", "arc", "curvature"};
+    t.columns = {m.drive.input_name, "x", "y", "dx", "dy", "arc", "curvature", "singular"};
     for (size_t i = 0; i < c.inputs.size(); ++i)
-      t.rows.push_back({shown(c.inputs[i]), c.points[i].x(), c.points[i].y(), c.d1[i].x(), c.d1[i].y(), c.arc_length[i], c.curvature[i]});
+      t.rows.push_back({shown(c.inputs[i]), c.points[i].x(), c.points[i].y(), c.d1[i].x(), c.d1[i].y(), c.arc_length[i], c.curvature[i],
+                        static_cast<double>(c.singular[i])});
     if (args.format == "json") {
       nlohmann::json j = t.ToJson();
       j["mechanism"] = m.name;
       j["point"] = m.links[point.link].name + "." + m.links[point.link].points[point.point].name;
-      j["complete"] = c.message.empty();
-      if (!c.message.empty()) j["message"] = c.message;
+      j["complete"] = c.sweep.complete();
+      j.update(SweepEventsJson(m, c.sweep));
+      if (!c.sweep.complete()) j["message"] = c.sweep.message;
       WriteOutput(args.out, JsonText(j));
     } else {
       WriteOutput(args.out, t.ToCsv());
     }
-    if (!c.message.empty()) {
-      Complain(args.file + ": " + c.message);
-      throw Exit{kExitFailed};
-    }
+    ReportSweep(args.file, m, c.sweep);
+    if (!c.sweep.complete()) throw Exit{kExitFailed};
     return;
   }
   if (!angle) {
@@ -80,16 +85,16 @@ void Run(const Args& args) {
     const double a = DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(0, colon))),
                  e = DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(colon + 1)));
     CheckSampleCount(std::min({a, e, *reference}), std::max({a, e, *reference}), resolution, "--stretch/--at/--resolution");
-    s = StretchBand(m, point, *reference, a, e, resolution);
+    s = StretchBand(m, point, *reference, a, e, resolution, continuation);
   } else {
     const double qg = ParseNumberFlag("--qg", args.qg);
     if (qg <= 0) {
       Complain("--qg must be positive");
       throw Exit{kExitBadInput};
     }
-    s = LongestStraightStretch(m, point, qg, reference, kPi, resolution);
+    s = LongestStraightStretch(m, point, qg, reference, kPi, resolution, continuation);
   }
-  if (!s.found) {
+  if (!s.ok()) {
     Complain(args.file + ": " + s.message);
     throw Exit{kExitFailed};
   }
@@ -114,7 +119,8 @@ void AddCurveCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "curve",
       "The coupler curve (Koppelkurve) of a point: x, y, dx/dinput, dy/dinput, arc length from the first row, and\n"
-      "the signed curvature, over the sweep.\n"
+      "the signed curvature, over the sweep, and the singular flag of `analyze` (1 at a singular position). The\n"
+      "sweep follows the assembly branch like `analyze`; gaps of the drivable range are named and give exit 1.\n"
       "--straight: straight-line guidance (Geradführung) as in the Meyer zur Capellen description. The tangent g at the\n"
       "reference point K_I (--at, default: the point of least curvature); Δy is the width of the band parallel to g that\n"
       "holds the stretch K_A..K_E, L its extent along g, Q_G = Δy/L. With --qg the longest stretch through K_I with\n"
@@ -131,6 +137,7 @@ void AddCurveCommand(CLI::App& app) {
   cmd->add_option("--at", args->at, "Input of the reference point K_I [deg] (default: least curvature)");
   cmd->add_option("--stretch", args->stretch, "A:E — measure this stretch [deg] instead of searching");
   cmd->add_option("--resolution", args->resolution, "Input resolution of the search [deg] (default 0.02)");
+  AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
   cmd->add_option("--format", args->format, "csv (default) or json");
   cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout");

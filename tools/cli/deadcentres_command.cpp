@@ -1,6 +1,7 @@
 // koppel deadcentres: the dead centres (Totlagen) of an output, their kind, and the stroke.
 #include "commands.hpp"
 #include "common.hpp"
+#include "sweep_report.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "koppel/analysis/dead_centres.hpp"
@@ -9,7 +10,7 @@ namespace koppel::cli {
 namespace {
 
 struct Args {
-  std::string file, output, from, to, step = "1";
+  std::string file, output, from, to, step = "1", at_branch_point;
   std::vector<std::string> sets;
   std::string format = "csv", out;
   bool summary = false;
@@ -28,16 +29,14 @@ void Run(const Args& args) {
   range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
   range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
   range.step = in(ParseNumberFlag("--step", args.step));
-  if (range.step == 0) {
-    Complain("--step must not be 0");
+  range.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
+  std::string why;
+  CheckSampleCount(range.from, range.to, range.step, "--from/--to/--step");
+  if (!range.IsValid(&why)) {
+    Complain("--from/--to/--step: " + why);
     throw Exit{kExitBadInput};
   }
-  CheckSampleCount(range.from, range.to, range.step, "--from/--to/--step");
   const DeadCentreReport r = FindDeadCentres(m, output, 0, range);
-  if (r.points.empty() && !r.message.empty()) {
-    Complain(args.file + ": " + r.message);
-    throw Exit{kExitFailed};
-  }
   const std::string name = m.outputs[output].name, in_unit = angle_in ? "deg" : "length", out_unit = angle_out ? "deg" : "length";
   Summary summary;
   if (r.has_stroke) {
@@ -63,8 +62,10 @@ void Run(const Args& args) {
     for (size_t i = 0; i < r.points.size(); ++i)
       points.push_back({{"input", table.rows[i][0]}, {"value", table.rows[i][1]}, {"d2", table.rows[i][2]}, {"kind", kinds[i]}});
     nlohmann::json j = {{"mechanism", m.name}, {"output", name}, {"input_unit", in_unit}, {"output_unit", out_unit},
-                        {"dead_centres", points}, {"classified", r.classified}, {"summary", summary.ToJson()}};
-    if (!r.message.empty()) j["message"] = r.message;
+                        {"dead_centres", points}, {"classified", r.classified}, {"summary", summary.ToJson()},
+                        {"complete", r.sweep.complete()}};
+    j.update(SweepEventsJson(m, r.sweep));
+    if (!r.sweep.complete()) j["message"] = r.sweep.message;
     WriteOutput(args.out, JsonText(j));
   } else if (args.summary) {
     WriteOutput(args.out, summary.ToCsv());
@@ -74,8 +75,9 @@ void Run(const Args& args) {
       csv += kinds[i] + "," + FormatNumber(table.rows[i][0]) + "," + FormatNumber(table.rows[i][1]) + "," + FormatNumber(table.rows[i][2]) + "\n";
     WriteOutput(args.out, csv);
   }
-  if (!r.message.empty()) {
-    Complain(args.file + ": " + r.message + " (dead centres found up to there are listed)");
+  ReportSweep(args.file, m, r.sweep);
+  if (!r.sweep.complete()) {
+    Complain(args.file + ": the dead centres over the drivable part are listed");
     throw Exit{kExitFailed};
   }
 }
@@ -93,6 +95,9 @@ void AddDeadCentresCommand(CLI::App& app) {
       "the output there (deg for angles), its second-order transfer function. --summary prints phi_a, phi_i,\n"
       "s_a, s_i, the stroke s_H, the crank angle of the forward stroke phi_H (from phi_a to phi_i,\n"
       "counter-clockwise) and the phase ratio phi_H/(360 - phi_H).\n"
+      "The search follows the assembly branch like `analyze`: singular points met are reported on stderr;\n"
+      "where part of the range cannot be driven, the dead centres over the drivable part are listed, the gaps\n"
+      "named, and the exit code is 1.\n"
       "Example: koppel deadcentres catalog/entries/slider-crank-offset.yaml --output s --summary");
   cmd->add_option("file", args->file, "Mechanism YAML file")->required();
   cmd->add_option("--output", args->output, "Scalar output (default: the first)");
@@ -100,6 +105,7 @@ void AddDeadCentresCommand(CLI::App& app) {
   cmd->add_option("--to", args->to, "Search up to this input (default: the file's sweep)");
   cmd->add_option("--step", args->step, "Search step; dead centres closer than this may be missed (default 1)");
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
+  AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_flag("--summary", args->summary, "Print the stroke summary instead of the dead centres");
   cmd->add_option("--format", args->format, "csv (default) or json (both tables)");
   cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout");

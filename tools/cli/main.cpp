@@ -37,6 +37,11 @@ int Run(int argc, char** argv) {
   koppel::cli::AddProportionalCommand(app);
   koppel::cli::AddCognatesCommand(app);
   koppel::cli::AddSynthCommand(app);
+  koppel::cli::AddRangeCommand(app);
+  koppel::cli::AddClassifyCommand(app);
+  koppel::cli::AddPlotCommand(app);
+  koppel::cli::AddDrawCommand(app);
+  koppel::cli::AddViewCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

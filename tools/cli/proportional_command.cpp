@@ -1,6 +1,7 @@
 // koppel proportional: proportionality deviation of an output over an input range (seed 001).
 #include "commands.hpp"
 #include "common.hpp"
+#include "sweep_report.hpp"
 
 #include "koppel/core/structure.hpp"
 
@@ -11,7 +12,7 @@ namespace koppel::cli {
 namespace {
 
 struct Args {
-  std::string file, output, from, to, at, length, resolution = "0.05";
+  std::string file, output, from, to, at, length, resolution = "0.05", at_branch_point;
   std::vector<std::string> sets;
   std::string format = "csv", out;
 };
@@ -31,9 +32,22 @@ void Run(const Args& args) {
   }
   std::optional<double> at;
   if (!args.at.empty()) at = in(ParseNumberFlag("--at", args.at));
-  CheckSampleCount(from, to, in(ParseNumberFlag("--resolution", args.resolution)), "--from/--to/--resolution");
-  const Proportionality p = ProportionalityDeviation(m, output, from, to, length, at, in(ParseNumberFlag("--resolution", args.resolution)));
-  if (!p.ok) {
+  ContinuationOptions continuation;
+  continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
+  const double resolution = in(ParseNumberFlag("--resolution", args.resolution));
+  CheckSampleCount(from, to, resolution, "--from/--to/--resolution");
+  SweepOptions check;
+  check.from = from;
+  check.to = to;
+  check.step = resolution;
+  std::string why;
+  if (!check.IsValid(&why)) {
+    Complain("--from/--to/--resolution: " + why);
+    throw Exit{kExitBadInput};
+  }
+  const Proportionality p = ProportionalityDeviation(m, output, from, to, length, at, resolution, continuation);
+  if (!Usable(p.status)) {
+    ReportSweep(args.file, m, p.sweep);
     Complain(args.file + ": " + p.message);
     throw Exit{kExitFailed};
   }
@@ -49,7 +63,19 @@ void Run(const Args& args) {
   s.Add("reference_length", length, "length");
   s.Add("Q_P", p.qp, angle ? "1/rad" : "1/length");
   s.Add("chord_deviation", p.chord_deviation, "length");
-  WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv());
+  if (args.format == "json") {
+    nlohmann::json j = s.ToJson();
+    j["complete"] = p.sweep.complete();
+    j.update(SweepEventsJson(m, p.sweep));
+    WriteOutput(args.out, JsonText(j));
+  } else {
+    WriteOutput(args.out, s.ToCsv());
+  }
+  ReportSweep(args.file, m, p.sweep);
+  if (!p.sweep.complete()) {
+    Complain(args.file + ": the figures above hold for the drivable part of the range only");
+    throw Exit{kExitFailed};
+  }
 }
 
 }  // namespace
@@ -63,7 +89,8 @@ void AddProportionalCommand(CLI::App& app) {
       "flat point, least |s''| in the range); delta_s is the width of the band parallel to it that holds the\n"
       "output over the range; Q_P = (delta_s / l) / phi_P with phi_P in radians and l the reference length\n"
       "(--length, default the crank length l1). This definition reproduces the proportional linkage's reading\n"
-      "example; the chord deviation is printed for comparison.\n"
+      "example; the chord deviation is printed for comparison. Where part of the range cannot be driven, the\n"
+      "figures are those of the drivable part, the gaps are named and the exit code is 1.\n"
       "Example: koppel proportional catalog/entries/proportional-linkage.yaml --output s --from 112.5 --to 247.5");
   cmd->add_option("file", args->file, "Mechanism YAML file")->required();
   cmd->add_option("--output", args->output, "Scalar output (default: the first)");
@@ -73,6 +100,7 @@ void AddProportionalCommand(CLI::App& app) {
   cmd->add_option("--length", args->length, "Reference length l (default: crank length)");
   cmd->add_option("--resolution", args->resolution, "Sampling step [deg or length] (default 0.05)");
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
+  AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_option("--format", args->format, "csv (default) or json");
   cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout");
   cmd->callback([args] { Run(*args); });

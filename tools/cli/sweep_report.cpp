@@ -27,7 +27,7 @@ std::string Describe(const Mechanism& m, const SingularPoint& p) {
   if (p.kind == SingularKind::kLimitPoint) return text + ": the drive cannot pass it on this branch";
   switch (p.action) {
     case BranchPointAction::kContinue: return text + ": continued on the branch that continues the incoming one";
-    case BranchPointAction::kStop: return text + ": stopped there (--at-branch-point stop)";
+    case BranchPointAction::kStop: return text + ": the sweep stops there";
     case BranchPointAction::kSwitch: return text + ": switched to the other branch (--at-branch-point switch)";
   }
   return text;
@@ -57,14 +57,13 @@ void ReportSingularPoints(const std::string& file, const Mechanism& m, const std
   for (const SingularPoint& p : points) Complain(file + ": " + Describe(m, p));
 }
 
-void ReportSweep(const std::string& file, const Mechanism& m, const SweepResult& sweep) {
+void ReportSweep(const std::string& file, const Mechanism& m, const SweepEvents& sweep) {
   for (const std::string& note : sweep.notes) Complain(file + ": " + note);
   ReportSingularPoints(file, m, sweep.singular_points);
   std::string flagged;
   int count = 0;
-  for (size_t i = 0; i < sweep.inputs.size(); ++i) {
-    if (!sweep.singular[i]) continue;
-    if (++count <= 8) flagged += (flagged.empty() ? "" : ", ") + FormatNumber(Shown(m, sweep.inputs[i]));
+  for (double input : sweep.singular_inputs) {
+    if (++count <= 8) flagged += (flagged.empty() ? "" : ", ") + FormatNumber(Shown(m, input));
   }
   if (count > 0) {
     Complain(file + ": " + std::to_string(count) + " row" + (count > 1 ? "s" : "") + " at singular poses (" + m.drive.input_name +
@@ -87,7 +86,7 @@ nlohmann::json SingularPointsJson(const Mechanism& m, const std::vector<Singular
   return list;
 }
 
-nlohmann::json SweepEventsJson(const Mechanism& m, const SweepResult& sweep) {
+nlohmann::json SweepEventsJson(const Mechanism& m, const SweepEvents& sweep) {
   nlohmann::json gaps = nlohmann::json::array();
   for (const InputInterval& g : sweep.gaps) gaps.push_back({{"from", Shown(m, g.from)}, {"to", Shown(m, g.to)}});
   return {{"singular_points", SingularPointsJson(m, sweep.singular_points)},

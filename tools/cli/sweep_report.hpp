@@ -23,12 +23,12 @@ std::string FormatInput(const Mechanism& mechanism, double input);
 
 // Prints on stderr, prefixed by the file: the notes, every singular point (input, kind, joints,
 // reciprocal condition, what the sweep did), the rows flagged singular, and the gaps.
-void ReportSweep(const std::string& file, const Mechanism& mechanism, const SweepResult& sweep);
+void ReportSweep(const std::string& file, const Mechanism& mechanism, const SweepEvents& sweep);
 void ReportSingularPoints(const std::string& file, const Mechanism& mechanism, const std::vector<SingularPoint>& points);
 
 // The same as JSON: {"singular_points": [...], "gaps": [...], "notes": [...], "reached": {...}},
 // inputs in the drive's display unit (deg or length).
-nlohmann::json SweepEventsJson(const Mechanism& mechanism, const SweepResult& sweep);
+nlohmann::json SweepEventsJson(const Mechanism& mechanism, const SweepEvents& sweep);
 nlohmann::json SingularPointsJson(const Mechanism& mechanism, const std::vector<SingularPoint>& points);
 
 }  // namespace koppel::cli

@@ -39,11 +39,11 @@ CouplerCurve TraceCurve(const Mechanism& m, const PointRef& point, const SweepOp
   options.order = 2;
   const SweepResult sweep = Sweep(traced, options);
   CouplerCurve curve;
-  curve.status = sweep.status;
+  curve.sweep = EventsOf(sweep);
   curve.message = sweep.message;
+  curve.status = sweep.inputs.empty() ? AnalysisStatus::kFailed
+                                      : (sweep.complete() ? AnalysisStatus::kComplete : AnalysisStatus::kPartial);
   curve.singular = sweep.singular;
-  curve.gaps = sweep.gaps;
-  curve.singular_points = sweep.singular_points;
   const int n = static_cast<int>(sweep.inputs.size());
   for (int i = 0; i < n; ++i) {
     // columns: x, x', x'', y, y', y''
@@ -59,6 +59,15 @@ CouplerCurve TraceCurve(const Mechanism& m, const PointRef& point, const SweepOp
                                                                                 curve.d1[i], curve.inputs[i] - curve.inputs[i - 1]));
   }
   return curve;
+}
+
+std::string CouplerCurve::Brief() const {
+  return std::string(ToString(status)) + ": " + std::to_string(inputs.size()) + " samples" +
+         (arc_length.empty() ? "" : ", arc length " + std::to_string(arc_length.back())) + (message.empty() ? "" : "; " + message);
+}
+
+std::string StraightStretch::Brief() const {
+  return std::string(ToString(status)) + (ok() ? ": Q_G = " + std::to_string(qg) + " over L = " + std::to_string(length) : ": " + message);
 }
 
 int FlattestSample(const CouplerCurve& curve) {
@@ -81,17 +90,21 @@ struct Frame {
   std::string message;
 };
 
-Frame FrameAround(const Mechanism& m, const PointRef& point, double reference, double below, double above, double resolution) {
+Frame FrameAround(const Mechanism& m, const PointRef& point, double reference, double below, double above, double resolution,
+                  const ContinuationOptions& continuation) {
   Frame f;
   // trace both ways from the reference so that its sample is exact
   SweepOptions up, down;
+  up.continuation = down.continuation = continuation;
   up.from = down.from = reference;
   up.to = reference + above;
   down.to = reference - below;
   up.step = down.step = resolution;
   const CouplerCurve right = TraceCurve(m, point, up), left = TraceCurve(m, point, down);
-  if (right.inputs.empty() || left.inputs.empty() || !right.message.empty() || !left.message.empty()) {
-    f.message = !right.message.empty() ? right.message : (!left.message.empty() ? left.message : "the curve cannot be traced");
+  // a stretch is measured only where the branch is drivable throughout
+  if (right.inputs.empty() || left.inputs.empty() || !right.sweep.complete() || !left.sweep.complete()) {
+    f.message = !right.sweep.complete() ? right.sweep.message : left.sweep.message;
+    if (f.message.empty()) f.message = "the curve cannot be traced";
     return f;
   }
   std::vector<Eigen::Vector2d> pts;
@@ -131,11 +144,14 @@ void Measure(const Frame& f, int a, int e, StraightStretch& s) {
 
 }  // namespace
 
-StraightStretch StretchBand(const Mechanism& m, const PointRef& point, double reference, double from, double to, double resolution) {
+StraightStretch StretchBand(const Mechanism& m, const PointRef& point, double reference, double from, double to, double resolution,
+                            const ContinuationOptions& continuation) {
   StraightStretch s;
   s.reference = reference;
-  const Frame f = FrameAround(m, point, reference, std::max(reference - from, resolution), std::max(to - reference, resolution), resolution);
+  const Frame f = FrameAround(m, point, reference, std::max(reference - from, resolution), std::max(to - reference, resolution),
+                              resolution, continuation);
   if (!f.message.empty()) {
+    s.status = AnalysisStatus::kFailed;
     s.message = f.message;
     return s;
   }
@@ -147,29 +163,32 @@ StraightStretch StretchBand(const Mechanism& m, const PointRef& point, double re
                             }) - f.inputs.begin());
   };
   Measure(f, index_of(from), index_of(to), s);
-  s.found = true;
+  s.status = AnalysisStatus::kComplete;
   return s;
 }
 
 StraightStretch LongestStraightStretch(const Mechanism& m, const PointRef& point, double qg, std::optional<double> reference,
-                                       double half_range, double resolution) {
+                                       double half_range, double resolution, const ContinuationOptions& continuation) {
   StraightStretch best;
   if (!reference) {
     SweepOptions whole;
+    whole.continuation = continuation;
     whole.from = -half_range;
     whole.to = half_range;
     whole.step = resolution;
     const CouplerCurve curve = TraceCurve(m, point, whole);
     const int flat = FlattestSample(curve);
-    if (flat < 0 || !curve.message.empty()) {
-      best.message = curve.message.empty() ? "the curve cannot be traced" : curve.message;
+    if (flat < 0 || !curve.sweep.complete()) {
+      best.status = AnalysisStatus::kFailed;
+      best.message = curve.sweep.message.empty() ? "the curve cannot be traced" : curve.sweep.message;
       return best;
     }
     reference = curve.inputs[flat];
   }
   best.reference = *reference;
-  const Frame f = FrameAround(m, point, *reference, half_range, half_range, resolution);
+  const Frame f = FrameAround(m, point, *reference, half_range, half_range, resolution, continuation);
   if (!f.message.empty()) {
+    best.status = AnalysisStatus::kFailed;
     best.message = f.message;
     return best;
   }
@@ -193,11 +212,12 @@ StraightStretch LongestStraightStretch(const Mechanism& m, const PointRef& point
     }
   }
   if (best_a < 0) {
+    best.status = AnalysisStatus::kFailed;
     best.message = "no stretch through the reference point meets the tolerance";
     return best;
   }
   Measure(f, best_a, best_e, best);
-  best.found = true;
+  best.status = AnalysisStatus::kComplete;
   return best;
 }
 

@@ -1,4 +1,5 @@
 #include "koppel/analysis/dead_centres.hpp"
+#include "koppel/core/angles.hpp"
 
 #include "koppel/analysis/stationary.hpp"
 
@@ -8,7 +9,7 @@
 namespace koppel {
 namespace {
 
-constexpr double kTwoPi = 2 * 3.14159265358979323846;
+constexpr double kTwoPi = 2 * kPi;
 // Crank and coupler count as lined up when the sine of their angle is below this: the
 // dead centre is refined to 1e-12, so a true line-up is at roundoff level.
 constexpr double kLineUp = 1e-7;
@@ -22,6 +23,11 @@ const char* ToString(DeadCentreKind kind) {
     case DeadCentreKind::kUnclassified: return "unclassified";
   }
   return "unclassified";
+}
+
+std::string DeadCentreReport::Brief() const {
+  return std::string(ToString(status)) + ": " + std::to_string(points.size()) + " dead centre" + (points.size() == 1 ? "" : "s") +
+         (has_stroke ? ", stroke " + std::to_string(stroke) : "") + (message.empty() ? "" : "; " + message);
 }
 
 DeadCentreKind ClassifyLineUp(const Mechanism& m, const Eigen::VectorXd& q) {
@@ -51,15 +57,13 @@ DeadCentreReport FindDeadCentres(const Mechanism& m, int output, int component, 
   SweepOptions options = range;
   options.order = 2;
   const SweepResult sweep = Sweep(m, options);
+  report.sweep = EventsOf(sweep);  // dead centres are searched over the part swept
+  report.message = sweep.message;
   if (sweep.inputs.empty()) {
-    report.status = sweep.status;
-    report.message = sweep.message;
+    report.status = AnalysisStatus::kFailed;
     return report;
   }
-  if (!sweep.complete()) {
-    report.status = sweep.status;
-    report.message = sweep.message;  // dead centres are still searched over the part swept
-  }
+  report.status = sweep.complete() ? AnalysisStatus::kComplete : AnalysisStatus::kPartial;
   const int column = OutputColumn(m, output, component, 2);
   const int n = static_cast<int>(sweep.inputs.size());
   const double resolution = std::abs(options.step);
@@ -69,8 +73,9 @@ DeadCentreReport FindDeadCentres(const Mechanism& m, int output, int component, 
     const int start = std::abs(d0) <= std::abs(d1) ? i : i + 1;
     StationaryOptions stationary;
     stationary.max_step = resolution;
+    stationary.continuation = options.continuation;
     const StationaryPoint p = RefineStationary(m, output, component, sweep.inputs[start], sweep.poses.row(start).transpose(), stationary);
-    if (!p.found) continue;
+    if (!p.ok()) continue;
     // one dead centre per sign change: drop a repeat found from the neighbouring interval
     const bool repeat = std::any_of(report.points.begin(), report.points.end(),
                                     [&](const DeadCentre& d) { return std::abs(d.input - p.input) < 1e-9; });

@@ -24,6 +24,9 @@ constexpr int kCrossingAttempts = 3;
 // Newton iterates closer to a branch point than this pivot gauge no longer give a reliable
 // determinant sign: the root search stops there.
 constexpr double kRootPivotRatio = 1e-12;
+// A branch point is located to about this [rad, or units of L]: the root search stops at 1e-13,
+// the Newton iterates near the point at pivot gauges of 1e-12.
+constexpr double kBranchPointLocation = 1e-10;
 // Steps a walk between two nearby regular poses may take (it never passes a singular position).
 constexpr long kRegularWalkSteps = 100000;
 
@@ -73,8 +76,11 @@ struct Continuation::Window {
   Eigen::VectorXd near_q, far_q;
   double direction = 1.0;   // +1: entered with increasing input
   bool stop = false;
-  bool Contains(double input) const {
-    return direction * (input - near_end) >= 0.0 && direction * (far_end - input) >= 0.0;
+  std::string stop_message;  // why the walk ends at the point
+  // `slack`: how far beyond the far end still counts as at it (a branch point is located to
+  // about 1e-12; a sample on it must not fall off by a rounding)
+  bool Contains(double input, double slack) const {
+    return direction * (input - near_end) >= 0.0 && direction * (far_end - input) >= -slack;
   }
 };
 
@@ -339,9 +345,11 @@ Continuation::Crossing Continuation::CrossBranchPoint(double estimate, double di
     window->far_end = b_input;
     window->far_q = b_q;
     SingularPoint point{SingularKind::kBranchPoint, star, structure.rcond, structure.joints, options_.at_branch_point};
+    const std::string joints = JointNames(system.mechanism(), structure.joints);
     if (options_.at_branch_point == BranchPointAction::kStop) {
       window->far_end = star;
       window->stop = true;
+      window->stop_message = "a branch point at " + Where(star) + " (joints " + joints + "); stopped there as asked";
     } else if (options_.at_branch_point == BranchPointAction::kSwitch) {
       const std::optional<Eigen::VectorXd> other = OtherBranchTangent(system, at_star.col(0), star, at_star.col(1));
       Eigen::VectorXd other_q;
@@ -360,18 +368,21 @@ Continuation::Crossing Continuation::CrossBranchPoint(double estimate, double di
         }
         factorized_here_ = false;
       }
-      if (!switched) {
-        singular_points_.push_back(point);
-        SetRegularPose(a_input, a_q);
-        *finished = Ended(WalkStatus::kFailed, "cannot switch to the other branch at the branch point " + Where(star) +
-                                                   ": the other branch does not cross there in the input");
-        return Crossing::kFinished;
+      if (switched) {
+        Eigen::MatrixXd star_data(a_q.size(), 2);
+        star_data.col(0) = at_star.col(0);
+        star_data.col(1) = *other;
+        window->outgoing = HermiteSegment(star, star_data, b_input, other_series);
+        window->far_q = other_q;
+      } else {
+        // the walk ends at the point: it may not continue on a branch it was told to leave
+        point.action = BranchPointAction::kStop;
+        window->far_end = star;
+        window->stop = true;
+        window->stop_message = "cannot switch to the other branch at the branch point " + Where(star) + " (joints " + joints +
+                               "): the other branch does not cross there in the input (it runs at constant input, or "
+                               "the crossing is not simple); stopped there";
       }
-      Eigen::MatrixXd star_data(a_q.size(), 2);
-      star_data.col(0) = at_star.col(0);
-      star_data.col(1) = *other;
-      window->outgoing = HermiteSegment(star, star_data, b_input, other_series);
-      window->far_q = other_q;
     }
     singular_points_.push_back(point);
     window_ = std::move(window);
@@ -385,18 +396,16 @@ Continuation::Crossing Continuation::CrossBranchPoint(double estimate, double di
 
 Continuation::Crossing Continuation::LeaveOrEnterWindow(double target, WalkReport* finished) {
   const Window& w = *window_;
-  if (w.Contains(target)) {
+  if (w.Contains(target, w.stop ? kBranchPointLocation * input_scale_ : 0.0)) {
     EvaluateInWindow(target);
     *finished = Reached();
     return Crossing::kFinished;
   }
   if (w.direction * (target - w.far_end) > 0.0) {
     if (w.stop) {
+      const std::string message = w.stop_message;
       EvaluateInWindow(w.star);
-      *finished = Ended(WalkStatus::kBranchPointStop,
-                        "a branch point at " + Where(w.star) + " (joints " +
-                            JointNames(solver_.system().mechanism(), singular_points_.back().joints) +
-                            "); stopped there as asked (--at-branch-point stop)");
+      *finished = Ended(WalkStatus::kBranchPointStop, message);
       return Crossing::kFinished;
     }
     const double far_end = w.far_end;

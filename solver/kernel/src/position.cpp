@@ -90,9 +90,12 @@ bool PositionSolver::Factorize() {
     qr_.compute(jacobian_ * column_scale_.asDiagonal());
     const auto& r = qr_.matrixR();
     const int k = std::min(r.rows(), r.cols());
+    // full rank min(rows, cols): overconstrained and consistent (more rows), or a mechanism with
+    // more freedom than drives (more columns; Newton then takes a basic solution, and the
+    // mobility check refuses such a mechanism before anything is computed from it)
     max_pivot = k > 0 ? std::abs(r(0, 0)) : 0.0;
     min_pivot = k > 0 ? std::abs(r(k - 1, k - 1)) : 0.0;
-    pivot_ratio_ = (k == jacobian_.cols() && max_pivot > 0) ? min_pivot / max_pivot : 0.0;
+    pivot_ratio_ = max_pivot > 0 ? min_pivot / max_pivot : 0.0;
     jacobian_sign_ = 0;
   }
   return pivot_ratio_ > kSingularPivotRatio;

@@ -1,6 +1,7 @@
 #include "koppel/solver/sweep.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/solver/assembly.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +10,6 @@
 
 namespace koppel {
 namespace {
-
-// An assembled pose with a pivot gauge above this is taken as regular without an SVD.
-constexpr double kRegularPivotRatio = 1e-3;
 
 std::string FormatInput(const Mechanism& m, double input) {
   char buffer[96];
@@ -23,44 +21,6 @@ std::string FormatInterval(const Mechanism& m, double a, double b) {
   char buffer[48];
   std::snprintf(buffer, sizeof buffer, "%.10g", m.InputIsAngle() ? RadToDeg(b) : b);
   return FormatInput(m, a) + " .. " + buffer + (m.InputIsAngle() ? " deg" : "");
-}
-
-struct Assembly {
-  Eigen::VectorXd q;
-  double input = 0.0;
-  std::string error;  // empty on success
-};
-
-// Assembles at the hint. When the hint's input is itself a singular position, the hint cannot say
-// which of the branches meeting there it means; the mechanism is then assembled a window's
-// half-width beside it (where the hint still describes the pose) and the walks cross back.
-Assembly AssembleForSweep(const Mechanism& m, PositionSolver& solver, const ContinuationOptions& options,
-                          std::vector<std::string>& notes) {
-  Assembly a;
-  a.input = m.hint.input;
-  a.q.resize(solver.NumCoordinates());
-  const SolveReport report = solver.Assemble(a.q);
-  if (report.ok() && (solver.PivotRatio() > kRegularPivotRatio || ReciprocalCondition(solver.system(), a.q) >= kSingularRowRcond))
-    return a;
-  if (!report.ok() && report.status != SolveStatus::kSingular) {
-    a.error = "cannot assemble at " + FormatInput(m, a.input) + ": " + report.message;
-    return a;
-  }
-  const double shift = options.branch_window * (m.InputIsAngle() ? 1.0 : solver.system().length_scale());
-  for (double side : {+1.0, -1.0}) {
-    Eigen::VectorXd q(solver.NumCoordinates());
-    if (!solver.AssembleAt(a.input + side * shift, q).ok()) continue;
-    if (ReciprocalCondition(solver.system(), q) < kSingularRowRcond) continue;
-    notes.push_back("the assembly input " + FormatInput(m, a.input) +
-                    " is a singular position, where the hint cannot choose between the branches that meet; "
-                    "koppel assembled at " + FormatInput(m, a.input + side * shift) +
-                    " and follows that branch (give the assembly hint at another input to choose)");
-    a.q = q;
-    a.input += side * shift;
-    return a;
-  }
-  a.error = "cannot assemble at " + FormatInput(m, a.input) + ": the pose there is singular and no regular pose was found beside it";
-  return a;
 }
 
 // The end of one outward walk.
@@ -125,12 +85,19 @@ SweepResult Sweep(const Mechanism& m, const SweepOptions& options) {
   }
   PositionSolver solver(m);
   const int n = solver.NumCoordinates();
+  if (solver.system().NumEquations() < n) {
+    result.status = SweepStatus::kNotAssemblable;
+    result.message = "the mechanism has fewer joint equations than coordinates: more freedom than its one drive "
+                     "(see CheckMobility)";
+    return result;
+  }
   const int samples = static_cast<int>(SampleCount(options.from, options.to, options.step));
   const double step = options.to >= options.from ? std::abs(options.step) : -std::abs(options.step);
   result.requested_samples = samples;
 
-  const Assembly assembly = AssembleForSweep(m, solver, options.continuation, result.notes);
-  if (!assembly.error.empty()) {
+  const Assembly assembly = AssembleRegular(m, solver, options.continuation);
+  result.notes = assembly.notes;
+  if (!assembly.ok()) {
     result.status = SweepStatus::kNotAssemblable;
     result.message = assembly.error;
     result.reached = {m.hint.input, m.hint.input};
@@ -234,14 +201,27 @@ SweepResult Sweep(const Mechanism& m, const SweepOptions& options) {
   return result;
 }
 
+SweepEvents EventsOf(const SweepResult& sweep) {
+  SweepEvents events;
+  events.status = sweep.status;
+  events.message = sweep.message;
+  events.notes = sweep.notes;
+  events.singular_points = sweep.singular_points;
+  events.gaps = sweep.gaps;
+  events.reached = sweep.reached;
+  for (size_t i = 0; i < sweep.inputs.size(); ++i) {
+    if (sweep.singular[i]) events.singular_inputs.push_back(sweep.inputs[i]);
+  }
+  return events;
+}
+
 InputRange DrivableRange(const Mechanism& mechanism, double span, double step) {
   InputRange range;
   PositionSolver solver(mechanism);
   ContinuationOptions options;
   if (std::abs(step) > 0) options.max_step = std::min(options.max_step, std::abs(step));
-  std::vector<std::string> notes;
-  const Assembly assembly = AssembleForSweep(mechanism, solver, options, notes);
-  if (!assembly.error.empty()) {
+  const Assembly assembly = AssembleRegular(mechanism, solver, options);
+  if (!assembly.ok()) {
     range.low = range.high = mechanism.hint.input;
     range.low_limited = range.high_limited = true;
     return range;

@@ -1,227 +1,29 @@
-// The one translation unit of koppel that includes Ceres.
+// The one translation unit of koppel that includes Ceres: several starts of a least-squares fit
+// on parallel threads, the best design chosen, its targets held to their tolerances.
 #include "koppel/synthesis/fit.hpp"
 
-#include "koppel/solver/position.hpp"
-#include "koppel/analysis/stationary.hpp"
+#include "fit_model.hpp"
+
+#include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
 
 #include <ceres/ceres.h>
-#include <Eigen/Eigenvalues>
+#include <fmt/core.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
-#include <iostream>
+#include <exception>
 #include <random>
+#include <thread>
 
 namespace koppel {
 namespace {
 
-// Relative step of the parameter differences: central differences of smooth residuals, error
-// O(h^2) ~ 1e-12 against roundoff O(eps/h) ~ 1e-10.
-constexpr double kParameterStep = 1e-6;
-
-// Solves every target's pose for one parameter vector, following each target's input from the
-// assembly hint by continuation, and gives values and IFT derivatives.
-class TargetModel {
- public:
-  TargetModel(const MechanismBuilder& builder, const std::vector<FitTarget>& targets) : builder_(builder), targets_(targets) {}
-
-  // residuals: per target 2 (point) or 1; jacobian (row-major, residuals x unknowns) if non-null.
-  // unknowns = parameters then one per free input.
-  bool Evaluate(const double* unknowns, int n_params, double* residuals, double* jacobian) const {
-    std::vector<double> p(unknowns, unknowns + n_params);
-    Mechanism m;
-    std::string error;
-    if (!builder_(p, &m, &error)) return false;
-    PositionSolver solver(m);
-    Eigen::VectorXd q(solver.NumCoordinates());
-    if (!solver.Assemble(q).ok()) return false;
-    const int n_unknowns = n_params + FreeInputs();
-    int row = 0, free_index = 0;
-    for (const FitTarget& t : targets_) {
-      if (t.deadcentre) {
-        if (!DeadCentre(m, solver, q, p, t, residuals + row, jacobian ? jacobian + row * n_unknowns : nullptr, n_unknowns)) return false;
-        ++row;
-        continue;
-      }
-      if (t.straight) {
-        if (!Straight(m, solver, q, p, t, residuals + row, jacobian ? jacobian + row * n_unknowns : nullptr, n_unknowns)) return false;
-        row += t.samples;
-        continue;
-      }
-      const double input = t.input_free ? unknowns[n_params + free_index] : t.input;
-      Continuation path(solver);
-      if (!path.Start(m.hint.input, q).ok() || !path.AdvanceTo(input, 0.05).ok()) return false;
-      const Eigen::VectorXd& qt = path.q();
-      const Eigen::MatrixXd& series = path.Series(1);  // factorises J at qt, gives dq/dinput
-      const int comps = t.point ? 2 : 1;
-      for (int c = 0; c < comps; ++c) {
-        const int comp = t.point ? c : t.component;
-        const double y = solver.system().Output(t.output, comp, qt.data());
-        const double goal = t.point ? t.position[c] : t.value;
-        residuals[row + c] = t.weight * (y - goal);
-      }
-      if (jacobian) {
-        for (int c = 0; c < comps; ++c) std::fill(jacobian + (row + c) * n_unknowns, jacobian + (row + c + 1) * n_unknowns, 0.0);
-        // parameters: IFT
-        Eigen::MatrixXd d;
-        if (!OutputSensitivity(solver, qt, input, p, t.output, t.point ? 0 : t.component, comps, &d)) return false;
-        for (int c = 0; c < comps; ++c) {
-          for (int j = 0; j < n_params; ++j) jacobian[(row + c) * n_unknowns + j] = t.weight * d(c, j);
-        }
-        const ConstraintSystem& system = solver.system();
-        if (t.input_free) {
-          // dy/dinput: the exact first-order transfer function, through the output's gradient
-          const double h = 1e-7;
-          const Eigen::VectorXd q_plus = qt + h * series.col(1), q_minus = qt - h * series.col(1);
-          for (int c = 0; c < comps; ++c) {
-            const int comp = t.point ? c : t.component;
-            jacobian[(row + c) * n_unknowns + n_params + free_index] =
-                t.weight * (system.Output(t.output, comp, q_plus.data()) - system.Output(t.output, comp, q_minus.data())) / (2 * h);
-          }
-        }
-      }
-      row += comps;
-      if (t.input_free) ++free_index;
-    }
-    return true;
-  }
-
-  // dq/dp_j at a converged pose (the solver's factorisation is at q): -J^-1 dF/dp_j, with dF/dp_j
-  // one central difference of the residuals of the rebuilt mechanisms at the fixed pose.
-  bool PoseSensitivity(const PositionSolver& solver, const Eigen::VectorXd& q, double input, const std::vector<double>& p, int j,
-                       Mechanism* plus, Mechanism* minus, Eigen::VectorXd* dq, double* h) const {
-    *h = kParameterStep * std::max(1.0, std::abs(p[j]));
-    std::vector<double> pp = p, pm = p;
-    pp[j] += *h;
-    pm[j] -= *h;
-    std::string error;
-    if (!builder_(pp, plus, &error) || !builder_(pm, minus, &error)) return false;
-    Eigen::VectorXd r_plus(solver.system().NumEquations()), r_minus(solver.system().NumEquations());
-    ConstraintSystem(*plus).Residuals(q.data(), input, r_plus.data());
-    ConstraintSystem(*minus).Residuals(q.data(), input, r_minus.data());
-    *dq = -solver.SolveWithJacobian((r_plus - r_minus) / (2 * *h));
-    return true;
-  }
-
-  // d(output components)/dp at a converged pose: one directional difference of the output along
-  // (dq/dp_j, e_j) per parameter. `d` is comps x parameters.
-  bool OutputSensitivity(const PositionSolver& solver, const Eigen::VectorXd& q, double input, const std::vector<double>& p,
-                         int output, int first_component, int comps, Eigen::MatrixXd* d) const {
-    d->resize(comps, static_cast<int>(p.size()));
-    for (int j = 0; j < static_cast<int>(p.size()); ++j) {
-      Mechanism mp, mm;
-      Eigen::VectorXd dq;
-      double h = 0;
-      if (!PoseSensitivity(solver, q, input, p, j, &mp, &mm, &dq, &h)) return false;
-      const ConstraintSystem sp(mp), sm(mm);
-      const Eigen::VectorXd q_plus = q + h * dq, q_minus = q - h * dq;
-      for (int c = 0; c < comps; ++c)
-        (*d)(c, j) = (sp.Output(output, first_component + c, q_plus.data()) - sm.Output(output, first_component + c, q_minus.data())) / (2 * h);
-    }
-    return true;
-  }
-
-  // One straight-line target: distances of the samples from their total-least-squares line.
-  bool Straight(const Mechanism& m, PositionSolver& solver, const Eigen::VectorXd& q_hint, const std::vector<double>& p,
-                const FitTarget& t, double* residuals, double* jacobian, int n_unknowns) const {
-    const int n = t.samples;
-    std::vector<Eigen::Vector2d> points(n);
-    std::vector<Eigen::MatrixXd> sensitivity(n);
-    Continuation path(solver);
-    if (!path.Start(m.hint.input, q_hint).ok()) return false;
-    for (int i = 0; i < n; ++i) {
-      const double input = t.input + (t.to - t.input) * i / (n - 1);
-      if (!path.AdvanceTo(input, 0.05).ok()) return false;
-      const Eigen::VectorXd& qi = path.q();
-      points[i] = {solver.system().Output(t.output, 0, qi.data()), solver.system().Output(t.output, 1, qi.data())};
-      if (jacobian && !OutputSensitivity(solver, qi, input, p, t.output, 0, 2, &sensitivity[i])) return false;
-    }
-    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-    for (const Eigen::Vector2d& x : points) centre += x / n;
-    Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
-    for (const Eigen::Vector2d& x : points) scatter += (x - centre) * (x - centre).transpose();
-    // the line's normal: the eigenvector of the smallest eigenvalue of the scatter matrix
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(scatter);
-    const Eigen::Vector2d normal = eigen.eigenvectors().col(0), along = eigen.eigenvectors().col(1);
-    for (int i = 0; i < n; ++i) residuals[i] = t.weight * normal.dot(points[i] - centre);
-    if (!jacobian) return true;
-    // the line moves with the points: its centroid by the mean sensitivity, its angle by
-    // d theta = sum(a_i n.e_i + b_i u.e_i) / sum(a_i^2 - b_i^2) (first-order change of the
-    // total-least-squares direction), so d b_i = n.e_i - a_i d theta with e_i = dK_i - mean dK
-    double spread = 0;
-    for (const Eigen::Vector2d& x : points) spread += std::pow(along.dot(x - centre), 2) - std::pow(normal.dot(x - centre), 2);
-    for (int j = 0; j < static_cast<int>(p.size()); ++j) {
-      Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-      for (int i = 0; i < n; ++i) mean += sensitivity[i].col(j) / n;
-      double turn = 0;
-      for (int i = 0; i < n; ++i) {
-        const Eigen::Vector2d e = sensitivity[i].col(j) - mean, x = points[i] - centre;
-        turn += (along.dot(x) * normal.dot(e) + normal.dot(x) * along.dot(e)) / spread;
-      }
-      for (int i = 0; i < n; ++i) {
-        const Eigen::Vector2d e = sensitivity[i].col(j) - mean;
-        jacobian[i * n_unknowns + j] = t.weight * (normal.dot(e) - along.dot(points[i] - centre) * turn);
-      }
-    }
-    for (int i = 0; i < n; ++i) {
-      for (int j = static_cast<int>(p.size()); j < n_unknowns; ++j) jacobian[i * n_unknowns + j] = 0.0;
-    }
-    return true;
-  }
-
-  // One dead-centre target: residual = (input of the dead centre next to t.input) - t.input.
-  bool DeadCentre(const Mechanism& m, PositionSolver& solver, const Eigen::VectorXd& q_hint, const std::vector<double>& p,
-                  const FitTarget& t, double* residual, double* jacobian_row, int n_unknowns) const {
-    Continuation path(solver);
-    if (!path.Start(m.hint.input, q_hint).ok() || !path.AdvanceTo(t.input, 0.05).ok()) return false;
-    const StationaryPoint dc = RefineStationary(m, t.output, t.component, path.input(), path.q());
-    if (!dc.found || dc.second == 0.0) return false;
-    *residual = t.weight * (dc.input - t.input);
-    if (!jacobian_row) return true;
-    std::fill(jacobian_row, jacobian_row + n_unknowns, 0.0);
-    // dq/dp at the dead centre needs the Jacobian factorised there
-    Eigen::VectorXd q = dc.q;
-    if (!solver.Correct(dc.input, q).ok()) return false;
-    for (size_t j = 0; j < p.size(); ++j) {
-      Mechanism mp, mm;
-      Eigen::VectorXd dq;
-      double h = 0;
-      if (!PoseSensitivity(solver, q, dc.input, p, static_cast<int>(j), &mp, &mm, &dq, &h)) return false;
-      // y' of each perturbed mechanism at the same input, from its predicted pose
-      double slope[2];
-      for (int side = 0; side < 2; ++side) {
-        const Mechanism& perturbed = side == 0 ? mp : mm;
-        PositionSolver ps(perturbed);
-        Eigen::VectorXd qs = q + (side == 0 ? h : -h) * dq;
-        if (!ps.Correct(dc.input, qs).ok()) return false;
-        Eigen::MatrixXd series;
-        ps.Series(1, series);
-        std::vector<double> d(ps.OutputWidth(1));
-        ps.OutputDerivatives(series, 1, d.data());
-        int column = 0;
-        for (int o = 0; o < t.output; ++o) column += perturbed.outputs[o].Components() * 2;
-        slope[side] = d[column + t.component * 2 + 1];
-      }
-      jacobian_row[j] = -t.weight * ((slope[0] - slope[1]) / (2 * h)) / dc.second;
-    }
-    return true;
-  }
-
-  int Residuals() const {
-    int n = 0;
-    for (const FitTarget& t : targets_) n += t.straight ? t.samples : t.point ? 2 : 1;
-    return n;
-  }
-  int FreeInputs() const {
-    int n = 0;
-    for (const FitTarget& t : targets_) n += t.input_free ? 1 : 0;
-    return n;
-  }
-
- private:
-  const MechanismBuilder& builder_;
-  const std::vector<FitTarget>& targets_;
-};
+// Starts whose cost is within this of the best count as having reached it: relative for
+// inexact problems, absolute (residuals about 1e-12) for exactly solvable ones.
+constexpr double kSameCostRelative = 1e-6;
+constexpr double kSameCostAbsolute = 1e-24;
 
 class FitCost : public ceres::CostFunction {
  public:
@@ -238,86 +40,254 @@ class FitCost : public ceres::CostFunction {
   int n_params_;
 };
 
-bool AssemblesOver(const MechanismBuilder& builder, const std::vector<double>& values, const FitOptions& options) {
-  if (options.require_to == options.require_from) return true;
+bool Finite(double v) { return v > -1e299 && v < 1e299; }
+
+// The unknowns of every start: the given one first, then uniform within the bounds (a side
+// without a bound: the start value +- max(|start|, 1)), from the fixed seed, so that the starts
+// do not depend on how they are spread over threads.
+std::vector<std::vector<double>> StartPoints(const std::vector<FitParameter>& parameters, const std::vector<FitTarget>& targets, const FitOptions& o) {
+  std::mt19937 rng(o.seed);
+  std::vector<std::vector<double>> starts(o.starts);
+  for (int k = 0; k < o.starts; ++k) {
+    for (const FitParameter& p : parameters) {
+      double v = p.start;
+      if (k > 0) {
+        const double reach = std::max(std::abs(p.start), 1.0);
+        const double lo = Finite(p.lower) ? p.lower : p.start - reach, hi = Finite(p.upper) ? p.upper : p.start + reach;
+        v = std::uniform_real_distribution<double>(lo, hi)(rng);
+      }
+      starts[k].push_back(v);
+    }
+    for (const FitTarget& t : targets) {
+      if (t.input_free) starts[k].push_back(t.input);
+    }
+  }
+  return starts;
+}
+
+struct StartOutcome {
+  FitStart start;
+  std::vector<double> x;          // unknowns at the solution
+  std::vector<double> residuals;  // weighted, at the solution
+  int iterations = 0;
+  double drivable_from = 0, drivable_to = 0;
+};
+
+// The drive's reach from the assembly hint, up to the far end of the required range either way:
+// whether the design assembles over [require_from, require_to], and where it stops if not.
+void CheckRequiredRange(const MechanismBuilder& builder, const std::vector<double>& values, const FitOptions& o, StartOutcome* out) {
+  if (o.require_to == o.require_from) {
+    out->start.assembles_over_range = true;
+    return;
+  }
   Mechanism m;
   std::string error;
-  if (!builder(values, &m, &error)) return false;
-  SweepOptions range;
-  range.from = options.require_from;
-  range.to = options.require_to;
-  range.step = (options.require_to - options.require_from) / 360;
-  range.order = 0;
-  return Sweep(m, range).complete();
+  if (!builder(values, &m, &error)) return;
+  const double lo = std::min(o.require_from, o.require_to), hi = std::max(o.require_from, o.require_to);
+  const double span = std::max(std::abs(hi - m.hint.input), std::abs(lo - m.hint.input));
+  const InputRange reach = DrivableRange(m, span, (hi - lo) / 360);
+  out->drivable_from = reach.low;
+  out->drivable_to = reach.high;
+  out->start.assembles_over_range = reach.low <= lo && reach.high >= hi;
+}
+
+StartOutcome RunStart(const MechanismBuilder& builder, const TargetModel& model, const std::vector<FitParameter>& parameters,
+                      const FitOptions& o, int index, std::vector<double> x) {
+  StartOutcome out;
+  out.start.index = index;
+  const int n = static_cast<int>(parameters.size());
+  // a start that does not reach every target is not handed to Ceres (which would log the failure)
+  std::vector<double> at_start(model.Residuals());
+  if (!model.Evaluate(x.data(), n, at_start.data(), nullptr)) {
+    out.start.brief = "the mechanism does not assemble at every target at this start";
+    return out;
+  }
+  ceres::Problem problem;
+  problem.AddResidualBlock(new FitCost(model, n), nullptr, x.data());
+  for (int j = 0; j < n; ++j) {
+    if (Finite(parameters[j].lower)) problem.SetParameterLowerBound(x.data(), j, parameters[j].lower);
+    if (Finite(parameters[j].upper)) problem.SetParameterUpperBound(x.data(), j, parameters[j].upper);
+  }
+  ceres::Solver::Options solver_options;
+  solver_options.max_num_iterations = o.max_iterations;
+  solver_options.linear_solver_type = ceres::DENSE_QR;
+  solver_options.function_tolerance = 1e-15;
+  solver_options.gradient_tolerance = 1e-15;
+  solver_options.parameter_tolerance = 1e-14;
+  solver_options.num_threads = 1;  // one residual block: the starts are the parallel work
+  solver_options.logging_type = ceres::SILENT;
+  solver_options.minimizer_progress_to_stdout = false;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver_options, &problem, &summary);
+  out.start.brief = summary.BriefReport();
+  out.iterations = static_cast<int>(summary.iterations.size());
+  if (!summary.IsSolutionUsable()) return out;
+  out.residuals.resize(model.Residuals());
+  if (!model.Evaluate(x.data(), n, out.residuals.data(), nullptr)) return out;
+  out.start.usable = true;
+  out.start.cost = 0;
+  for (double v : out.residuals) out.start.cost += 0.5 * v * v;
+  out.x = x;
+  CheckRequiredRange(builder, std::vector<double>(x.begin(), x.begin() + n), o, &out);
+  return out;
+}
+
+// Runs every start, on up to o.threads threads; each writes only its own slot.
+std::vector<StartOutcome> RunStarts(const MechanismBuilder& builder, const TargetModel& model, const std::vector<FitParameter>& parameters,
+                                    const std::vector<FitTarget>& targets, const FitOptions& o) {
+  const std::vector<std::vector<double>> points = StartPoints(parameters, targets, o);
+  std::vector<StartOutcome> outcomes(points.size());
+  std::atomic<int> next{0};
+  auto work = [&] {
+    for (int k = next++; k < static_cast<int>(points.size()); k = next++) {
+      // an exception must not end the program from a worker thread: the start is merely unusable
+      try {
+        outcomes[k] = RunStart(builder, model, parameters, o, k, points[k]);
+      } catch (const std::exception& e) {
+        outcomes[k].start.index = k;
+        outcomes[k].start.brief = std::string("failed: ") + e.what();
+      }
+    }
+  };
+  const int threads = std::min(o.threads > 0 ? o.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency())), o.starts);
+  std::vector<std::thread> pool;
+  for (int i = 1; i < threads; ++i) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  return outcomes;
+}
+
+// Designs that assemble over the required range win over any that do not; then the lower
+// cost; then the earlier start.
+bool Better(const StartOutcome& a, const StartOutcome& b) {
+  if (a.start.assembles_over_range != b.start.assembles_over_range) return a.start.assembles_over_range;
+  return a.start.cost < b.start.cost;
+}
+
+std::string FormatResidual(const FitTargetResult& t) {
+  return t.unit == FitUnit::kAngle ? fmt::format("{:.6g} deg (tolerance {:.6g} deg)", RadToDeg(t.residual), RadToDeg(t.tolerance))
+                                   : fmt::format("{:.6g} (tolerance {:.6g})", t.residual, t.tolerance);
+}
+
+// Per target: its unit, its residual (unweighted), the tolerance it is held to.
+void ReportTargets(const Mechanism& m, const std::vector<FitTarget>& targets, const FitOptions& o, int n, const StartOutcome& best,
+                   FitReport* report) {
+  int row = 0, free_index = 0;
+  for (const FitTarget& t : targets) {
+    FitTargetResult r;
+    r.name = t.name;
+    r.unit = TargetUnit(m, t);
+    const std::vector<double>& res = best.residuals;
+    double residual = t.point ? std::hypot(res[row], res[row + 1]) : std::abs(res[row]);
+    for (int k = 1; t.straight && k < t.samples; ++k) residual = std::max(residual, std::abs(res[row + k]));
+    r.residual = residual / std::abs(t.weight != 0 ? t.weight : 1);
+    r.tolerance = t.tolerance > 0 ? t.tolerance : r.unit == FitUnit::kAngle ? o.angle_tolerance : o.length_tolerance;
+    r.met = r.residual <= r.tolerance;
+    r.input = t.input_free ? best.x[n + free_index++] : t.input;
+    report->targets.push_back(r);
+    row += t.straight ? t.samples : t.point ? 2 : 1;
+  }
 }
 
 }  // namespace
 
+const char* ToString(FitUnit unit) { return unit == FitUnit::kAngle ? "angle" : "length"; }
+
+const char* ToString(FitStatus status) {
+  switch (status) {
+    case FitStatus::kNotRun: return "not run";
+    case FitStatus::kConverged: return "converged";
+    case FitStatus::kAboveTolerance: return "above tolerance";
+    case FitStatus::kNotAssembling: return "does not assemble over the required range";
+    case FitStatus::kNoUsableStart: return "no usable start";
+    case FitStatus::kInvalidOptions: return "invalid options";
+  }
+  return "not run";
+}
+
+bool FitOptions::IsValid(std::string* why) const {
+  std::string problem;
+  if (starts < 1 || starts > 100000) problem = "starts must be between 1 and 100000";
+  else if (max_iterations < 0) problem = "max_iterations must not be negative";
+  else if (threads < 0) problem = "threads must not be negative (0: one per core)";
+  else if (!(std::isfinite(require_from) && std::isfinite(require_to))) problem = "the required range must be finite";
+  else if (!(length_tolerance > 0 && angle_tolerance > 0)) problem = "the tolerances must be positive";
+  if (why) *why = problem;
+  return problem.empty();
+}
+
+std::string FitReport::Brief() const {
+  std::string text = fmt::format("{}: cost {:.3g}", ToString(status), cost);
+  if (best_start >= 0) text += fmt::format(", start {} ({} of {} starts reached it)", best_start + 1, starts_at_best, starts.size());
+  if (!message.empty()) text += "; " + message;
+  return text;
+}
+
 FitReport Fit(const MechanismBuilder& builder, const std::vector<FitParameter>& parameters, const std::vector<FitTarget>& targets,
               const FitOptions& options) {
-  FitReport best;
+  FitReport report;
+  std::string why;
+  if (!options.IsValid(&why) || targets.empty()) {
+    report.status = FitStatus::kInvalidOptions;
+    report.message = targets.empty() ? "no targets" : why;
+    return report;
+  }
   const TargetModel model(builder, targets);
   const int n = static_cast<int>(parameters.size());
-  std::mt19937 rng(options.seed);
-  for (int start = 0; start < std::max(1, options.starts); ++start) {
-    std::vector<double> x;
-    for (const FitParameter& p : parameters) {
-      double v = p.start;
-      if (start > 0 && std::isfinite(p.lower) && std::isfinite(p.upper) && p.lower > -1e299 && p.upper < 1e299)
-        v = std::uniform_real_distribution<double>(p.lower, p.upper)(rng);
-      x.push_back(v);
-    }
-    for (const FitTarget& t : targets) {
-      if (t.input_free) x.push_back(t.input);
-    }
-    ceres::Problem problem;
-    problem.AddResidualBlock(new FitCost(model, n), nullptr, x.data());
-    for (int j = 0; j < n; ++j) {
-      if (parameters[j].lower > -1e299) problem.SetParameterLowerBound(x.data(), j, parameters[j].lower);
-      if (parameters[j].upper < 1e299) problem.SetParameterUpperBound(x.data(), j, parameters[j].upper);
-    }
-    ceres::Solver::Options solver_options;
-    solver_options.max_num_iterations = options.max_iterations;
-    solver_options.linear_solver_type = ceres::DENSE_QR;
-    solver_options.function_tolerance = 1e-15;
-    solver_options.gradient_tolerance = 1e-15;
-    solver_options.parameter_tolerance = 1e-14;
-    solver_options.minimizer_progress_to_stdout = false;
-    ceres::Solver::Summary summary;
-    ceres::Solve(solver_options, &problem, &summary);
-    if (!options.quiet) std::cerr << "koppel synth fit: start " << start + 1 << ": " << summary.BriefReport() << "\n";
-    if (!summary.IsSolutionUsable()) continue;
-    // residuals at the result
-    std::vector<double> r(model.Residuals());
-    if (!model.Evaluate(x.data(), n, r.data(), nullptr)) continue;
-    double cost = 0;
-    for (double v : r) cost += 0.5 * v * v;
-    // designs that assemble over the required input range win over any that do not
-    const bool assembles = AssemblesOver(builder, std::vector<double>(x.begin(), x.begin() + n), options);
-    if (best.ok && (assembles < best.assembles_over_range || (assembles == best.assembles_over_range && cost >= best.cost))) continue;
-    best.assembles_over_range = assembles;
-    best.ok = true;
-    best.cost = cost;
-    best.iterations = static_cast<int>(summary.iterations.size());
-    best.start_index = start;
-    best.values.assign(x.begin(), x.begin() + n);
-    best.target_residuals.clear();
-    best.fitted_inputs.clear();
-    int row = 0, free_index = 0;
-    for (const FitTarget& t : targets) {
-      const double w = t.weight != 0 ? t.weight : 1;
-      double residual = t.point ? std::hypot(r[row], r[row + 1]) : std::abs(r[row]);
-      for (int k = 1; t.straight && k < t.samples; ++k) residual = std::max(residual, std::abs(r[row + k]));
-      best.target_residuals.push_back(residual / std::abs(w));
-      best.fitted_inputs.push_back(t.input_free ? x[n + free_index++] : t.input);
-      row += t.straight ? t.samples : t.point ? 2 : 1;
-    }
+  const std::vector<StartOutcome> outcomes = RunStarts(builder, model, parameters, targets, options);
+  const StartOutcome* best = nullptr;
+  for (const StartOutcome& o : outcomes) {
+    report.starts.push_back(o.start);
+    if (o.start.usable && (!best || Better(o, *best))) best = &o;
   }
-  if (!best.ok) {
-    best.message = "no start gave a design that assembles at every target";
-    return best;
+  if (!best) {
+    report.status = FitStatus::kNoUsableStart;
+    report.message = "no start gave a design that assembles at every target";
+    return report;
   }
-  return best;
+  for (const StartOutcome& o : outcomes) {
+    if (o.start.usable && o.start.assembles_over_range == best->start.assembles_over_range &&
+        o.start.cost <= best->start.cost * (1 + kSameCostRelative) + kSameCostAbsolute)
+      ++report.starts_at_best;
+  }
+  report.best_start = best->start.index;
+  report.cost = best->start.cost;
+  report.iterations = best->iterations;
+  report.values.assign(best->x.begin(), best->x.begin() + n);
+  report.assembles_over_range = best->start.assembles_over_range;
+  report.drivable_from = best->drivable_from;
+  report.drivable_to = best->drivable_to;
+  Mechanism fitted;
+  std::string error;
+  if (!builder(report.values, &fitted, &error)) {  // it was built for this start's evaluation: a builder that changed its mind
+    report.status = FitStatus::kNoUsableStart;
+    report.message = "the fitted values no longer build the mechanism: " + error;
+    return report;
+  }
+  ReportTargets(fitted, targets, options, n, *best, &report);
+  // the verdict: every target within its tolerance, and the required range
+  std::string missed;
+  int n_missed = 0;
+  for (size_t i = 0; i < report.targets.size(); ++i) {
+    const FitTargetResult& t = report.targets[i];
+    if (t.met) continue;
+    ++n_missed;
+    missed += fmt::format("{}target {} '{}' misses by {}", missed.empty() ? "" : "; ", i + 1, t.name, FormatResidual(t));
+  }
+  if (n_missed > 0) {
+    report.status = FitStatus::kAboveTolerance;
+    report.message = fmt::format("{} of {} targets above tolerance: {}", n_missed, report.targets.size(), missed);
+  } else if (!report.assembles_over_range) {
+    report.status = FitStatus::kNotAssembling;
+    const bool angle = fitted.InputIsAngle();
+    auto in_unit = [angle](double v) { return angle ? RadToDeg(v) : v; };
+    report.message = fmt::format("the design does not assemble over the required range {:.6g} .. {:.6g}{}: its drive reaches {:.6g} .. {:.6g}",
+                                 in_unit(options.require_from), in_unit(options.require_to), angle ? " deg" : "", in_unit(report.drivable_from),
+                                 in_unit(report.drivable_to));
+  } else {
+    report.status = FitStatus::kConverged;
+  }
+  return report;
 }
 
 }  // namespace koppel

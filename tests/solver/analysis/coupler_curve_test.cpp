@@ -23,7 +23,7 @@ TEST_CASE("arc length of the crank pin is l1 times the crank angle", "[curve]") 
   range.to = 2 * kPi;
   range.step = DegToRad(5);
   const CouplerCurve c = TraceCurve(m, {1, 1}, range);  // crank.A on a circle of radius l1 = 1
-  REQUIRE(c.message.empty());
+  REQUIRE(c.sweep.complete());
   // Gauss on the Hermite interpolant of a circle: O(h^4) ~ 1e-7 relative at 5 deg steps
   CHECK(c.arc_length.back() == Approx(2 * kPi).epsilon(1e-6));
   for (double k : c.curvature) CHECK(k == Approx(1.0).epsilon(1e-12));  // curvature 1/l1
@@ -36,7 +36,7 @@ TEST_CASE("seed 003: B0K_I = 10/3 sqrt 6, stroke h = 0.469, K_I flattest", "[cur
   range.to = 2 * kPi;
   range.step = DegToRad(0.5);
   const CouplerCurve c = TraceCurve(m, {2, 2}, range);
-  REQUIRE(c.message.empty());
+  REQUIRE(c.sweep.complete());
   const Eigen::Vector2d b0(4, 0);
   const Eigen::Vector2d k_i = c.points[360], k_ii = c.points[0];  // phi = 180 deg and 0
   CHECK((k_i - b0).norm() == Approx(10.0 / 3 * std::sqrt(6.0)).margin(1e-12));
@@ -48,7 +48,7 @@ TEST_CASE("seed 003: B0K_I = 10/3 sqrt 6, stroke h = 0.469, K_I flattest", "[cur
 
 TEST_CASE("seed 003 reading example: Q_G = 0.005", "[curve]") {
   const StraightStretch s = LongestStraightStretch(Seed003(), {2, 2}, 0.005, kPi, kPi, DegToRad(0.02));
-  REQUIRE(s.found);
+  REQUIRE(s.ok());
   // the document's figures, read off a chart: phi_G = 163.3 deg, phi_A = 98.3 deg (0.1 deg), L/l1 = 3.91
   CHECK(RadToDeg(s.phi_g) == Approx(163.3).margin(0.05));
   CHECK(RadToDeg(s.phi_a) == Approx(98.3).margin(0.05));
@@ -59,7 +59,7 @@ TEST_CASE("seed 003 reading example: Q_G = 0.005", "[curve]") {
   CHECK(band.band == Approx(s.band).margin(1e-12));
   // a tighter tolerance gives a shorter stretch
   const StraightStretch tight = LongestStraightStretch(Seed003(), {2, 2}, 0.001, kPi, kPi, DegToRad(0.1));
-  REQUIRE(tight.found);
+  REQUIRE(tight.ok());
   CHECK(tight.phi_g < s.phi_g);
 }
 

@@ -26,7 +26,7 @@ TEST_CASE("slider-crank dead centres, stroke and phase ratio match seed 000", "[
     range.to = 2 * kPi;
     range.step = DegToRad(1);
     const DeadCentreReport r = FindDeadCentres(m, 0, 0, range);
-    REQUIRE(r.message.empty());
+    REQUIRE(r.sweep.complete());
     REQUIRE(r.points.size() == 2);
     REQUIRE(r.classified);
     const double lambda = l1 / l2, eps = e / l2;

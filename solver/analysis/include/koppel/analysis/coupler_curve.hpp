@@ -4,6 +4,7 @@
 // longest stretch that contains K_I.
 #pragma once
 
+#include "koppel/analysis/status.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/position.hpp"
 #include "koppel/solver/sweep.hpp"
@@ -18,16 +19,16 @@
 namespace koppel {
 
 struct CouplerCurve {
-  SweepStatus status = SweepStatus::kNotRun;  // of the sweep that traced it
+  AnalysisStatus status = AnalysisStatus::kNotRun;  // partial: the curve of the drivable part only
   std::string message;
+  SweepEvents sweep;                         // singular points and gaps of the trace
   std::vector<double> inputs;
   std::vector<std::uint8_t> singular;        // per sample: the pose is singular (see SweepResult)
-  std::vector<InputInterval> gaps;           // parts of the range the branch cannot reach
-  std::vector<SingularPoint> singular_points;
   std::vector<Eigen::Vector2d> points;       // global position
   std::vector<Eigen::Vector2d> d1, d2;       // d/dinput, d2/dinput2
   std::vector<double> arc_length;            // from the first sample, along the curve
   std::vector<double> curvature;             // signed, 1/length; 0 where the point stands still
+  std::string Brief() const;
 };
 
 // The mechanism with one output only: `point` (name "curve").
@@ -38,7 +39,7 @@ Mechanism WithPointOutput(const Mechanism& mechanism, const PointRef& point);
 CouplerCurve TraceCurve(const Mechanism& mechanism, const PointRef& point, const SweepOptions& range);
 
 struct StraightStretch {
-  bool found = false;
+  AnalysisStatus status = AnalysisStatus::kNotRun;  // kComplete: a stretch was measured
   std::string message;
   double reference = 0;                // input of K_I
   Eigen::Vector2d reference_point = Eigen::Vector2d::Zero();
@@ -48,18 +49,21 @@ struct StraightStretch {
   double length = 0;                   // L: extent of the stretch along g
   double band = 0;                     // Δy: width of the band parallel to g that holds the stretch
   double qg = 0;                       // band / length
+  bool ok() const { return status == AnalysisStatus::kComplete; }
+  std::string Brief() const;
 };
 
 // Band of a given stretch [from, to] against the tangent at `reference`.
 StraightStretch StretchBand(const Mechanism& mechanism, const PointRef& point, double reference, double from, double to,
-                            double resolution);
+                            double resolution, const ContinuationOptions& continuation = {});
 
 // The longest stretch around `reference` (default: the input of least |curvature| over the
 // range) with Q_G <= qg, searched over [reference - half_range, reference + half_range] at
 // `resolution` (inputs in radians for R drives). Q_G is not monotonic in the end point, so every
 // end point is tried, not only the first crossing.
 StraightStretch LongestStraightStretch(const Mechanism& mechanism, const PointRef& point, double qg,
-                                       std::optional<double> reference, double half_range, double resolution);
+                                       std::optional<double> reference, double half_range, double resolution,
+                                       const ContinuationOptions& continuation = {});
 
 // The input of least |curvature| on a traced curve (the best reference point for straight-line
 // guidance); -1 index when the curve is empty.

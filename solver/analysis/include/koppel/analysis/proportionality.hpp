@@ -9,8 +9,10 @@
 // Q_P = (Δs / l) / phi_P with phi_P in radians and l the reference length.
 #pragma once
 
+#include "koppel/analysis/status.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/position.hpp"
+#include "koppel/solver/sweep.hpp"
 
 #include <optional>
 #include <string>
@@ -18,17 +20,22 @@
 namespace koppel {
 
 struct Proportionality {
-  bool ok = false;
-  std::string message;
+  AnalysisStatus status = AnalysisStatus::kNotRun;  // partial: over the drivable part of the range (see sweep)
+  std::string message;    // why not computed, or why partial
+  SweepEvents sweep;      // singular points and gaps of the range
   double reference = 0;   // input of the tangent point
   double slope = 0;       // s' there
   double delta_s = 0;     // band width about the tangent
   double chord_deviation = 0;    // max |s - chord through the end points|, for comparison
   double phi_p = 0;       // range in radians (or length)
   double qp = 0;          // (delta_s / reference_length) / phi_p
+  std::string Brief() const;
 };
 
+// Over the drivable part of from..to when the branch cannot be driven through all of it (the
+// gaps are in `sweep`); not computed with fewer than two samples.
 Proportionality ProportionalityDeviation(const Mechanism& mechanism, int output, double from, double to, double reference_length,
-                                         std::optional<double> reference, double resolution);
+                                         std::optional<double> reference, double resolution,
+                                         const ContinuationOptions& continuation = {});
 
 }  // namespace koppel

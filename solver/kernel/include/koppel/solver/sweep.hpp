@@ -10,6 +10,7 @@
 // of the window), higher orders are marked not computable.
 #pragma once
 
+#include "koppel/core/angles.hpp"
 #include "koppel/core/limits.hpp"  // kMaxSweepSamples
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/continuation.hpp"
@@ -26,8 +27,8 @@ namespace koppel {
 
 struct SweepOptions {
   double from = 0.0;  // drive input: radians for an R drive, length for a P drive
-  double to = 2.0 * 3.14159265358979323846;
-  double step = 3.14159265358979323846 / 180.0;  // != 0; its sign is ignored (from -> to)
+  double to = 2.0 * kPi;
+  double step = kPi / 180.0;  // != 0; its sign is ignored (from -> to)
   int order = 2;  // highest transfer function order in the table (0..kMaxOrder)
   ContinuationOptions continuation;
 
@@ -71,6 +72,20 @@ struct SweepResult {
   // One line: status, rows, singular points and gaps.
   std::string Brief() const;
 };
+
+// What a sweep met on its way, without its rows: the part every analysis built on a sweep
+// passes on, so that the reader learns of the singular points and gaps behind its numbers.
+struct SweepEvents {
+  SweepStatus status = SweepStatus::kNotRun;
+  std::string message;
+  std::vector<std::string> notes;
+  std::vector<SingularPoint> singular_points;
+  std::vector<InputInterval> gaps;
+  InputInterval reached;
+  std::vector<double> singular_inputs;  // inputs of the rows flagged singular
+  bool complete() const { return status == SweepStatus::kComplete; }
+};
+SweepEvents EventsOf(const SweepResult& sweep);
 
 // Assembles at the mechanism's hint and samples from..to on that branch.
 // Precondition: CheckConsistency(mechanism) is empty.

@@ -4,6 +4,8 @@
 // transfer functions of any order follow exactly (no differencing). Fixed size: no heap.
 #pragma once
 
+#include "koppel/core/angles.hpp"
+
 #include <array>
 #include <cmath>
 
@@ -117,7 +119,7 @@ template <int N> double Value(const Taylor<N>& x) { return x.c[0]; }
 
 // Folds the value into [-pi, pi] by a whole number of turns; higher coefficients are untouched
 // because a constant shift does not change derivatives.
-inline double WrapAngle(double x) { return std::remainder(x, 2.0 * 3.14159265358979323846); }
+inline double WrapAngle(double x) { return std::remainder(x, 2.0 * kPi); }
 template <int N>
 Taylor<N> WrapAngle(Taylor<N> x) {
   x.c[0] = WrapAngle(x.c[0]);

@@ -1,0 +1,43 @@
+// Assembly at a regular pose, and the mobility the constraint equations actually have there.
+#pragma once
+
+#include "koppel/core/mechanism.hpp"
+#include "koppel/solver/continuation.hpp"
+#include "koppel/solver/position.hpp"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+struct Assembly {
+  Eigen::VectorXd q;   // the assembled pose
+  double input = 0.0;  // where: the hint's input, or beside it (see below)
+  std::string error;   // empty on success
+  std::vector<std::string> notes;
+  bool ok() const { return error.empty(); }
+};
+
+// Assembles at the mechanism's hint. When the hint's input is itself a singular position (the
+// reciprocal condition of J S there is below kSingularRowRcond), the hint cannot say which of the
+// branches meeting there it means; the mechanism is then assembled a window's half-width
+// (options.branch_window) beside it, where the hint still describes the pose, and a note says so.
+Assembly AssembleRegular(const Mechanism& mechanism, PositionSolver& solver, const ContinuationOptions& options = {});
+
+// The mobility of a mechanism: the Grübler–Kutzbach count, and n - rank of the joints' equations
+// at a regular assembled pose (rank by SVD of J_c S, singular values below 1e-9 of the largest
+// counting as zero). A one-drive mechanism needs rank mobility 1.
+struct MobilityReport {
+  int gruebler = 0;
+  int rank_mobility = -1;          // -1 when the mechanism could not be assembled
+  std::vector<int> redundant;      // joints whose equations are dependent (left null space of J_c)
+  bool assembled = false;
+  std::string error;               // mobility != 1 drive: what is wrong, naming both numbers
+  std::string note;                // accepted, but worth saying (overconstrained and consistent)
+  bool ok() const { return error.empty(); }
+};
+MobilityReport CheckMobility(const Mechanism& mechanism);
+
+}  // namespace koppel

@@ -1,0 +1,63 @@
+#include "design_proof.hpp"
+
+#include "koppel/analysis/dead_centres.hpp"
+#include "koppel/core/angles.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace koppel {
+namespace {
+
+// The search resolution of the full turn: one degree brackets every dead centre of a
+// crank-rocker or slider-crank (they are at least a few degrees apart), Newton refines to 1e-12.
+constexpr double kTurnStep = DegToRad(1);
+
+SweepOptions FullTurn(double from) {
+  SweepOptions turn;
+  turn.from = from;
+  turn.to = from + 2 * kPi;
+  turn.step = kTurnStep;
+  return turn;
+}
+
+double Mod2Pi(double a) { return std::fmod(std::fmod(a, 2 * kPi) + 2 * kPi, 2 * kPi); }
+
+}  // namespace
+
+CrankReanalysis ReanalyseCrank(const Mechanism& m, int stroke_output, int mu_output, double quiet_input) {
+  CrankReanalysis r;
+  const DeadCentreReport dc = FindDeadCentres(m, stroke_output, 0, FullTurn(quiet_input));
+  if (!dc.sweep.complete()) {
+    r.message = "the solver cannot drive the crank through a full turn: " + dc.sweep.message;
+    return r;
+  }
+  if (!dc.classified || dc.points.size() != 2) {
+    r.message = "the solver finds " + std::to_string(dc.points.size()) + " dead centres, not one extended and one folded";
+    return r;
+  }
+  r.phi0 = Mod2Pi(dc.phi_a - dc.phi_i);
+  r.turn = m.OutputIsAngle(stroke_output) ? AngleDifference(dc.s_a, dc.s_i) : dc.s_a - dc.s_i;
+  // mu's minima are stationary points with y'' > 0 (the fold at 90 deg is a maximum); the turn
+  // for them starts a radian away from the crank-along-the-frame positions where they sit
+  const DeadCentreReport mu = FindDeadCentres(m, mu_output, 0, FullTurn(1.0));
+  if (!mu.sweep.complete()) {
+    r.message = "the solver cannot drive the crank through a full turn: " + mu.sweep.message;
+    return r;
+  }
+  r.mu_min = std::numeric_limits<double>::infinity();
+  for (const DeadCentre& p : mu.points) {
+    if (p.second > 0 && p.value < r.mu_min) {
+      r.mu_min = p.value;
+      r.mu_min_at = std::remainder(p.input, 2 * kPi);
+    }
+  }
+  if (!std::isfinite(r.mu_min)) {
+    r.message = "the solver finds no smallest transmission angle over the turn";
+    return r;
+  }
+  r.ok = true;
+  return r;
+}
+
+}  // namespace koppel

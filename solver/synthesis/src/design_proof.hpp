@@ -1,0 +1,27 @@
+// Re-analysis of a synthesised crank mechanism by the generic solver: the proof every
+// dead-centre design passes before it is returned (deadcentre_synthesis.hpp).
+#pragma once
+
+#include "koppel/core/mechanism.hpp"
+
+#include <string>
+
+namespace koppel {
+
+struct CrankReanalysis {
+  bool ok = false;
+  std::string message;   // why not, when !ok
+  double phi0 = 0;       // crank angle from the folded to the extended dead centre, counter-clockwise
+  double turn = 0;       // output change from the folded to the extended dead centre (angles wrapped
+                         // to (-pi, pi]: > 0 counter-clockwise)
+  double mu_min = 0;     // smallest transmission angle over a full turn
+  double mu_min_at = 0;  // input where it occurs, in [-pi, pi]
+};
+
+// Drives the crank through a full turn with the solver and finds the extended and folded dead
+// centres of output `stroke_output` and the smallest value of the transmission angle output
+// `mu_output`. `quiet_input` is an input where the stroke output is far from a dead centre (the
+// turn starts there, so that no dead centre sits at the ends of the sweep).
+CrankReanalysis ReanalyseCrank(const Mechanism& mechanism, int stroke_output, int mu_output, double quiet_input);
+
+}  // namespace koppel

@@ -1,0 +1,66 @@
+// Design charts from `koppel synth chart` CSVs: curve families with their parameter, gaps of
+// the grid not bridged, tables that are not charts refused with the line.
+#include "koppel/plot/plots.hpp"
+
+#include "tools/plot/svg_reading.hpp"
+
+#include <catch2/catch.hpp>
+
+namespace koppel {
+
+TEST_CASE("crank-rocker chart: one curve per psi0, labelled, a missing design breaks its curve", "[plot]") {
+  std::string csv = "phi0,psi0,beta,mu_min,l1,l2,l3,l4\n";
+  for (int psi : {40, 60})
+    for (int phi = 160; phi <= 180; phi += 5)
+      if (!(psi == 60 && phi == 170)) csv += std::to_string(phi) + "," + std::to_string(psi) + ",30," + std::to_string(phi - psi) + ",1,2,3,4\n";
+  const plot::PlotResult r = plot::ChartPlot(csv, "chart.csv");
+  REQUIRE(r.status == plot::PlotStatus::kComplete);
+  const auto doc = test::ParseSvg(r.svg);
+  const auto panels = test::Find(doc, "g", "panel");
+  REQUIRE(panels.size() == 2);  // max mu_min and beta over phi0
+  const auto curves = test::Find(panels[0], "path", "curve");
+  REQUIRE(curves.size() == 2);
+  CHECK(std::string(curves[0].attribute("data-name").as_string()) == "ψ0 = 40°");
+  CHECK(std::string(curves[1].attribute("data-name").as_string()) == "ψ0 = 60°");
+  CHECK(test::Subpaths(curves[0]).size() == 1);
+  CHECK(test::Subpaths(curves[1]).size() == 2);  // 170 is missing: 160..165 and 175..180
+  const test::AxisMap x = test::ReadAxis(panels[0], "x"), y = test::ReadAxis(panels[0], "y");
+  const auto last = test::Subpaths(curves[1]).back().back();
+  CHECK(x.ToData(last.x()) == Approx(180).margin(0.01));
+  CHECK(y.ToData(last.y()) == Approx(120).margin(0.01));
+}
+
+TEST_CASE("slider-crank chart: e/s0, l1/s0, l2/s0 and mu_min over phi0", "[plot]") {
+  const std::string csv = "phi0,e_s0,l1_s0,l2_s0,mu_min,beta\n120,0.16,0.5,1.1,11.2,10\n130,0.2,0.55,1.2,15,12\n";
+  const plot::PlotResult r = plot::ChartPlot(csv, "s.csv");
+  REQUIRE(r.status == plot::PlotStatus::kComplete);
+  const auto doc = test::ParseSvg(r.svg);
+  const auto panels = test::Find(doc, "g", "panel");
+  REQUIRE(panels.size() == 2);
+  CHECK(test::Find(panels[0], "path", "curve").size() == 3);
+  CHECK(test::Find(panels[1], "path", "curve").size() == 1);
+}
+
+TEST_CASE("synth chart's rows without a design are gaps; one rocker sense per plot", "[plot]") {
+  const std::string header = "phi0,psi0,rocker_sense,status,beta,mu_min,l1,l2,l3,l4,beta_L,beta_E\n";
+  std::string csv = header;
+  for (int phi = 160; phi <= 180; phi += 5)
+    csv += phi == 170 ? "170,40,same,none,,,,,,,,\n" : std::to_string(phi) + ",40,same,ok,30,20,1,2,3,4,50,10\n";
+  const plot::PlotResult r = plot::ChartPlot(csv, "chart.csv");
+  REQUIRE(r.status == plot::PlotStatus::kComplete);
+  const auto curves = test::Find(test::Find(test::ParseSvg(r.svg), "g", "panel")[0], "path", "curve");
+  REQUIRE(curves.size() == 1);
+  CHECK(test::Subpaths(curves[0]).size() == 2);  // 170 has no design: 160..165 and 175..180
+  const plot::PlotResult both = plot::ChartPlot(csv + "160,40,opposite,ok,30,20,1,2,3,4,50,10\n", "chart.csv");
+  CHECK(both.status == plot::PlotStatus::kFailed);
+  CHECK_THAT(both.message, Catch::Contains("--rocker-sense"));
+}
+
+TEST_CASE("tables that are not charts are refused, naming the file and line", "[plot]") {
+  CHECK_THAT(plot::ChartPlot("phi0,psi0,beta,mu_min\n1,2,3,4\n1,2,x,4\n", "c.csv").message, Catch::StartsWith("c.csv:3:"));
+  CHECK_THAT(plot::ChartPlot("phi0,psi0,beta,mu_min\n1,2,3\n", "c.csv").message, Catch::StartsWith("c.csv:2:"));
+  CHECK(plot::ChartPlot("a,b\n1,2\n", "c.csv").status == plot::PlotStatus::kFailed);
+  CHECK(plot::ChartPlot("", "c.csv").status == plot::PlotStatus::kFailed);
+}
+
+}  // namespace koppel

@@ -1,0 +1,103 @@
+// The page of `koppel view` in headless Debian Chromium (driven by playwright-core): for a
+// slider-crank (seed 000), the six-link proportional linkage with three sliders (seed 001) and
+// the crank-rocker with a coupler curve (seed 003): the page is small, makes no network request,
+// logs no error, the animation moves the drawn mechanism, the screenshot is not blank, and the
+// input slider moves the charts' cursors to the input it shows.
+//
+// usage: node page_test.mjs KOPPEL NODE_MODULES_DIR CHROMIUM CATALOG_DIR
+import { createRequire } from 'node:module';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+
+const [koppel, npmDir, chromium, catalog] = process.argv.slice(2);
+const require = createRequire(path.resolve(npmDir, 'package.json'));
+const { chromium: browserType } = require('playwright-core');
+const { PNG } = require('pngjs');
+
+// The size the issue allows for a seed mechanism's page.
+const kMaxPageBytes = 300 * 1024;
+let passed = 0, failed = 0;
+function check(ok, what) {
+  if (ok) { passed++; } else { failed++; console.log('FAILED: ' + what); }
+}
+
+const work = fs.mkdtempSync(path.join(os.tmpdir(), 'koppel-view-'));
+const flags = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+  '--disable-background-networking', '--disable-component-update', '--disable-sync'];
+const context = await browserType.launchPersistentContext(fs.mkdtempSync(path.join(work, 'profile-')),
+  { executablePath: chromium, headless: true, args: flags, viewport: { width: 1250, height: 1000 } });
+
+try {
+  for (const [id, link] of [['slider-crank-offset', 'crank'], ['proportional-linkage', 'slot'], ['mzc-crank-rocker', 'coupler']]) {
+    const html = path.join(work, id + '.html');
+    execFileSync(koppel, ['view', path.join(catalog, id + '.yaml'), '-o', html]);
+    const bytes = fs.statSync(html).size;
+    console.log(`${id}: page ${(bytes / 1024).toFixed(1)} KB`);
+    check(bytes < kMaxPageBytes, `${id}: page of ${bytes} bytes exceeds ${kMaxPageBytes}`);
+
+    const page = await context.newPage();
+    const errors = [], requests = [];
+    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+    page.on('pageerror', (e) => errors.push(String(e)));
+    page.on('request', (r) => { if (!r.url().startsWith('file:')) requests.push(r.url()); });
+    await page.route(/^(?!file:)/, (route) => route.abort());
+    await page.goto('file://' + html);
+    await page.waitForSelector(`svg.scheme g.link[data-link="${link}"]`, { state: 'attached' });
+
+    // the animation advances: the moving link's transform changes between two frames
+    const transform = () => page.getAttribute(`svg.scheme g.link[data-link="${link}"]`, 'transform');
+    const first = await transform();
+    await page.waitForTimeout(400);
+    const second = await transform();
+    check(first !== second, `${id}: the ${link} did not move between two frames (${first})`);
+
+    // the screenshot is not blank: many pixels that are not the background, in several colours
+    const png = PNG.sync.read(await page.screenshot());
+    let ink = 0;
+    const colours = new Set();
+    for (let i = 0; i < png.data.length; i += 4) {
+      const [r, g, b] = [png.data[i], png.data[i + 1], png.data[i + 2]];
+      if (r < 240 || g < 240 || b < 240) ink++;
+      colours.add((r >> 4) << 8 | (g >> 4) << 4 | (b >> 4));
+    }
+    const share = ink / (png.width * png.height);
+    check(share > 0.02 && colours.size > 20, `${id}: screenshot looks blank (${(100 * share).toFixed(2)} % ink, ${colours.size} colours)`);
+
+    // moving the slider moves the cursor to the input it shows
+    await page.click('#play');  // pause
+    const positions = [];
+    for (const index of [30, 200]) {
+      await page.$eval('#input-slider', (el, v) => { el.value = String(v); el.dispatchEvent(new Event('input')); }, index);
+      const state = await page.evaluate(() => {
+        const cursor = document.querySelector('.koppel-cursor');
+        const over = cursor.parentElement.getBoundingClientRect();
+        return { left: parseFloat(cursor.style.left), width: over.width, text: document.getElementById('input-value').textContent,
+                 transform: document.querySelector('svg.scheme g.link').getAttribute('transform') };
+      });
+      const data = JSON.parse(await page.textContent('#koppel-data'));
+      const x = data.inputs[index], lo = data.inputs[0], hi = data.inputs[data.inputs.length - 1];
+      check(state.text.includes(Number(x).toPrecision(6)), `${id}: slider at ${index} shows '${state.text}', expected input ${x}`);
+      // uPlot's x scale spans the data: the cursor sits at (x - lo)/(hi - lo) of the plot width
+      check(Math.abs(state.left - (x - lo) / (hi - lo) * state.width) < 1.5,
+        `${id}: cursor at ${state.left} px, expected ${((x - lo) / (hi - lo) * state.width).toFixed(1)} px`);
+      positions.push(state);
+    }
+    check(positions[1].left > positions[0].left + 50, `${id}: the cursor did not follow the slider`);
+    check(positions[0].transform !== positions[1].transform, `${id}: the scheme did not follow the slider`);
+    // paused: no further motion
+    const paused = await transform();
+    await page.waitForTimeout(300);
+    check(paused === await transform(), `${id}: the mechanism moved while paused`);
+
+    check(errors.length === 0, `${id}: console errors: ${errors.join(' | ')}`);
+    check(requests.length === 0, `${id}: network requests: ${requests.join(' ')}`);
+    await page.close();
+  }
+} finally {
+  await context.close();
+  fs.rmSync(work, { recursive: true, force: true });
+}
+console.log(`${passed} passed, ${failed} failed`);
+process.exit(failed === 0 ? 0 : 1);

@@ -1,0 +1,77 @@
+#include "plot_support.hpp"
+
+#include "koppel/core/angles.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace koppel::plot {
+
+double ShownInput(const Mechanism& m, double input) { return m.InputIsAngle() ? RadToDeg(input) : input; }
+
+std::string InputLabel(const Mechanism& m) {
+  const std::string& name = m.drive.input_name;
+  const std::string shown = name == "phi" ? "φ" : name;
+  return shown + (m.InputIsAngle() ? " [deg]" : " [length]");
+}
+
+std::string DerivativeLabel(const Mechanism& m, int output, const std::string& component, int k) {
+  std::string name = m.outputs[output].name + component;
+  if (name == "mu") name = "μ";
+  if (name == "psi") name = "ψ";
+  static const char* kPrimes[] = {"", "'", "''", "'''"};
+  name += k <= 3 ? std::string(kPrimes[k]) : "^(" + std::to_string(k) + ")";
+  const std::string in = m.InputIsAngle() ? "rad" : "length";
+  const std::string out = m.OutputIsAngle(output) ? (k == 0 ? "deg" : "rad") : "length";
+  if (k == 0) return name + " [" + out + "]";
+  const std::string power = k == 1 ? "" : k == 2 ? "²" : k == 3 ? "³" : "^" + std::to_string(k);
+  return name + " [" + out + "/" + in + power + "]";
+}
+
+double ShownOutput(const Mechanism& m, int output, int k, double value) {
+  return k == 0 && m.OutputIsAngle(output) ? RadToDeg(value) : value;
+}
+
+std::vector<std::vector<Eigen::Vector2d>> InputRuns(const Mechanism& m, const SampledRun& run, int column, int output, int k) {
+  std::vector<std::vector<Eigen::Vector2d>> runs;
+  for (const Stretch& s : run.stretches) {
+    runs.emplace_back();
+    for (int i = s.begin; i < s.end; ++i)
+      runs.back().emplace_back(ShownInput(m, run.inputs[i]), ShownOutput(m, output, k, run.outputs(i, column)));
+  }
+  return runs;
+}
+
+bool YRange(const std::vector<std::vector<Eigen::Vector2d>>& runs, double* low, double* high) {
+  *low = std::numeric_limits<double>::infinity();
+  *high = -*low;
+  for (const auto& r : runs)
+    for (const auto& p : r) {
+      *low = std::min(*low, p.y());
+      *high = std::max(*high, p.y());
+    }
+  return *low <= *high;
+}
+
+bool RangeIsValid(const SweepOptions& range, int max_samples, std::string* why) {
+  if (!std::isfinite(range.from) || !std::isfinite(range.to) || !std::isfinite(range.step) || range.step == 0) {
+    *why = "the input range needs finite from/to and a non-zero step";
+    return false;
+  }
+  if (SampleCount(range.from, range.to, range.step) > max_samples) {
+    *why = "more than " + std::to_string(max_samples - 1) + " samples: use a larger step";
+    return false;
+  }
+  return true;
+}
+
+void MarkGaps(const Mechanism& m, const SampledRun& run, Panel& panel, bool label) {
+  for (const InputGap& g : run.gaps) {
+    const double a = ShownInput(m, g.from), b = ShownInput(m, g.to);
+    panel.shaded.emplace_back(std::min(a, b), std::max(a, b));
+  }
+  for (double s : run.singular) panel.rules.push_back({ShownInput(m, s), label ? "singular" : "", "singular"});
+}
+
+}  // namespace koppel::plot

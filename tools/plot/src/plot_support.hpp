@@ -1,0 +1,35 @@
+// What the plot builders share: display units of inputs and outputs, and runs of samples as
+// curve subpaths.
+#pragma once
+
+#include "koppel/core/mechanism.hpp"
+#include "koppel/plot/figure.hpp"
+#include "koppel/plot/sampled_run.hpp"
+
+#include <string>
+#include <vector>
+
+namespace koppel::plot {
+
+// Input as shown: degrees for an R drive, length for a P drive.
+double ShownInput(const Mechanism& mechanism, double input);
+std::string InputLabel(const Mechanism& mechanism);
+// "s' [length/rad]", "ψ [deg]", "ψ'' [rad/rad²]" for order k.
+std::string DerivativeLabel(const Mechanism& mechanism, int output, const std::string& component, int k);
+// Output value as shown: degrees for an angle output at order 0.
+double ShownOutput(const Mechanism& mechanism, int output, int k, double value);
+
+// One subpath per stretch of the run: (shown input, shown column value).
+std::vector<std::vector<Eigen::Vector2d>> InputRuns(const Mechanism& mechanism, const SampledRun& run, int column, int output,
+                                                    int k);
+// Least and greatest y over the runs (for axis ranges); false when empty.
+bool YRange(const std::vector<std::vector<Eigen::Vector2d>>& runs, double* low, double* high);
+
+// A finite input range with a non-zero step and at most `max_samples` samples (a picture has a
+// few thousand at most: more only bloats the file). *why says what is wrong.
+bool RangeIsValid(const SweepOptions& range, int max_samples, std::string* why);
+
+// The gaps and singular positions of the run marked on a panel (shaded and as rules).
+void MarkGaps(const Mechanism& mechanism, const SampledRun& run, Panel& panel, bool label);
+
+}  // namespace koppel::plot

@@ -1,0 +1,364 @@
+#include "koppel/plot/scheme.hpp"
+#include "koppel/core/angles.hpp"
+
+#include "koppel/plot/svg.hpp"
+#include "koppel/solver/constraints.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+namespace koppel::plot {
+namespace {
+
+using Vec = Eigen::Vector2d;
+
+// Sizes of the symbols in px, independent of the mechanism's size.
+constexpr double kJointRadius = 4.5, kBlockLength = 30, kBlockWidth = 15, kMargin = 40, kCaption = 22;
+constexpr double kPivotHeight = 13, kPivotHalfWidth = 9, kHatch = 6, kLabelOffset = 7, kArrowRadius = 26;
+const char* kInk = "#1d2b3a";
+const char* kLinkFill = "#d3e2f1";
+
+const char* kStyle =
+    "<style>"
+    "text{font-family:DejaVu Sans,Arial,sans-serif;font-size:13px;fill:#1d2b3a}"
+    ".caption{font-size:14px}.overlay-labels text{fill:#777;font-size:12px}"
+    ".hatch{stroke:#1d2b3a;stroke-width:1}.trace{fill:none;stroke:#c0392b;stroke-width:1.4}"
+    "</style>";
+
+struct View {
+  double scale = 1, ox = 0, oy = 0;
+  Vec operator()(const Vec& w) const { return {ox + scale * w.x(), oy - scale * w.y()}; }
+};
+
+struct LinkPose {
+  Vec origin = Vec::Zero();
+  double theta = 0;
+  Vec ToGlobal(const Vec& local) const { return origin + Eigen::Rotation2Dd(theta) * local; }
+};
+
+LinkPose PoseOf(const ConstraintSystem& system, int link, const Eigen::VectorXd& q) {
+  const int c = system.CoordinateOf(link);
+  if (c < 0) return {};
+  return {Vec(q[c], q[c + 1]), q[c + 2]};
+}
+
+// The SVG transform from a link's body frame to the picture: body -> global -> px (y flipped).
+std::string Transform(const View& view, const LinkPose& pose) {
+  const double s = view.scale, c = std::cos(pose.theta), n = std::sin(pose.theta);
+  return "matrix(" + Num(s * c, 6) + " " + Num(-s * n, 6) + " " + Num(-s * n, 6) + " " + Num(-s * c, 6) + " " +
+         Num(view.ox + s * pose.origin.x(), 3) + " " + Num(view.oy - s * pose.origin.y(), 3) + ")";
+}
+
+// Andrew's monotone chain: the convex hull, counter-clockwise, collinear points dropped.
+std::vector<Vec> ConvexHull(std::vector<Vec> p) {
+  std::sort(p.begin(), p.end(), [](const Vec& a, const Vec& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  p.erase(std::unique(p.begin(), p.end(), [](const Vec& a, const Vec& b) { return (a - b).norm() < 1e-12; }), p.end());
+  if (p.size() < 3) return p;
+  auto cross = [](const Vec& o, const Vec& a, const Vec& b) { return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x(); };
+  std::vector<Vec> hull(2 * p.size());
+  size_t k = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  for (size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && cross(hull[k - 2], hull[k - 1], p[i - 1]) <= 0) --k;
+    hull[k++] = p[i - 1];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+class SchemeWriter {
+ public:
+  SchemeWriter(const Mechanism& m, const SchemeScene& scene) : m_(m), scene_(scene), system_(m) {
+    for (const Eigen::VectorXd* q : AllPoses())
+      if (q->size() != system_.NumCoordinates()) throw std::invalid_argument("DrawScheme: pose of the wrong size");
+    GuideExtents();
+    FitView();
+  }
+
+  std::string Write() {
+    Svg svg(scene_.width, height_);
+    svg.Defs(kStyle);
+    svg.Rect(0, 0, scene_.width, height_, {{"fill", "#fff"}});
+    if (!scene_.trace.empty()) {
+      std::vector<std::vector<Vec>> runs;
+      for (const auto& run : scene_.trace) {
+        runs.emplace_back();
+        for (const Vec& p : run) runs.back().push_back(view_(p));
+      }
+      svg.Path(runs, {{"class", "trace"}, {"data-name", scene_.trace_name}});
+    }
+    for (const OverlayPose& o : scene_.overlays) Overlay(svg, o);
+    Frame(svg);
+    // bodies first, then joint circles, so that every joint sits on top of the links it joins
+    for (int pass = 0; pass < 2; ++pass)
+      for (int l = 0; l < static_cast<int>(m_.links.size()); ++l)
+        if (!m_.links[l].is_frame) MovingLink(svg, l, pass == 1);
+    Labels(svg, scene_.q, "", scene_.animatable);
+    svg.Text({kMargin / 2, 17}, scene_.caption, {{"class", "caption"}, {"id", "caption"}});
+    Attrs root = {{"class", "scheme"}};
+    if (scene_.animatable) root.insert(root.end(), {{"data-scale", Num(view_.scale, 9)}, {"data-ox", Num(view_.ox, 6)}, {"data-oy", Num(view_.oy, 6)}});
+    return svg.Finish(root);
+  }
+
+ private:
+  std::vector<const Eigen::VectorXd*> AllPoses() const {
+    std::vector<const Eigen::VectorXd*> poses = {&scene_.q};
+    for (const auto& o : scene_.overlays) poses.push_back(&o.q);
+    for (const auto& q : scene_.extent) poses.push_back(&q);
+    return poses;
+  }
+
+  Vec Global(const PointRef& p, const Eigen::VectorXd& q) const {
+    double xy[2];
+    system_.GlobalPoint(p, q.data(), xy);
+    return {xy[0], xy[1]};
+  }
+
+  // The travel of every slider along its guide (guide body frame, from the guide's point), so
+  // that a guide is drawn as long as the block moves on it.
+  void GuideExtents() {
+    travel_.assign(m_.joints.size(), {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()});
+    for (size_t j = 0; j < m_.joints.size(); ++j) {
+      const Joint& joint = m_.joints[j];
+      if (joint.type != JointType::kPrismatic) continue;
+      auto& [low, high] = travel_[j];
+      if (!m_.links[joint.link_a].is_frame) low = high = 0;  // a slot starts at its own point
+      for (const Eigen::VectorXd* q : AllPoses()) {
+        const LinkPose guide = PoseOf(system_, joint.link_a, *q);
+        const Vec axis = Eigen::Rotation2Dd(guide.theta) * joint.axis;
+        const double s = axis.dot(Global({joint.link_b, joint.point_b}, *q) - Global({joint.link_a, joint.point_a}, *q));
+        low = std::min(low, s);
+        high = std::max(high, s);
+      }
+    }
+  }
+
+  // Ends of a guide in its body frame, the block's half length beyond the travel.
+  std::pair<Vec, Vec> GuideEnds(int j) const {
+    const Joint& joint = m_.joints[j];
+    const Vec p = m_.links[joint.link_a].points[joint.point_a].local;
+    const double margin = 0.75 * kBlockLength / view_.scale;
+    return {p + (travel_[j].first - margin) * joint.axis, p + (travel_[j].second + margin) * joint.axis};
+  }
+
+  void FitView() {
+    // first with a unit scale for the world box, then again with the guides' margins at scale
+    for (int round = 0; round < 2; ++round) {
+      Vec low = Vec::Constant(std::numeric_limits<double>::infinity()), high = -low;
+      auto add = [&](const Vec& p) { low = low.cwiseMin(p), high = high.cwiseMax(p); };
+      for (const Eigen::VectorXd* q : AllPoses()) {
+        for (int l = 0; l < static_cast<int>(m_.links.size()); ++l)
+          for (int i = 0; i < static_cast<int>(m_.links[l].points.size()); ++i) add(Global({l, i}, *q));
+        if (round == 1)
+          for (size_t j = 0; j < m_.joints.size(); ++j)
+            if (m_.joints[j].type == JointType::kPrismatic) {
+              const LinkPose guide = PoseOf(system_, m_.joints[j].link_a, *q);
+              const auto [a, b] = GuideEnds(static_cast<int>(j));
+              add(guide.ToGlobal(a));
+              add(guide.ToGlobal(b));
+            }
+      }
+      for (const auto& run : scene_.trace)
+        for (const Vec& p : run) add(p);
+      const Vec size = (high - low).cwiseMax(Vec::Constant(1e-9 * std::max(1.0, LengthScale(m_))));
+      const double usable = scene_.width - 2 * kMargin;
+      view_.scale = usable / size.x();
+      height_ = size.y() * view_.scale + 2 * kMargin + kCaption;
+      if (height_ > 1.1 * scene_.width) {
+        view_.scale = (1.1 * scene_.width - 2 * kMargin - kCaption) / size.y();
+        height_ = 1.1 * scene_.width;
+      }
+      view_.ox = kMargin + (usable - size.x() * view_.scale) / 2 - view_.scale * low.x();
+      view_.oy = kMargin + kCaption + view_.scale * high.y();
+    }
+  }
+
+  void Hatching(Svg& svg, const Vec& from, const Vec& to, const Vec& side) const {
+    const Vec t = (to - from).normalized();
+    const double length = (to - from).norm();
+    std::string d;
+    for (double s = 2; s <= length; s += kHatch) {
+      const Vec a = from + s * t, b = a + kHatch * side - 0.8 * kHatch * t;
+      d.append("M").append(Num(a.x())).append(",").append(Num(a.y())).append("L").append(Num(b.x())).append(",").append(Num(b.y()));
+    }
+    svg.PathData(d, {{"class", "hatch"}});
+  }
+
+  void Frame(Svg& svg) const {
+    svg.OpenGroup({{"class", "frame"}});
+    for (size_t j = 0; j < m_.joints.size(); ++j) {
+      const Joint& joint = m_.joints[j];
+      const bool a_frame = m_.links[joint.link_a].is_frame, b_frame = m_.links[joint.link_b].is_frame;
+      if (!a_frame && !b_frame) continue;
+      if (joint.type == JointType::kRevolute) {
+        // pivot: a triangle standing on a hatched ground line
+        const Vec c = view_(Global(a_frame ? PointRef{joint.link_a, joint.point_a} : PointRef{joint.link_b, joint.point_b}, scene_.q));
+        const Vec l = c + Vec(-kPivotHalfWidth, kPivotHeight), r = c + Vec(kPivotHalfWidth, kPivotHeight);
+        svg.Polygon({c, l, r}, {{"class", "pivot"}, {"fill", "#fff"}, {"stroke", kInk}, {"stroke-width", "1.4"}});
+        const Vec g1 = l - Vec(5, 0), g2 = r + Vec(5, 0);
+        svg.Line(g1, g2, {{"stroke", kInk}, {"stroke-width", "1.6"}});
+        Hatching(svg, g1, g2, Vec(0, 1));
+      } else if (a_frame) {
+        // a guide on the frame: the line the block slides on, hatched on one side
+        const auto [a, b] = GuideEnds(static_cast<int>(j));
+        const Vec pa = view_(a), pb = view_(b);
+        const Vec t = (pb - pa).normalized();
+        Vec side(-t.y(), t.x());
+        if (side.y() < 0 || (side.y() == 0 && side.x() < 0)) side = -side;
+        const Vec offset = side * (kBlockWidth / 2);
+        svg.Line(pa + offset, pb + offset, {{"class", "guide"}, {"stroke", kInk}, {"stroke-width", "1.6"}});
+        Hatching(svg, pa + offset, pb + offset, side);
+      }
+    }
+    DriveArrow(svg);
+    svg.CloseGroup();
+  }
+
+  void DriveArrow(Svg& svg) const {
+    const Joint& drive = m_.joints[m_.drive.joint];
+    const bool a_frame = m_.links[drive.link_a].is_frame;
+    if (!a_frame && !m_.links[drive.link_b].is_frame) return;  // a drive between moving links: no arrow
+    if (drive.type == JointType::kRevolute) {
+      const Vec c = view_(Global(a_frame ? PointRef{drive.link_a, drive.point_a} : PointRef{drive.link_b, drive.point_b}, scene_.q));
+      // world angles 150..250 deg: left of the pivot, clear of the ground symbol; counter-clockwise
+      const double a0 = DegToRad(150), a1 = DegToRad(250);
+      const Vec p0 = c + kArrowRadius * Vec(std::cos(a0), -std::sin(a0)), p1 = c + kArrowRadius * Vec(std::cos(a1), -std::sin(a1));
+      svg.PathData("M" + Num(p0.x()) + "," + Num(p0.y()) + " A" + Num(kArrowRadius) + "," + Num(kArrowRadius) + " 0 0 0 " +
+                       Num(p1.x()) + "," + Num(p1.y()),
+                   {{"class", "drive-arrow"}, {"fill", "none"}, {"stroke", kInk}, {"stroke-width", "1.4"}});
+      const Vec t(-std::sin(a1), -std::cos(a1)), n(-t.y(), t.x());
+      svg.Polygon({p1 + 2 * t, p1 - 7 * t + 3.5 * n, p1 - 7 * t - 3.5 * n}, {{"class", "drive-arrow-head"}, {"fill", kInk}});
+      const Vec label = c + (kArrowRadius + 12) * Vec(std::cos(DegToRad(200)), -std::sin(DegToRad(200)));
+      svg.Text(label + Vec(0, 4), m_.drive.input_name == "phi" ? "φ" : m_.drive.input_name, {{"text-anchor", "middle"}});
+    } else {
+      const auto [a, b] = GuideEnds(m_.drive.joint);
+      const Vec pa = view_(a), pb = view_(b), t = (pb - pa).normalized();
+      Vec side(-t.y(), t.x());
+      if (side.y() > 0 || (side.y() == 0 && side.x() > 0)) side = -side;  // opposite the hatching
+      const Vec mid = 0.5 * (pa + pb) + side * (kBlockWidth / 2 + 14), from = mid - 20 * t, to = mid + 20 * t;
+      svg.Line(from, to, {{"class", "drive-arrow"}, {"stroke", kInk}, {"stroke-width", "1.4"}});
+      const Vec n(-t.y(), t.x());
+      svg.Polygon({to + 2 * t, to - 7 * t + 3.5 * n, to - 7 * t - 3.5 * n}, {{"class", "drive-arrow-head"}, {"fill", kInk}});
+    }
+  }
+
+  void MovingLink(Svg& svg, int l, bool joints_pass) const {
+    const Link& link = m_.links[l];
+    const double u = 1 / view_.scale;  // one px in body units
+    Attrs group = {{"class", joints_pass ? "joints" : "link"}, {"data-link", link.name},
+                   {"transform", Transform(view_, PoseOf(system_, l, scene_.q))}};
+    if (scene_.animatable) group.push_back({"data-coord", std::to_string(system_.CoordinateOf(l))});
+    svg.OpenGroup(group);
+    const Attrs thin = {{"vector-effect", "non-scaling-stroke"}, {"stroke", kInk}, {"stroke-width", "1.4"}};
+    auto with = [&](Attrs a, const Attrs& more) {
+      a.insert(a.end(), more.begin(), more.end());
+      return a;
+    };
+    if (joints_pass) {
+      for (const Joint& joint : m_.joints) {
+        if (joint.type != JointType::kRevolute) continue;
+        // the circle rides on link_b, or on link_a when link_b is the frame
+        const int carrier = m_.links[joint.link_b].is_frame ? joint.link_a : joint.link_b;
+        if (carrier != l) continue;
+        const Vec p = link.points[carrier == joint.link_b ? joint.point_b : joint.point_a].local;
+        svg.Circle(p, kJointRadius * u, with(thin, {{"class", "joint"}, {"data-joint", joint.name}, {"fill", "#fff"}}));
+      }
+      svg.CloseGroup();
+      return;
+    }
+    // slots: this link guides a block
+    for (size_t j = 0; j < m_.joints.size(); ++j)
+      if (m_.joints[j].type == JointType::kPrismatic && m_.joints[j].link_a == l) {
+        const auto [a, b] = GuideEnds(static_cast<int>(j));
+        svg.Line(a, b, {{"class", "slot"}, {"vector-effect", "non-scaling-stroke"}, {"stroke", kInk}, {"stroke-width", "11"},
+                        {"stroke-linecap", "round"}});
+        svg.Line(a, b, {{"vector-effect", "non-scaling-stroke"}, {"stroke", "#fff"}, {"stroke-width", "8"}, {"stroke-linecap", "round"}});
+      }
+    // the body: a bar between two points, a polygon around three or more
+    std::vector<Vec> points;
+    for (const NamedPoint& p : link.points) points.push_back(p.local);
+    const std::vector<Vec> hull = ConvexHull(points);
+    if (hull.size() >= 3) {
+      svg.Polygon(hull, with(thin, {{"class", "body polygon"}, {"fill", kLinkFill}, {"stroke-linejoin", "round"}}));
+    } else if (hull.size() == 2) {
+      svg.Line(hull[0], hull[1], {{"class", "body bar"}, {"vector-effect", "non-scaling-stroke"}, {"stroke", kInk}, {"stroke-width", "7"},
+                                  {"stroke-linecap", "round"}});
+      svg.Line(hull[0], hull[1], {{"vector-effect", "non-scaling-stroke"}, {"stroke", kLinkFill}, {"stroke-width", "4.2"},
+                                  {"stroke-linecap", "round"}});
+    }
+    // blocks: this link slides on a guide
+    for (const Joint& joint : m_.joints)
+      if (joint.type == JointType::kPrismatic && joint.link_b == l) {
+        const Vec c = link.points[joint.point_b].local;
+        const Vec along = Eigen::Rotation2Dd(-joint.angle) * joint.axis, across(-along.y(), along.x());
+        const Vec h = 0.5 * kBlockLength * u * along, w = 0.5 * kBlockWidth * u * across;
+        svg.Polygon({c - h - w, c + h - w, c + h + w, c - h + w}, with(thin, {{"class", "block"}, {"data-joint", joint.name}, {"fill", "#f2f2f2"}}));
+      }
+    svg.CloseGroup();
+  }
+
+  // One label per point name, placed at the frame's point if the frame has it.
+  void Labels(Svg& svg, const Eigen::VectorXd& q, const std::string& suffix, bool animatable) const {
+    std::map<std::string, PointRef> chosen;
+    for (int l = 0; l < static_cast<int>(m_.links.size()); ++l) {
+      if (!suffix.empty() && m_.links[l].is_frame) continue;  // overlays label the moving points only
+      for (int i = 0; i < static_cast<int>(m_.links[l].points.size()); ++i) {
+        const std::string& name = m_.links[l].points[i].name;
+        const auto it = chosen.find(name);
+        if (it == chosen.end() || (m_.links[l].is_frame && !m_.links[it->second.link].is_frame)) chosen[name] = {l, i};
+      }
+    }
+    svg.OpenGroup({{"class", suffix.empty() ? "labels" : "overlay-labels"}});
+    const int frame = m_.FrameLink();
+    for (const auto& [name, ref] : chosen) {
+      if (!suffix.empty() && m_.links[frame].FindPoint(name) >= 0) continue;  // a frame pivot does not move
+      const Vec p = view_(Global(ref, q)) + Vec(kLabelOffset, -kLabelOffset);
+      Attrs attrs = {{"class", "label"}, {"data-point", name}};
+      if (animatable && !m_.links[ref.link].is_frame) {
+        const Vec local = m_.links[ref.link].points[ref.point].local;
+        attrs.insert(attrs.end(), {{"data-coord", std::to_string(system_.CoordinateOf(ref.link))},
+                                   {"data-px", Num(local.x(), 9)}, {"data-py", Num(local.y(), 9)}});
+      }
+      svg.Text(p, suffix.empty() ? name : name + "_" + suffix, attrs);
+    }
+    svg.CloseGroup();
+  }
+
+  // Another pose, faint: the links as thin lines, the joints as small circles, labels with a suffix.
+  void Overlay(Svg& svg, const OverlayPose& o) const {
+    svg.OpenGroup({{"class", "overlay"}, {"data-suffix", o.suffix}, {"stroke", "#8a8a8a"}, {"stroke-dasharray", "5 3"}, {"fill", "none"}});
+    for (int l = 0; l < static_cast<int>(m_.links.size()); ++l) {
+      if (m_.links[l].is_frame) continue;
+      std::vector<Vec> points;
+      for (int i = 0; i < static_cast<int>(m_.links[l].points.size()); ++i) points.push_back(view_(Global({l, i}, o.q)));
+      const std::vector<Vec> hull = ConvexHull(points);
+      if (hull.size() >= 2) svg.Polygon(hull, {{"stroke-width", "1.5"}});
+    }
+    for (const Joint& joint : m_.joints)
+      if (joint.type == JointType::kRevolute)
+        svg.Circle(view_(Global({joint.link_a, joint.point_a}, o.q)), 3, {{"fill", "#fff"}, {"stroke-dasharray", "none"}});
+    svg.CloseGroup();
+    Labels(svg, o.q, o.suffix, false);
+  }
+
+  const Mechanism& m_;
+  const SchemeScene& scene_;
+  ConstraintSystem system_;
+  std::vector<std::pair<double, double>> travel_;
+  View view_;
+  double height_ = 0;
+};
+
+}  // namespace
+
+std::string DrawScheme(const Mechanism& mechanism, const SchemeScene& scene) { return SchemeWriter(mechanism, scene).Write(); }
+
+}  // namespace koppel::plot

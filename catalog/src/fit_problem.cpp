@@ -1,13 +1,12 @@
 #include "koppel/catalog/fit_problem.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "input_file.hpp"
 #include "yaml_reader.hpp"
 
 #include <fmt/core.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace koppel {
 namespace {
@@ -26,16 +25,7 @@ std::string MechanismTextWithoutCard(const std::string& path) {
 }  // namespace
 
 FitProblem ReadFitProblem(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({Diagnostic{path, 0, 0, "", "cannot open file"}});
-  std::stringstream text;
-  text << in.rdbuf();
-  YAML::Node root;
-  try {
-    root = YAML::Load(text.str());
-  } catch (const YAML::Exception& e) {
-    throw InputError({Diagnostic{path, e.mark.line + 1, e.mark.column + 1, "", "YAML syntax error: " + e.msg}});
-  }
+  const YAML::Node root = ParseYamlText(ReadInputText(path), path);
   FitProblem problem;
   problem.path = path;
   YamlReader r(path, nullptr);

@@ -1,12 +1,12 @@
 #include "koppel/catalog/mechanism_file.hpp"
 
+#include "input_file.hpp"
 #include "koppel/core/angles.hpp"
+#include "koppel/core/limits.hpp"
 #include "koppel/solver/constraints.hpp"
 #include "yaml_reader.hpp"
 
 #include <cctype>
-#include <fstream>
-#include <sstream>
 
 namespace koppel {
 namespace {
@@ -54,6 +54,10 @@ class MechanismReader {
  private:
   void ReadParameters(const YAML::Node& node, const Overrides& overrides) {
     std::vector<bool> used(overrides.size(), false);
+    if (node.IsDefined() && node.IsMap() && node.size() > kMaxParameters) {
+      r_.Error(node, "parameters", "more than the limit of " + std::to_string(kMaxParameters) + " parameters (kMaxParameters)");
+      return;
+    }
     if (node.IsDefined() && !node.IsNull()) {
       for (const YamlReader::Entry& e : r_.Entries(node, "parameters")) {
         const std::string path = Child("parameters", e.key);
@@ -395,13 +399,7 @@ InputError::InputError(std::vector<Diagnostic> diagnostics)
 MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides) {
   MechanismFile out;
   out.path = file_name;
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw InputError({Diagnostic{file_name, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.is_null() ? 0 : e.mark.column + 1,
-                                 "", "YAML syntax error: " + e.msg}});
-  }
+  const YAML::Node root = ParseYamlText(text, file_name);
   YamlReader reader(file_name, &out.parameters);
   reader.set_fallback(YAML::Mark());  // line 1, column 1 for problems without a place
   try {
@@ -421,11 +419,7 @@ MechanismFile ParseMechanismText(const std::string& text, const std::string& fil
 }
 
 MechanismFile ReadMechanismFile(const std::string& path, const Overrides& overrides) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({Diagnostic{path, 0, 0, "", "cannot open file"}});
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return ParseMechanismText(buffer.str(), path, overrides);
+  return ParseMechanismText(ReadInputText(path), path, overrides);
 }
 
 std::pair<std::string, std::string> ParseAssignment(const std::string& text) {

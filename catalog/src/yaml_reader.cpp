@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_set>
 
 namespace koppel {
 namespace {
@@ -82,14 +83,14 @@ bool YamlReader::ExpectSequence(const YAML::Node& node, const std::string& path)
 std::vector<YamlReader::Entry> YamlReader::Entries(const YAML::Node& map, const std::string& path) {
   std::vector<Entry> entries;
   if (!ExpectMap(map, path)) return entries;
+  std::unordered_set<std::string> seen;  // a map of many parameters must not cost its square
   for (auto it = map.begin(); it != map.end(); ++it) {
     if (!it->first.IsScalar()) {
       Error(it->first, path, "a key must be a plain name");
       continue;
     }
     const std::string key = it->first.Scalar();
-    const bool duplicate = std::any_of(entries.begin(), entries.end(), [&](const Entry& e) { return e.key == key; });
-    if (duplicate) {
+    if (!seen.insert(key).second) {
       Error(it->first, Child(path, key), "duplicate key '" + key + "'");
       continue;
     }

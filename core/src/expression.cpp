@@ -1,15 +1,38 @@
 #include "koppel/core/expression.hpp"
 #include "koppel/core/angles.hpp"
 
+#include "koppel/core/limits.hpp"
+
 #include <muParser.h>
 
+#include <atomic>
 #include <cctype>
 #include <cmath>
 
 namespace koppel {
 namespace {
 constexpr double kPiValue = kPi;
+
+std::atomic<long long> parameter_reads{0};
+
+// Thrown by the variable factory for a name that is not a parameter.
+struct UnknownName {
+  std::string name;
+};
+
+// One parser per thread, built once (its built-in functions and constants cost more than a
+// formula); each formula binds only its own names and unbinds them afterwards.
+mu::Parser& SharedParser() {
+  thread_local mu::Parser parser = [] {
+    mu::Parser p;
+    p.DefineConst("pi", kPiValue);
+    p.DefineConst("deg", kPiValue / 180.0);
+    return p;
+  }();
+  return parser;
 }
+
+}  // namespace
 
 ParameterSet::ParameterSet() = default;
 ParameterSet::~ParameterSet() = default;
@@ -24,39 +47,46 @@ bool ParameterSet::ValidName(const std::string& name) {
   return name != "pi" && name != "deg";
 }
 
-bool ParameterSet::Has(const std::string& name) const {
-  for (const auto& [n, v] : values_) {
-    if (n == name) return true;
-  }
-  return false;
-}
+bool ParameterSet::Has(const std::string& name) const { return index_.count(name) > 0; }
 
 double ParameterSet::Value(const std::string& name) const {
-  for (const auto& [n, v] : values_) {
-    if (n == name) return v;
-  }
-  return std::nan("");
+  const auto it = index_.find(name);
+  return it == index_.end() ? std::nan("") : values_[it->second].second;
 }
 
+// muparser asks for each name a formula uses, once per formula: the cost of a formula is its
+// own length, never the number of parameters defined before it.
+double* ParameterSet::BindName(const char* name, void* data) {
+  auto* set = static_cast<ParameterSet*>(data);
+  const auto it = set->index_.find(name);
+  if (it == set->index_.end()) throw UnknownName{name};
+  parameter_reads.fetch_add(1, std::memory_order_relaxed);
+  return &set->values_[it->second].second;
+}
+
+long long ParameterSet::ParameterReads() { return parameter_reads.load(std::memory_order_relaxed); }
+
 std::optional<double> ParameterSet::Evaluate(const std::string& formula, std::string* error) const {
-  // A fresh parser per formula: muparser binds variables by address, and formulas are few.
-  mu::Parser parser;
-  std::vector<double> storage;
-  storage.reserve(values_.size());
+  if (formula.size() > kMaxFormulaLength) {
+    if (error)
+      *error = "formula of " + std::to_string(formula.size()) + " characters is longer than the limit of " +
+               std::to_string(kMaxFormulaLength) + " (kMaxFormulaLength)";
+    return std::nullopt;
+  }
+  mu::Parser& parser = SharedParser();
+  // muparser only reads through the bound addresses
+  parser.SetVarFactory(BindName, const_cast<ParameterSet*>(this));
+  std::optional<double> result;
   try {
-    parser.DefineConst("pi", kPiValue);
-    parser.DefineConst("deg", kPiValue / 180.0);
-    for (const auto& [n, v] : values_) {
-      storage.push_back(v);
-      parser.DefineVar(n, &storage.back());
-    }
     parser.SetExpr(formula);
     const double value = parser.Eval();
-    if (!std::isfinite(value)) {
-      if (error) *error = "formula '" + formula + "' does not give a finite number";
-      return std::nullopt;
+    if (std::isfinite(value)) {
+      result = value;
+    } else if (error) {
+      *error = "formula '" + formula + "' does not give a finite number";
     }
-    return value;
+  } catch (const UnknownName& unknown) {
+    if (error) *error = "formula '" + formula + "' does not parse: unknown name '" + unknown.name + "'";
   } catch (const mu::Parser::exception_type& e) {
     if (error) {
       std::string msg = e.GetMsg();
@@ -64,18 +94,20 @@ std::optional<double> ParameterSet::Evaluate(const std::string& formula, std::st
         msg = "unknown name '" + e.GetToken() + "'";
       *error = "formula '" + formula + "' does not parse: " + msg;
     }
-    return std::nullopt;
   }
+  // the bound addresses belong to this set: never leave them in the shared parser
+  parser.ClearVar();
+  parser.SetVarFactory(nullptr, nullptr);
+  return result;
 }
 
 void ParameterSet::DefineValue(const std::string& name, double value) {
-  for (auto& [n, v] : values_) {
-    if (n == name) {
-      v = value;
-      return;
-    }
+  const auto [it, added] = index_.emplace(name, values_.size());
+  if (added) {
+    values_.emplace_back(name, value);
+  } else {
+    values_[it->second].second = value;
   }
-  values_.emplace_back(name, value);
 }
 
 bool ParameterSet::Define(const std::string& name, const std::string& formula, std::string* error) {

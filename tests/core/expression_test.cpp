@@ -1,5 +1,6 @@
 // Parameter formulas through muparser: values, constants, order, errors.
 #include "koppel/core/expression.hpp"
+#include "koppel/core/limits.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -36,6 +37,55 @@ TEST_CASE("formula errors say what is wrong", "[expression]") {
   CHECK(ParameterSet::ValidName("l_2"));
   CHECK_FALSE(ParameterSet::ValidName("2l"));
   CHECK_FALSE(ParameterSet::ValidName("pi"));
+}
+
+}  // namespace koppel
+
+namespace koppel {
+
+TEST_CASE("a formula costs the same whatever came before it: 20 000 parameters read linearly", "[expression][limits]") {
+  // each formula names one earlier parameter: the work (parameter values bound into formulas)
+  // is one per formula, where binding the whole set per formula cost n^2/2 = 2e8
+  constexpr int kCount = 20'000;
+  ParameterSet p;
+  std::string error;
+  const long long reads_before = ParameterSet::ParameterReads();
+  REQUIRE(p.Define("p0", "1", &error));
+  for (int i = 1; i < kCount; ++i) {
+    REQUIRE(p.Define("p" + std::to_string(i), "p" + std::to_string(i - 1) + " + 1", &error));
+  }
+  CHECK(ParameterSet::ParameterReads() - reads_before == kCount - 1);
+  CHECK(p.Value("p19999") == 20'000.0);  // 1 + 19 999 ones, exact in doubles
+  CHECK(p.Values().size() == kCount);
+  // a formula naming two parameters reads two, however many are defined
+  const long long before_two = ParameterSet::ParameterReads();
+  CHECK(p.Evaluate("p0 + p19999", &error).value() == 20'001.0);
+  CHECK(ParameterSet::ParameterReads() - before_two == 2);
+}
+
+TEST_CASE("a formula longer than kMaxFormulaLength is refused before it is parsed", "[expression][limits]") {
+  ParameterSet p;
+  std::string error;
+  std::string formula = "1";
+  while (formula.size() <= kMaxFormulaLength) formula += "+1";
+  CHECK_FALSE(p.Evaluate(formula, &error));
+  CHECK_THAT(error, Catch::Contains("kMaxFormulaLength"));
+  CHECK(p.Evaluate(formula.substr(0, kMaxFormulaLength - 1), &error).has_value());  // just under it: fine
+}
+
+TEST_CASE("sets do not see each other's parameters through the shared parser", "[expression]") {
+  ParameterSet a, b;
+  std::string error;
+  REQUIRE(a.Define("x", "2", &error));
+  REQUIRE(b.Define("y", "3", &error));
+  CHECK(a.Evaluate("x*10", &error).value() == 20.0);
+  CHECK_FALSE(b.Evaluate("x*10", &error));  // x belongs to a only
+  CHECK_THAT(error, Catch::Contains("unknown name 'x'"));
+  CHECK(b.Evaluate("y*10", &error).value() == 30.0);
+  ParameterSet copy = a;  // a copy evaluates with its own values
+  copy.DefineValue("x", 5);
+  CHECK(copy.Evaluate("x", &error).value() == 5.0);
+  CHECK(a.Evaluate("x", &error).value() == 2.0);
 }
 
 }  // namespace koppel

@@ -110,6 +110,7 @@ void RunAnalyze(const AnalyzeArgs& args) {
   const double from = args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from);
   const double to = args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to);
   const double step = args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step);
+  CheckSampleCount(from, to, step, "--from/--to/--step");
 
   SweepOptions options;
   options.from = to_internal(from);
@@ -138,7 +139,7 @@ void RunAnalyze(const AnalyzeArgs& args) {
     j["status"] = ToString(result.status);
     j.update(SweepEventsJson(m, EventsOf(result)));
     if (!result.complete()) j["message"] = result.message;
-    WriteOutput(args.out, j.dump(1) + "\n");
+    WriteOutput(args.out, JsonText(j));
   }
   ReportSweep(args.file, m, EventsOf(result));
   if (!result.complete()) throw Exit{kExitFailed};

@@ -127,7 +127,7 @@ void PrintEntries(const std::vector<const CatalogEntry*>& entries, const Catalog
       j.push_back({{"id", e->file.id}, {"title_de", c.title_de}, {"title_en", c.title_en}, {"kind", ToString(c.kind)},
                    {"classes", e->classes}, {"motion", c.motion}, {"file", e->file.path}, {"features", FeaturesJson(e->features)}});
     }
-    WriteOutput(args.out, j.dump(1) + "\n");
+    WriteOutput(args.out, JsonText(j));
     return;
   }
   if (args.format == "csv") {

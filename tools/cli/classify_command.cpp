@@ -54,7 +54,7 @@ void Run(const Args& args) {
     for (const auto& [name, value] : c.lengths) add_number(name, value, "length");
     add_word("grashof_rule", c.rule);
   }
-  WriteOutput(args.out, args.format == "json" ? j.dump(1) + "\n" : rows.ToCsv());
+  WriteOutput(args.out, args.format == "json" ? JsonText(j) : rows.ToCsv());
   for (const std::string& note : c.notes) Complain(args.file + ": " + note);
   if (!c.assembled) {
     Complain(args.file + ": the mechanism cannot be assembled at its hint: no rank mobility or drive rotation");

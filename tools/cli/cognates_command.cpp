@@ -53,7 +53,7 @@ void Run(const Args& args) {
   s.Add("cognate2_B0B2", c.rocker_second, "length");
   s.Add("cognate2_B2K", c.k_second, "length");
   s.Add("cognate2_C2K", c.l_second, "length");
-  WriteOutput(args.out, args.format == "json" ? s.ToJson().dump(1) + "\n" : s.ToCsv());
+  WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv());
 }
 
 }  // namespace

@@ -5,13 +5,10 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace koppel::cli {
 
@@ -21,6 +18,7 @@ MechanismFile LoadMechanism(const std::string& path, const std::vector<std::stri
   try {
     std::vector<std::pair<std::string, std::string>> overrides;
     for (const std::string& s : sets) overrides.push_back(ParseAssignment(s));
+    NoteInputFile(path);
     MechanismFile file = ReadMechanismFile(path, overrides);
     // one drive needs mobility 1: anything else is a modelling error, not a solver failure
     const MobilityReport mobility = CheckMobility(file.mechanism);
@@ -47,33 +45,33 @@ double ParseNumberFlag(const std::string& flag, const std::string& text) {
   return *value;
 }
 
-void WriteOutput(const std::string& path, const std::string& text) {
-  if (path.empty() || path == "-") {
-    std::cout << text;
-    std::cout.flush();
-    return;
+void CheckCount(double count, const std::string& options, const CountLimit& limit) {
+  if (count <= limit.value) return;
+  Complain(fmt::format("{} ask for {:.3g}, more than the limit of {:.0f} {} ({}, see README 'Limits'); change {}", options, count,
+                       limit.value, limit.what, limit.name, options));
+  throw Exit{kExitBadInput};
+}
+
+void CheckSampleCount(double from, double to, double step, const std::string& options, const CountLimit& limit) {
+  if (!std::isfinite(from) || !std::isfinite(to) || !std::isfinite(step) || step == 0.0) {
+    Complain(options + ": the range and its step must be finite numbers, the step not 0");
+    throw Exit{kExitBadInput};
   }
-  // Write beside the target and rename, so a failure never leaves a half-written file.
-  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      Complain("cannot write '" + path + "'");
-      throw Exit{kExitBadInput};
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::filesystem::remove(temporary, ec);
-    Complain("cannot write '" + path + "'");
+  CheckCount(std::floor(std::abs(to - from) / std::abs(step)) + 1, options, limit);
+  // doubles keep about 16 digits: a step below 1e-9 of the magnitude would not move the input
+  if (std::abs(step) < 1e-9 * std::max(std::abs(from), std::abs(to))) {
+    Complain(fmt::format("{}: a step of {:g} is lost in the rounding of inputs as large as {:g}", options, std::abs(step),
+                         std::max(std::abs(from), std::abs(to))));
     throw Exit{kExitBadInput};
   }
 }
+
+std::string JsonText(nlohmann::json j) {
+  if (j.is_object()) j["version"] = Version();
+  return j.dump(1) + "\n";
+}
+
+const char* Version() { return KOPPEL_VERSION; }
 
 std::string FormatNumber(double value) {
   if (!std::isfinite(value)) throw std::logic_error("koppel: refusing to print a non-finite number");

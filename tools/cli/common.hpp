@@ -4,6 +4,7 @@
 #pragma once
 
 #include "koppel/catalog/mechanism_file.hpp"
+#include "koppel/core/limits.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -28,9 +29,46 @@ MechanismFile LoadMechanism(const std::string& path, const std::vector<std::stri
 // A number given on the command line as a formula ("5/6", "2*sqrt(3)"). Exit{2} on error.
 double ParseNumberFlag(const std::string& flag, const std::string& text);
 
-// Writes `text` to `path` atomically (a temporary file beside it, then rename), or to stdout
-// when path is empty or "-". Exit{2} when the file cannot be written.
+// Writes `text` to `path`, or to stdout when path is empty or "-" (output_file.cpp). A file is
+// written atomically: a temporary file made by mkstemp (O_EXCL, unpredictable name) in the
+// target's folder, renamed into place, removed on any failure. Refused with Exit{2}: a target
+// that is a symbolic link (never written through), a directory, a FIFO, a device or socket, or a
+// file this run read (NoteInputFile), and a folder where no file can be made. Exit{1} when a
+// write fails (disk full, file too large, stdout closed or full).
 void WriteOutput(const std::string& path, const std::string& text);
+
+// Remembers a file this run reads, so that WriteOutput never replaces it.
+void NoteInputFile(const std::string& path);
+
+// Flushes and closes stdout at the end of a run; a failed write that was not yet reported is
+// reported and turns exit code 0 into 1. Returns the exit code to use.
+int FinishStandardOutput(int code);
+
+// The JSON text of an output: `j` with a "version" field (koppel's version, when j is an
+// object), indented, with a final newline.
+std::string JsonText(nlohmann::json j);
+
+// The version of koppel (CMake's project version).
+const char* Version();
+
+// A limit on how many samples or cells a command may ask for (koppel/core/limits.hpp).
+struct CountLimit {
+  double value;
+  const char* name;  // the constant, e.g. "kMaxSweepSamples"
+  const char* what;  // "samples per sweep"
+};
+inline constexpr CountLimit kSweepSamples{static_cast<double>(kMaxSweepSamples), "kMaxSweepSamples", "samples per sweep"};
+inline constexpr CountLimit kStraightSearchSamples{static_cast<double>(kMaxStraightSearchSamples), "kMaxStraightSearchSamples",
+                                                   "samples per straight-line search"};
+inline constexpr CountLimit kChartCells{static_cast<double>(kMaxChartCells), "kMaxChartCells", "cells per chart"};
+
+// The one sample-count check of every sweeping command, before anything is allocated: a range
+// from..to by step (any one unit) must be finite, its step non-zero and not lost in the
+// rounding of from/to, and its count (counted in double, so no step overflows) within `limit`.
+// Exit{2} naming the limit and `options`, the flags that change the count.
+void CheckSampleCount(double from, double to, double step, const std::string& options, const CountLimit& limit = kSweepSamples);
+// The same for a count already known (e.g. the cells of a chart).
+void CheckCount(double count, const std::string& options, const CountLimit& limit);
 
 // %.12g: enough digits for a paper, short enough for a spreadsheet. Refuses non-finite numbers
 // (a bug upstream, never silently printed).

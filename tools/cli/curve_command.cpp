@@ -7,6 +7,8 @@
 #include "koppel/core/angles.hpp"
 #include "koppel/analysis/coupler_curve.hpp"
 
+#include <algorithm>
+
 namespace koppel::cli {
 namespace {
 
@@ -35,6 +37,7 @@ void Run(const Args& args) {
     range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
     range.step = in(args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step));
     std::string why;
+    CheckSampleCount(range.from, range.to, range.step, "--from/--to/--step");
     if (!range.IsValid(&why)) {
       Complain("--from/--to/--step: " + why);
       throw Exit{kExitBadInput};
@@ -52,7 +55,7 @@ void Run(const Args& args) {
       j["complete"] = c.sweep.complete();
       j.update(SweepEventsJson(m, c.sweep));
       if (!c.sweep.complete()) j["message"] = c.sweep.message;
-      WriteOutput(args.out, j.dump(1) + "\n");
+      WriteOutput(args.out, JsonText(j));
     } else {
       WriteOutput(args.out, t.ToCsv());
     }
@@ -71,6 +74,7 @@ void Run(const Args& args) {
   }
   std::optional<double> reference;
   if (!args.at.empty()) reference = DegToRad(ParseNumberFlag("--at", args.at));
+  CheckSampleCount(reference.value_or(0) - kPi, reference.value_or(0) + kPi, resolution, "--at/--resolution", kStraightSearchSamples);
   StraightStretch s;
   if (!args.stretch.empty()) {
     const auto colon = args.stretch.find(':');
@@ -78,8 +82,10 @@ void Run(const Args& args) {
       Complain("--stretch A:E needs the form A:E (degrees) and a reference point --at");
       throw Exit{kExitBadInput};
     }
-    s = StretchBand(m, point, *reference, DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(0, colon))),
-                    DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(colon + 1))), resolution, continuation);
+    const double a = DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(0, colon))),
+                 e = DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(colon + 1)));
+    CheckSampleCount(std::min({a, e, *reference}), std::max({a, e, *reference}), resolution, "--stretch/--at/--resolution");
+    s = StretchBand(m, point, *reference, a, e, resolution, continuation);
   } else {
     const double qg = ParseNumberFlag("--qg", args.qg);
     if (qg <= 0) {
@@ -103,7 +109,7 @@ void Run(const Args& args) {
   sum.Add("L", s.length, "length");
   sum.Add("delta_y", s.band, "length");
   sum.Add("Q_G", s.qg, "1");
-  WriteOutput(args.out, args.format == "json" ? sum.ToJson().dump(1) + "\n" : sum.ToCsv());
+  WriteOutput(args.out, args.format == "json" ? JsonText(sum.ToJson()) : sum.ToCsv());
 }
 
 }  // namespace

@@ -31,6 +31,7 @@ void Run(const Args& args) {
   range.step = in(ParseNumberFlag("--step", args.step));
   range.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
   std::string why;
+  CheckSampleCount(range.from, range.to, range.step, "--from/--to/--step");
   if (!range.IsValid(&why)) {
     Complain("--from/--to/--step: " + why);
     throw Exit{kExitBadInput};
@@ -65,7 +66,7 @@ void Run(const Args& args) {
                         {"complete", r.sweep.complete()}};
     j.update(SweepEventsJson(m, r.sweep));
     if (!r.sweep.complete()) j["message"] = r.sweep.message;
-    WriteOutput(args.out, j.dump(1) + "\n");
+    WriteOutput(args.out, JsonText(j));
   } else if (args.summary) {
     WriteOutput(args.out, summary.ToCsv());
   } else {

@@ -32,6 +32,7 @@ void Run(const Args& args) {
     for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
     throw Exit{kExitBadInput};
   }
+  NoteInputFile(args.problem), NoteInputFile(problem.mechanism_path);  // -o/--yaml never replace them
   if (!args.threads.empty()) problem.options.threads = static_cast<int>(ParseNumberFlag("--threads", args.threads));
   std::string why;
   if (!problem.options.IsValid(&why)) {
@@ -99,8 +100,8 @@ void Run(const Args& args) {
                                                                   r.ok() ? "" : " (" + std::string(ToString(r.status)) + ")"),
                                               problem.base.sweep, values));
   }
-  WriteOutput(args.out, args.format == "json" ? s.ToJson().dump(1) + "\n" : s.ToCsv());
-  std::cerr << fmt::format("koppel synth fit: cost {:.3g} after {} iterations (start {}; {} of {} starts reached it)\n", r.cost, r.iterations,
+  WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv());
+  if (!args.quiet) std::cerr << fmt::format("koppel synth fit: cost {:.3g} after {} iterations (start {}; {} of {} starts reached it)\n", r.cost, r.iterations,
                            r.best_start + 1, r.starts_at_best, r.starts.size());
   if (!r.ok()) {
     Complain(args.problem + ": " + r.message);

@@ -2,10 +2,25 @@
 #include "commands.hpp"
 #include "common.hpp"
 
+#include <glog/logging.h>
+
 #include <exception>
 #include <iostream>
 
-int main(int argc, char** argv) {
+namespace {
+
+// Ceres logs through glog, also for expected outcomes ("Terminating: Residual and Jacobian
+// evaluation failed" where a start does not assemble) that koppel reports itself from the
+// solver's summary. glog is initialised once, to stderr (no log files), fatal messages only: no
+// "Logging before InitGoogleLogging" warnings, and a clean stderr with --quiet.
+void QuietSolverLogging(const char* program) {
+  FLAGS_logtostderr = true;
+  FLAGS_minloglevel = google::GLOG_FATAL;
+  FLAGS_stderrthreshold = google::GLOG_FATAL;
+  google::InitGoogleLogging(program);
+}
+
+int Run(int argc, char** argv) {
   CLI::App app{
       "koppel - planar linkages (ebene Getriebe): position analysis, transfer functions, dead centres,\n"
       "coupler curves, a catalog of documented mechanisms and synthesis.\n"
@@ -13,6 +28,7 @@ int main(int argc, char** argv) {
       "command line, lengths in the file's unit. Exit codes: 0 ok, 1 a check or solve failed, 2 bad input.",
       "koppel"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("koppel ") + koppel::cli::Version(), "Print koppel's version and exit");
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
   koppel::cli::AddAnalyzeCommand(app);
   koppel::cli::AddCatalogCommand(app);
@@ -41,4 +57,11 @@ int main(int argc, char** argv) {
     return koppel::cli::kExitFailed;
   }
   return koppel::cli::kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  QuietSolverLogging(argv[0]);
+  return koppel::cli::FinishStandardOutput(Run(argc, argv));
 }

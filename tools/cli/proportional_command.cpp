@@ -35,6 +35,7 @@ void Run(const Args& args) {
   ContinuationOptions continuation;
   continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
   const double resolution = in(ParseNumberFlag("--resolution", args.resolution));
+  CheckSampleCount(from, to, resolution, "--from/--to/--resolution");
   SweepOptions check;
   check.from = from;
   check.to = to;
@@ -66,7 +67,7 @@ void Run(const Args& args) {
     nlohmann::json j = s.ToJson();
     j["complete"] = p.sweep.complete();
     j.update(SweepEventsJson(m, p.sweep));
-    WriteOutput(args.out, j.dump(1) + "\n");
+    WriteOutput(args.out, JsonText(j));
   } else {
     WriteOutput(args.out, s.ToCsv());
   }

@@ -41,7 +41,7 @@ void Run(const Args& args) {
     }
     const nlohmann::json j = {{"mechanism", m.name}, {"input", m.drive.input_name}, {"unit", m.InputIsAngle() ? "deg" : "length"},
                               {"branches", branches}, {"notes", report.notes}};
-    WriteOutput(args.out, j.dump(1) + "\n");
+    WriteOutput(args.out, JsonText(j));
   } else {
     std::string csv = "branch,from,to,from_kind,to_kind\n";
     for (const BranchRange& b : report.branches) {

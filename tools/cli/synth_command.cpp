@@ -45,10 +45,7 @@ std::vector<double> Range(const std::string& flag, const std::string& text) {
     Complain(flag + ": needs FROM <= TO and STEP > 0");
     throw Exit{kExitBadInput};
   }
-  if ((b - a) / d > 1e6) {
-    Complain(flag + ": more than a million values");
-    throw Exit{kExitBadInput};
-  }
+  CheckSampleCount(a, b, d, flag + " FROM:TO:STEP", kChartCells);
   std::vector<double> values;
   for (int i = 0; a + i * d <= b + 1e-9 * d; ++i) values.push_back(a + i * d);
   return values;
@@ -71,7 +68,7 @@ std::vector<RockerSense> RockerSenses(const std::string& text, bool allow_both) 
   throw Exit{kExitBadInput};
 }
 
-void Emit(const Args& args, const Summary& s) { WriteOutput(args.out, args.format == "json" ? s.ToJson().dump(1) + "\n" : s.ToCsv()); }
+void Emit(const Args& args, const Summary& s) { WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv()); }
 
 // A refused design: the reason on stderr, exit 2 for a malformed request, else 1.
 void Refuse(DesignStatus status, const std::string& message) {
@@ -259,6 +256,7 @@ void RunChart(const Args& args) {
   if (args.type == "crank-rocker") {
     const auto phis = Range("--phi0", args.phi0.empty() ? "150:210:2" : args.phi0);
     const auto psis = Range("--psi0", args.psi0.empty() ? "20:100:2" : args.psi0);
+    CheckCount(static_cast<double>(phis.size()) * static_cast<double>(psis.size()), "--phi0/--psi0 steps", kChartCells);
     const auto senses = RockerSenses(args.rocker_sense, true);
     chart.columns = {"phi0", "psi0", "rocker_sense", "status", "beta", "mu_min", "l1", "l2", "l3", "l4", "beta_L", "beta_E"};
     std::vector<CrankRockerRequest> requests;
@@ -298,7 +296,7 @@ void RunChart(const Args& args) {
     Complain("synth chart: TYPE must be crank-rocker or slider-crank");
     throw Exit{kExitBadInput};
   }
-  WriteOutput(args.out, args.format == "json" ? chart.ToJson().dump(1) + "\n" : chart.ToCsv());
+  WriteOutput(args.out, args.format == "json" ? JsonText(chart.ToJson()) : chart.ToCsv());
 }
 
 void RunMzc(const Args& args) {

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/limits.hpp"  // kMaxSweepSamples
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/continuation.hpp"
 #include "koppel/solver/position.hpp"
@@ -23,10 +24,6 @@
 #include <vector>
 
 namespace koppel {
-
-// Most samples one sweep computes: a table of this many rows of a few dozen numbers fits in
-// memory many times over; more is a mistake (a step of 1e-9 degree), not a wish.
-inline constexpr long kMaxSweepSamples = 10'000'000;
 
 struct SweepOptions {
   double from = 0.0;  // drive input: radians for an R drive, length for a P drive

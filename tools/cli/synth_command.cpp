@@ -436,6 +436,8 @@ void AddSynthCommand(CLI::App& app) {
   mzc->callback([args] { RunMzc(*args); });
 
   AddFitSubcommand(*cmd);
+  AddMotionSubcommand(*cmd);
+  AddFunctionSubcommand(*cmd);
 }
 
 }  // namespace koppel::cli

@@ -294,7 +294,29 @@ CentrePointResult CentrePoint(const std::vector<Pose>& poses, const Eigen::Vecto
   return r;
 }
 
-BurmesterCurves CentrePointCurve(const std::vector<Pose>& poses, int directions, double reach) {
+CentrePointResult CentrePointTwoPoses(const std::vector<Pose>& poses, const Eigen::Vector2d& circle_point, double crank_turn) {
+  CentrePointResult r;
+  if (poses.size() != 2 || !(std::abs(std::sin(crank_turn / 2)) > 1e-9)) {
+    r.status = BurmesterStatus::kInvalidRequest;
+    r.message = "two poses and a crank turn that is not a multiple of 360 deg";
+    return r;
+  }
+  const Eigen::Vector2d a1 = circle_point, a2 = MovePoint(poses[0], poses[1], circle_point);
+  const Eigen::Vector2d chord = a2 - a1;
+  if (!(chord.norm() > kDyadTolerance * PoseScale(poses))) {
+    r.message = "the circle point does not move between the two poses";
+    return r;
+  }
+  // the centre sees the chord under the turn: distance from the midpoint = |chord| / (2 tan(turn/2)),
+  // on the left of A1 -> A2 for a counter-clockwise turn
+  const Eigen::Vector2d left(-chord.y(), chord.x());
+  r.dyad = {0.5 * (a1 + a2) + left / (2 * std::tan(crank_turn / 2)), circle_point};
+  r.residual = DyadResidual(poses, r.dyad);
+  r.status = BurmesterStatus::kOk;
+  return r;
+}
+
+BurmesterCurves CentrePointCurve(const std::vector<Pose>& poses, int directions, bool refine, double reach) {
   BurmesterCurves curves;
   if (poses.size() != 4 || directions < 1) {
     curves.status = BurmesterStatus::kInvalidRequest;
@@ -341,14 +363,14 @@ BurmesterCurves CentrePointCurve(const std::vector<Pose>& poses, int directions,
     return false;
   };
   std::vector<std::pair<double, Points>> lines;
-  std::function<void(double, const Points&, double, const Points&, int)> refine = [&](double b0, const Points& p0, double b1, const Points& p1,
+  std::function<void(double, const Points&, double, const Points&, int)> bisect = [&](double b0, const Points& p0, double b1, const Points& p1,
                                                                                       int depth) {
-    if (depth >= kRefinements || !far_apart(p0, p1)) return;
+    if (!refine || depth >= kRefinements || !far_apart(p0, p1)) return;
     const double mid = 0.5 * (b0 + b1);
     const Points pm = on_line(mid);
-    refine(b0, p0, mid, pm, depth + 1);
+    bisect(b0, p0, mid, pm, depth + 1);
     lines.push_back({mid, pm});
-    refine(mid, pm, b1, p1, depth + 1);
+    bisect(mid, pm, b1, p1, depth + 1);
   };
   Points previous = on_line(0);
   for (int i = 0; i < directions; ++i) {
@@ -357,7 +379,7 @@ BurmesterCurves CentrePointCurve(const std::vector<Pose>& poses, int directions,
     lines.push_back({beta, here});
     if (i + 1 < directions) {
       previous = on_line(next);
-      refine(beta, here, next, previous, 0);
+      bisect(beta, here, next, previous, 0);
     }
   }
   std::sort(lines.begin(), lines.end(), [](const auto& x, const auto& y) { return x.first < y.first; });

@@ -188,3 +188,19 @@ TEST_CASE("five poses: the known pivots are among the Ball-Burmester points, the
 }
 
 }  // namespace koppel
+
+namespace koppel {
+
+TEST_CASE("two poses: the centre point on the bisector turns the crank by the given angle", "[burmester]") {
+  const std::vector<Pose> poses = {{{0, 0}, 0}, {{1, 0.5}, 0.4}};
+  for (double turn_deg : {30.0, 90.0, -120.0}) {
+    const CentrePointResult r = CentrePointTwoPoses(poses, {0.3, 0.8}, DegToRad(turn_deg));
+    REQUIRE(r.ok());
+    CHECK(r.residual <= 1e-12);
+    const Eigen::Vector2d a2 = MovePoint(poses[0], poses[1], {0.3, 0.8});
+    const Eigen::Vector2d u = r.dyad.circle - r.dyad.centre, v = a2 - r.dyad.centre;
+    CHECK_THAT(std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v)), Catch::Matchers::WithinAbs(DegToRad(turn_deg), 1e-12));
+  }
+}
+
+}  // namespace koppel

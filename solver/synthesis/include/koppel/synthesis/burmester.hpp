@@ -65,6 +65,11 @@ struct CentrePointResult {
 // infinity: a slider would guide it).
 CentrePointResult CentrePoint(const std::vector<Pose>& poses, const Eigen::Vector2d& circle_point);
 
+// Two poses leave the centre point free on the perpendicular bisector of A_1 A_2: this one is
+// where the crank turns by `crank_turn` (radians, counter-clockwise positive, 0 < |turn| < 2 pi)
+// from the first pose to the second. kNoSolution when A does not move.
+CentrePointResult CentrePointTwoPoses(const std::vector<Pose>& poses, const Eigen::Vector2d& circle_point, double crank_turn);
+
 struct BurmesterCurveSample {
   Dyad dyad;
   double direction = 0;  // the line through the base pole it was found on [rad]
@@ -79,10 +84,11 @@ struct BurmesterCurves {
 };
 
 // The centre-point and circle-point curves of four poses, sampled on `directions` lines through
-// the pole P_ij of the pair of poses with the largest rotation: up to two points each, and more
-// lines where the curve runs nearly along them, so that neighbouring samples lie within 2 % of
-// the poses' size; points beyond `reach` PoseScale from the poses' centroid are left out.
-BurmesterCurves CentrePointCurve(const std::vector<Pose>& poses, int directions, double reach = 20);
+// the pole P_ij of the pair of poses with the largest rotation: up to two points each; with
+// `refine`, more lines where the curve runs nearly along them, so that neighbouring samples lie
+// within 2 % of the poses' size. Points beyond `reach` PoseScale from the poses' centroid are
+// left out.
+BurmesterCurves CentrePointCurve(const std::vector<Pose>& poses, int directions, bool refine = true, double reach = 20);
 
 struct BallBurmester {
   BurmesterStatus status = BurmesterStatus::kNoSolution;

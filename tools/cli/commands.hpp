@@ -17,6 +17,8 @@ void AddClassifyCommand(CLI::App& app);
 void AddFitSubcommand(CLI::App& synth);  // koppel synth fit
 void AddMotionSubcommand(CLI::App& synth);    // koppel synth motion
 void AddFunctionSubcommand(CLI::App& synth);  // koppel synth function
+void AddPathSubcommand(CLI::App& synth);      // koppel synth path
+void AddAtlasCommand(CLI::App& app);          // koppel atlas build|merge
 void AddPlotCommand(CLI::App& app);  // plot, draw, view: tools/plot
 void AddDrawCommand(CLI::App& app);
 void AddViewCommand(CLI::App& app);

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   koppel::cli::AddPlotCommand(app);
   koppel::cli::AddDrawCommand(app);
   koppel::cli::AddViewCommand(app);
+  koppel::cli::AddAtlasCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

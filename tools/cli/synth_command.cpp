@@ -438,6 +438,7 @@ void AddSynthCommand(CLI::App& app) {
   AddFitSubcommand(*cmd);
   AddMotionSubcommand(*cmd);
   AddFunctionSubcommand(*cmd);
+  AddPathSubcommand(*cmd);
 }
 
 }  // namespace koppel::cli

@@ -1,6 +1,7 @@
 #include "path_prepolish.hpp"
 
 #include <ceres/ceres.h>
+#include <glog/logging.h>
 
 #include <cmath>
 #include <limits>
@@ -27,6 +28,17 @@ struct PointResidual {
 };
 
 }  // namespace
+
+void QuietSolverLog() {
+  // Ceres reports a failed evaluation through glog on stderr; koppel's library never prints
+  // (the outcome is in its results), so only fatal messages are let through
+  static const bool quiet = [] {
+    FLAGS_minloglevel = google::GLOG_FATAL;
+    FLAGS_logtostderr = true;
+    return true;
+  }();
+  (void)quiet;
+}
 
 bool CouplerPointAt(const std::vector<double>& v, int branch, double phi, Eigen::Vector2d* point) {
   double r[2];

@@ -1,6 +1,7 @@
 #include "koppel/catalog/catalog.hpp"
 
 #include "koppel/catalog/check.hpp"
+#include "koppel/catalog/classes.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -76,7 +77,11 @@ Catalog Catalog::Load(const std::string& directory) {
       }
       const AccessFeatures computed = ComputeFeatures(file.mechanism, file.card->outputs);
       AccessFeatures merged = Merge(file.card->declared, computed);
-      catalog.entries_.push_back({std::move(file), std::move(merged)});
+      std::vector<std::string> classes = file.card->classes;
+      for (const std::string& c : StructuralClasses(file.mechanism)) {
+        if (std::find(classes.begin(), classes.end(), c) == classes.end()) classes.push_back(c);
+      }
+      catalog.entries_.push_back({std::move(file), std::move(merged), std::move(classes)});
     } catch (const InputError& e) {
       problems.insert(problems.end(), e.diagnostics().begin(), e.diagnostics().end());
     }
@@ -124,12 +129,15 @@ bool Matches(const CatalogEntry& entry, const FeatureQuery& q) {
   if (!ok(q.drives, f.drive_joints) || !ok(q.drives_at_frame, f.drive_joints_at_frame)) return false;
   if (!ok(q.outputs, f.output_links) || !ok(q.outputs_at_frame, f.output_links_at_frame)) return false;
   const CatalogCard& card = *entry.file.card;
-  if (!q.kind.empty() && Lower(card.kind) != Lower(q.kind)) return false;
+  if (q.kind && card.kind != *q.kind) return false;
+  if (!q.klass.empty() && std::find(entry.classes.begin(), entry.classes.end(), q.klass) == entry.classes.end()) return false;
+  if (!q.motion.empty() && !MotionMatches(card.motion, q.motion)) return false;
   if (!q.text.empty()) {
     const std::string needle = Lower(q.text);
     const std::string hay = Lower(entry.file.id + "\n" + card.title_de + "\n" + card.title_en + "\n" + entry.file.title);
     if (hay.find(needle) == std::string::npos) return false;
   }
+  if (q.like && !SameKinematicChain(entry.file.mechanism, *q.like)) return false;
   return true;
 }
 

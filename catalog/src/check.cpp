@@ -1,6 +1,7 @@
 #include "koppel/catalog/check.hpp"
 
 #include "figures.hpp"
+#include "koppel/catalog/classes.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/core/expression.hpp"
 #include "koppel/core/structure.hpp"
@@ -8,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 
 namespace koppel {
 namespace {
@@ -34,11 +37,18 @@ void RunEquations(const MechanismFile& file, const CatalogCard& card, const std:
 
   std::vector<CheckOutcome> results(card.equations.size());
   std::vector<int> columns(card.equations.size());
+  std::vector<bool> angle(card.equations.size());
+  std::vector<int> skipped(card.equations.size(), 0);
   for (size_t i = 0; i < card.equations.size(); ++i) {
     const EquationCheck& e = card.equations[i];
     columns[i] = OutputColumn(m, e.output, e.component, e.order, order);
     if (columns[i] < 0) Fail(file.path, e.line, "catalog.equations", "equation '" + e.name + "' names no output '" + e.output + "'");
-    results[i] = {variant, e.name, "equation", 0.0, e.tolerance, 0.0, 0.0, true, false, e.note};
+    angle[i] = e.order == 0 && m.OutputIsAngle(m.FindOutput(e.output));
+    results[i].variant = variant;
+    results[i].name = e.name;
+    results[i].kind = CheckKind::kEquation;
+    results[i].tolerance = e.tolerance;
+    results[i].detail = e.note;
   }
   for (size_t s = 0; s < sweep.inputs.size(); ++s) {
     std::string error;
@@ -50,18 +60,33 @@ void RunEquations(const MechanismFile& file, const CatalogCard& card, const std:
     }
     for (size_t i = 0; i < card.equations.size(); ++i) {
       const EquationCheck& e = card.equations[i];
+      // at a singular pose the sweep leaves the orders it cannot compute empty: not compared
+      if (!sweep.valid_order.empty() && sweep.valid_order[s] < e.order) {
+        ++skipped[i];
+        continue;
+      }
       const std::optional<double> expected = sample.Evaluate(e.formula, &error);
       if (!expected) Fail(file.path, e.line, "catalog.equations", "equation '" + e.name + "': " + error);
-      const double deviation = std::abs(sweep.outputs(s, columns[i]) - *expected);
+      // an angle is compared wrap-aware: a closed form in atan2 may differ by whole turns
+      const double difference = sweep.outputs(s, columns[i]) - *expected;
+      const double deviation = std::abs(angle[i] ? AngleDifference(difference, 0.0) : difference);
       if (deviation > results[i].worst) {
         results[i].worst = deviation;
         results[i].where = angle_input ? RadToDeg(sweep.inputs[s]) : sweep.inputs[s];
       }
     }
   }
-  for (CheckOutcome& r : results) {
-    r.passed = sweep.complete() && r.worst <= r.tolerance;
-    if (!sweep.complete()) r.detail = sweep.message;
+  for (size_t i = 0; i < results.size(); ++i) {
+    CheckOutcome& r = results[i];
+    if (!sweep.complete()) {
+      r.status = CheckStatus::kNotComputed;
+      r.detail = sweep.message;
+    } else {
+      r.status = r.worst <= r.tolerance ? CheckStatus::kPassed : CheckStatus::kFailed;
+      if (skipped[i] > 0)
+        r.detail += (r.detail.empty() ? "" : " ") + std::string("(") + std::to_string(skipped[i]) +
+                    " samples at singular poses not compared: the order is not computable there)";
+    }
     out.push_back(r);
   }
 }
@@ -133,35 +158,114 @@ std::vector<std::string> CompareFeatures(const AccessFeatures& declared, const A
   return diffs;
 }
 
-bool EntryReport::passed() const {
-  return std::all_of(checks.begin(), checks.end(), [](const CheckOutcome& c) { return c.passed || c.pending; });
+const char* ToString(CheckKind kind) {
+  switch (kind) {
+    case CheckKind::kFeatures: return "features";
+    case CheckKind::kEquation: return "equation";
+    case CheckKind::kFigure: return "figure";
+  }
+  return "?";
 }
+
+const char* ToString(CheckStatus status) {
+  switch (status) {
+    case CheckStatus::kNotRun: return "not run";
+    case CheckStatus::kPassed: return "pass";
+    case CheckStatus::kFailed: return "FAIL";
+    case CheckStatus::kNotComputed: return "not computed";
+  }
+  return "?";
+}
+
+double CheckOutcome::Ratio() const {
+  if (status == CheckStatus::kNotComputed || status == CheckStatus::kNotRun) return std::numeric_limits<double>::infinity();
+  if (tolerance > 0) return worst / tolerance;
+  return worst == 0 ? 0.0 : std::numeric_limits<double>::infinity();
+}
+
+bool EntryReport::passed() const {
+  return !checks.empty() && std::all_of(checks.begin(), checks.end(), [](const CheckOutcome& c) { return c.passed(); });
+}
+
+int EntryReport::Count(CheckStatus status) const {
+  return static_cast<int>(std::count_if(checks.begin(), checks.end(), [&](const CheckOutcome& c) { return c.status == status; }));
+}
+
+const CheckOutcome* EntryReport::Worst() const {
+  const CheckOutcome* worst = nullptr;
+  for (const CheckOutcome& c : checks) {
+    if (!worst || c.Ratio() > worst->Ratio()) worst = &c;
+  }
+  return worst;
+}
+
+std::string EntryReport::Brief() const {
+  const int passed_checks = Count(CheckStatus::kPassed);
+  std::string s = id + ": " + std::to_string(passed_checks) + "/" + std::to_string(checks.size()) + " passed";
+  if (const CheckOutcome* w = Worst()) {
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%.2g", w->Ratio());
+    s += std::string(", worst ") + (std::isinf(w->Ratio()) ? "not computed" : ratio) + " of tolerance (" + w->name + ")";
+  }
+  return s;
+}
+
+namespace {
+
+// declared access features and classes against the joint graph
+CheckOutcome FeatureCheck(const MechanismFile& file, const CatalogCard& card) {
+  std::vector<std::string> diffs = CompareFeatures(card.declared, ComputeFeatures(file.mechanism, card.outputs));
+  for (const std::string& p : ClassProblems(file.mechanism, card.classes)) diffs.push_back(p);
+  CheckOutcome features;
+  features.name = "access features";
+  features.kind = CheckKind::kFeatures;
+  features.worst = static_cast<double>(diffs.size());
+  features.status = diffs.empty() ? CheckStatus::kPassed : CheckStatus::kFailed;
+  for (const std::string& d : diffs) features.detail += (features.detail.empty() ? "" : "; ") + d;
+  return features;
+}
+
+}  // namespace
+
+namespace {
+EntryReport CheckWith(const std::string& path, const MechanismFile& base, const CatalogCard& card);
+}  // namespace
 
 EntryReport CheckEntry(const std::string& path) {
   const MechanismFile base = ReadMechanismFile(path);
-  EntryReport report;
-  report.id = base.id;
   if (!base.card) {
-    report.checks.push_back({"", "catalog card", "features", 0, 0, 0, 0, false, false, "the file has no catalog section"});
+    EntryReport report;
+    report.id = base.id;
+    CheckOutcome missing;
+    missing.name = "catalog card";
+    missing.status = CheckStatus::kFailed;
+    missing.detail = "the file has no catalog section";
+    report.checks.push_back(missing);
     return report;
   }
-  const CatalogCard& card = *base.card;
-  const std::vector<std::string> diffs = CompareFeatures(card.declared, ComputeFeatures(base.mechanism, card.outputs));
-  CheckOutcome features{"", "access features", "features", static_cast<double>(diffs.size()), 0, 0, 0, diffs.empty(), false, ""};
-  for (const std::string& d : diffs) features.detail += (features.detail.empty() ? "" : "; ") + d;
-  report.checks.push_back(features);
+  return CheckWith(path, base, *base.card);
+}
 
+EntryReport CheckCard(const std::string& path, const CatalogCard& card) { return CheckWith(path, ReadMechanismFile(path), card); }
+
+namespace {
+
+EntryReport CheckWith(const std::string& path, const MechanismFile& base, const CatalogCard& card) {
+  EntryReport report;
+  report.id = base.id;
+  report.checks.push_back(FeatureCheck(base, card));
   std::vector<CheckVariant> variants = card.variants;
   if (variants.empty()) variants.push_back({});
   for (const CheckVariant& v : variants) {
     const MechanismFile file = v.overrides.empty() ? base : ReadMechanismFile(path, v.overrides);
     RunEquations(file, card, v.name, report.checks);
+    FigureContext context(file, card);
     for (const FigureCheck& figure : card.figures) {
-      if (!FigureApplies(figure, v.name)) continue;
-      report.checks.push_back(EvaluateFigure(file, card, figure, v.name));
+      if (FigureApplies(figure, v.name)) report.checks.push_back(EvaluateFigure(context, figure, v.name));
     }
   }
   return report;
 }
 
+}  // namespace
 }  // namespace koppel

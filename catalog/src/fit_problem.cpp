@@ -167,15 +167,13 @@ FitProblem ReadFitProblem(const std::string& path) {
   // the builder: the mechanism file again with the free parameters as overrides
   const std::string mechanism_path = problem.mechanism_path;
   const std::vector<FitParameter> free = problem.parameters;
-  problem.builder = [mechanism_path, mechanism_text, free](const std::vector<double>& values, Mechanism* out, std::string* error) {
+  problem.builder = [mechanism_path, mechanism_text, free](const std::vector<double>& values) -> Expected<Mechanism> {
     Overrides overrides;
     for (size_t j = 0; j < free.size(); ++j) overrides.emplace_back(free[j].name, fmt::format("{:.17g}", values[j]));
     try {
-      *out = ParseMechanismText(mechanism_text, mechanism_path, overrides).mechanism;
-      return true;
+      return ParseMechanismText(mechanism_text, mechanism_path, overrides).mechanism;
     } catch (const InputError& e) {
-      *error = e.what();
-      return false;
+      return Expected<Mechanism>::Error(e.what());
     }
   };
   return problem;

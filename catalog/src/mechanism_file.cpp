@@ -27,7 +27,7 @@ class MechanismReader {
   void Read(const YAML::Node& root, const Overrides& overrides) {
     if (!r_.ExpectMap(root, "")) return;
     r_.CheckKeys(root, "", {"koppel", "name", "title", "description", "parameters", "links", "joints", "drive",
-                            "outputs", "assembly", "sweep", "catalog"});
+                            "outputs", "assembly", "sweep", "catalog", "units", "gravity", "loads"});
     if (const YAML::Node v = root["koppel"]; v.IsDefined()) {
       if (!v.IsScalar() || v.Scalar() != "1") r_.Error(v, "koppel", "unsupported format version (this koppel reads 1)");
     }
@@ -48,6 +48,7 @@ class MechanismReader {
     if (const YAML::Node o = root["outputs"]; o.IsDefined() && !o.IsNull()) ReadOutputs(o);
     if (const YAML::Node a = root["assembly"]; a.IsDefined() && !a.IsNull()) ReadAssembly(a);
     if (const YAML::Node s = root["sweep"]; s.IsDefined() && !s.IsNull()) ReadSweep(s);
+    if (r_.diagnostics().empty()) ReadLoads(r_, root, out_);  // masses and loads name links, points, outputs
   }
 
  private:
@@ -93,7 +94,7 @@ class MechanismReader {
       Link link;
       link.name = e.key;
       if (!r_.ExpectMap(e.value, path)) continue;
-      r_.CheckKeys(e.value, path, {"frame", "points"});
+      r_.CheckKeys(e.value, path, {"frame", "points", "mass", "cg", "inertia"});
       if (const YAML::Node f = e.value["frame"]; f.IsDefined()) link.is_frame = r_.Flag(f, Child(path, "frame")).value_or(false);
       const YAML::Node points = r_.Require(e.value, "points", path);
       if (points.IsDefined() && !points.IsNull()) {
@@ -294,10 +295,8 @@ class MechanismReader {
           ok &= o.link >= 0 && o.joint >= 0;
           // the coupler's joints are only meaningful once the rest of the file is sound
           if (ok && r_.diagnostics().empty() && CheckConsistency(m_).empty()) {
-            TransmissionGeometry geometry;
-            std::string error;
-            if (!ResolveTransmission(m_, o, &geometry, &error)) {
-              r_.Error(v, tpath, owner + ": " + error);
+            if (const Expected<TransmissionGeometry> geometry = ResolveTransmission(m_, o); !geometry) {
+              r_.Error(v, tpath, owner + ": " + geometry.error());
               ok = false;
             }
           }

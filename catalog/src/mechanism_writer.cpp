@@ -16,10 +16,42 @@ std::string Num(double v) {
 
 std::string PointName(const Mechanism& m, const PointRef& p) { return m.links[p.link].name + "." + m.links[p.link].points[p.point].name; }
 
+// A formula as a double-quoted YAML string (a plain scalar could read as an alias or a number).
+std::string Quoted(const std::string& text) {
+  std::string q = "\"";
+  for (char c : text) q += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+  return q + "\"";
+}
+
+void WriteMass(std::ostringstream& out, const Loads& loads, long link) {
+  for (const LinkMass& mass : loads.masses) {
+    if (mass.link != link) continue;
+    out << "    mass: " << Num(mass.mass) << "\n    cg: [" << Num(mass.centre.x()) << ", " << Num(mass.centre.y()) << "]\n"
+        << "    inertia: " << Num(mass.inertia) << "\n";
+  }
+}
+
+void WriteLoads(std::ostringstream& out, const Mechanism& m, const Loads& loads) {
+  if (loads.metres_per_unit != 1.0) out << "units: {length: " << Num(loads.metres_per_unit) << "}\n";
+  if (loads.gravity.squaredNorm() > 0.0) out << "gravity: [" << Num(loads.gravity.x()) << ", " << Num(loads.gravity.y()) << "]\n";
+  if (loads.forces.empty() && loads.torques.empty() && loads.springs.empty()) return;
+  out << "loads:\n";
+  for (const PointForce& f : loads.forces) {
+    out << "  " << f.name << ": {force: " << PointName(m, f.point) << ", direction: [" << Num(f.direction.x()) << ", "
+        << Num(f.direction.y()) << "], in: " << m.links[f.direction_link].name << ", magnitude: " << Quoted(f.magnitude) << "}\n";
+  }
+  for (const LinkTorque& t : loads.torques)
+    out << "  " << t.name << ": {torque: " << m.links[t.link].name << ", magnitude: " << Quoted(t.magnitude) << "}\n";
+  for (const SpringDamper& s : loads.springs) {
+    out << "  " << s.name << ": {spring: [" << PointName(m, s.from) << ", " << PointName(m, s.to) << "], stiffness: " << Num(s.stiffness)
+        << ", free_length: " << Num(s.free_length) << ", damping: " << Num(s.damping) << "}\n";
+  }
+}
+
 }  // namespace
 
 std::string WriteMechanismYaml(const Mechanism& m, const std::string& comment, const SweepDefaults& sweep,
-                               const std::vector<std::pair<std::string, double>>& parameters) {
+                               const std::vector<std::pair<std::string, double>>& parameters, const Loads* loads) {
   std::ostringstream out;
   std::istringstream lines(comment);
   for (std::string line; std::getline(lines, line);) out << "# " << line << "\n";
@@ -35,6 +67,7 @@ std::string WriteMechanismYaml(const Mechanism& m, const std::string& comment, c
     if (l.is_frame) out << "    frame: true\n";
     out << "    points:\n";
     for (const NamedPoint& p : l.points) out << "      " << p.name << ": [" << Num(p.local.x()) << ", " << Num(p.local.y()) << "]\n";
+    if (loads) WriteMass(out, *loads, &l - m.links.data());
   }
   out << "joints:\n";
   for (const Joint& j : m.joints) {
@@ -72,6 +105,7 @@ std::string WriteMechanismYaml(const Mechanism& m, const std::string& comment, c
       out << "    " << PointName(m, e.point) << ": [" << Num(e.global.x()) << ", " << Num(e.global.y()) << "]\n";
   }
   out << "sweep: {from: " << Num(sweep.from) << ", to: " << Num(sweep.to) << ", step: " << Num(sweep.step) << "}\n";
+  if (loads) WriteLoads(out, m, *loads);
   return out.str();
 }
 

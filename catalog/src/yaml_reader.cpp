@@ -33,6 +33,28 @@ std::string NodeKind(const YAML::Node& node) {
 
 }  // namespace
 
+std::string Nearest(const std::string& word, const std::vector<std::string>& candidates) {
+  int best = 3;
+  std::string nearest;
+  for (const std::string& c : candidates) {
+    const int d = EditDistance(word, c);
+    if (d < best) {
+      best = d;
+      nearest = c;
+    }
+  }
+  return nearest;
+}
+
+std::string UnknownName(const std::string& what, const std::string& word, const std::vector<std::string>& candidates) {
+  std::string message = "unknown " + what + " '" + word + "'";
+  const std::string suggestion = Nearest(word, candidates);
+  if (!suggestion.empty()) return message + " (did you mean '" + suggestion + "'?)";
+  message += " (expected one of:";
+  for (const std::string& c : candidates) message += " " + c;
+  return message + ")";
+}
+
 std::string Child(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
 std::string Index(const std::string& path, int index) { return path + "[" + std::to_string(index) + "]"; }
 
@@ -77,27 +99,14 @@ std::vector<YamlReader::Entry> YamlReader::Entries(const YAML::Node& map, const 
 }
 
 void YamlReader::CheckKeys(const YAML::Node& map, const std::string& path, std::initializer_list<const char*> allowed) {
+  CheckKeys(map, path, std::vector<std::string>(allowed.begin(), allowed.end()));
+}
+
+void YamlReader::CheckKeys(const YAML::Node& map, const std::string& path, const std::vector<std::string>& allowed) {
   if (!map.IsMap()) return;
   for (const Entry& e : Entries(map, path)) {
-    if (std::any_of(allowed.begin(), allowed.end(), [&](const char* a) { return e.key == a; })) continue;
-    std::string message = "unknown key '" + e.key + "'";
-    int best = 3;
-    std::string suggestion;
-    for (const char* a : allowed) {
-      const int d = EditDistance(e.key, a);
-      if (d < best) {
-        best = d;
-        suggestion = a;
-      }
-    }
-    if (!suggestion.empty()) {
-      message += " (did you mean '" + suggestion + "'?)";
-    } else {
-      message += " (expected one of:";
-      for (const char* a : allowed) message += std::string(" ") + a;
-      message += ")";
-    }
-    Error(e.key_node, Child(path, e.key), message);
+    if (std::any_of(allowed.begin(), allowed.end(), [&](const std::string& a) { return e.key == a; })) continue;
+    Error(e.key_node, Child(path, e.key), UnknownName("key", e.key, allowed));
   }
 }
 

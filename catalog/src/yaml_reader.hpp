@@ -28,6 +28,7 @@ class YamlReader {
   bool ExpectSequence(const YAML::Node& node, const std::string& path);
   // Reports keys of `map` not in `allowed` (suggesting the nearest allowed key) and duplicates.
   void CheckKeys(const YAML::Node& map, const std::string& path, std::initializer_list<const char*> allowed);
+  void CheckKeys(const YAML::Node& map, const std::string& path, const std::vector<std::string>& allowed);
   // A required key: reports it missing (at the map) and returns an invalid node.
   YAML::Node Require(const YAML::Node& map, const std::string& key, const std::string& path);
 
@@ -63,8 +64,16 @@ class YamlReader {
 // Joins a key path: Child("joints", "A") = "joints.A"; Index("links", 1) = "links[1]".
 std::string Child(const std::string& path, const std::string& key);
 std::string Index(const std::string& path, int index);
+// The candidate nearest to `word` (fewer than three edits), for "did you mean"; empty if none.
+std::string Nearest(const std::string& word, const std::vector<std::string>& candidates);
+// "unknown key 'x' (did you mean 'y'?)", or with the list of candidates when none is near.
+std::string UnknownName(const std::string& what, const std::string& word, const std::vector<std::string>& candidates);
 
 // Parses the `catalog` section of a mechanism file (card_reader.cpp).
 std::optional<CatalogCard> ReadCard(YamlReader& reader, const YAML::Node& node, const MechanismFile& file);
+
+// Reads the masses (links.*.mass, cg, inertia), units, gravity and loads into file.loads
+// (loads_reader.cpp). Call once the links, joints, drive and outputs are read.
+void ReadLoads(YamlReader& reader, const YAML::Node& root, MechanismFile& file);
 
 }  // namespace koppel

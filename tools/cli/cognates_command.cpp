@@ -22,7 +22,7 @@ void Run(const Args& args) {
   const MechanismFile file = LoadMechanism(args.file, args.sets);
   const PointRef point = ResolvePoint(file.mechanism, args.point);
   const Cognates c = RobertsCognates(file.mechanism, point);
-  if (!c.ok) {
+  if (!c.ok()) {
     Complain(args.file + ": " + c.message);
     throw Exit{kExitBadInput};
   }

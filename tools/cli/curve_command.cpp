@@ -88,7 +88,7 @@ void Run(const Args& args) {
     }
     s = LongestStraightStretch(m, point, qg, reference, kPi, resolution, continuation);
   }
-  if (!s.found) {
+  if (!s.ok()) {
     Complain(args.file + ": " + s.message);
     throw Exit{kExitFailed};
   }

@@ -46,9 +46,12 @@ void Run(const Args& args) {
     Complain(args.problem + ": " + r.message);
     throw Exit{r.status == FitStatus::kInvalidOptions ? kExitBadInput : kExitFailed};
   }
-  Mechanism fitted;
-  std::string error;
-  problem.builder(r.values, &fitted, &error);
+  const Expected<Mechanism> built = problem.builder(r.values);
+  if (!built) {
+    Complain(args.problem + ": the fitted values do not build the mechanism: " + built.error());
+    throw Exit{kExitFailed};
+  }
+  const Mechanism& fitted = *built;
   const bool angle = fitted.InputIsAngle();
   const FitUnit input_unit = angle ? FitUnit::kAngle : FitUnit::kLength;
   // a crank: the drive turns through a full revolution; mu_min over that turn if there is a mu output

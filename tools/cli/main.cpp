@@ -26,6 +26,8 @@ int main(int argc, char** argv) {
   koppel::cli::AddPlotCommand(app);
   koppel::cli::AddDrawCommand(app);
   koppel::cli::AddViewCommand(app);
+  koppel::cli::AddForcesCommand(app);
+  koppel::cli::AddSimulateCommand(app);
   koppel::cli::AddAtlasCommand(app);
   try {
     app.parse(argc, argv);

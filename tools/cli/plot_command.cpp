@@ -6,6 +6,7 @@
 #include "sweep_report.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/plot/forces_plot.hpp"
 #include "koppel/plot/plots.hpp"
 
 #include <fstream>
@@ -19,6 +20,9 @@ struct Args {
   std::vector<std::string> sets;
   int order = 2;
   bool mu = false, straight = false;
+  bool forces = false;                 // --forces [--speed RPM] [--joint J ...]: forces_plot.hpp
+  std::string speed;
+  std::vector<std::string> joints;
   std::string out;
 };
 
@@ -52,9 +56,29 @@ void RunChart(const Args& args) {
   WriteOutput(args.out, r.svg);
 }
 
+void RunForcesPlot(const Args& args, const MechanismFile& file, const SweepOptions& range) {
+  const Mechanism& m = file.mechanism;
+  plot::ForcesPlotOptions options;
+  options.forces.sweep = range;
+  if (!args.speed.empty()) options.forces.speed = ParseNumberFlag("--speed", args.speed) * (m.InputIsAngle() ? kPi / 30 : 1.0);
+  for (const std::string& name : args.joints) {
+    options.joints.push_back(m.FindJoint(name));
+    if (options.joints.back() < 0) {
+      Complain("--joint: no joint '" + name + "'");
+      throw Exit{kExitBadInput};
+    }
+  }
+  std::string why;
+  if (!options.IsValid(m, &why)) {
+    Complain(why);
+    throw Exit{kExitBadInput};
+  }
+  Finish(args, plot::ForcesPlot(m, file.loads, options));
+}
+
 void Run(const Args& args) {
   const bool csv = args.file.size() > 4 && args.file.substr(args.file.size() - 4) == ".csv";
-  const int kinds = !args.transfer.empty() + args.mu + !args.curve.empty();
+  const int kinds = !args.transfer.empty() + args.mu + !args.curve.empty() + args.forces;
   if (csv) {
     if (kinds != 0) {
       Complain("a design chart (.csv) takes no --transfer, --mu or --curve");
@@ -64,7 +88,7 @@ void Run(const Args& args) {
     return;
   }
   if (kinds != 1) {
-    Complain("say what to plot: exactly one of --transfer OUTPUT, --mu, --curve POINT (or give a chart .csv)");
+    Complain("say what to plot: exactly one of --transfer OUTPUT, --mu, --curve POINT, --forces (or give a chart .csv)");
     throw Exit{kExitBadInput};
   }
   const MechanismFile file = LoadMechanism(args.file, args.sets);
@@ -87,6 +111,8 @@ void Run(const Args& args) {
       throw Exit{kExitBadInput};
     }
     Finish(args, plot::TransferPlot(m, options));
+  } else if (args.forces) {
+    RunForcesPlot(args, file, range);
   } else if (args.mu) {
     plot::MuPlotOptions options;
     for (int o = 0; o < static_cast<int>(m.outputs.size()) && options.output < 0; ++o)
@@ -124,6 +150,8 @@ void AddPlotCommand(CLI::App& app) {
       "  --mu                           the transmission angle over the input, mu_min marked\n"
       "  --curve POINT [--straight]     the coupler curve to scale; --straight adds the stretch K_A..K_E with\n"
       "                                 Q_G <= --qg through K_I (--at), the tangent g and a panel with the band\n"
+      "  --forces [--speed RPM] [--joint J ...]  the drive torque over the input (koppel forces) and each joint's\n"
+      "                                 reaction as a polar diagram (the force on its second link, frame axes)\n"
       "  CHART.csv                      a design chart written by `koppel synth chart`\n"
       "Where the solver stops (a dead centre of the drive, the end of the assemblable range) the curves end and the\n"
       "rest is shaded: the picture is written and the exit code is 1.\n"
@@ -136,6 +164,9 @@ void AddPlotCommand(CLI::App& app) {
   cmd->add_flag("--straight", args->straight, "With --curve: the straight-line stretch and its band");
   cmd->add_option("--qg", args->qg, "With --straight: allowed Q_G = delta_y/L (default 0.005)");
   cmd->add_option("--at", args->at, "With --straight: input of the reference point K_I [deg] (default: least curvature)");
+  cmd->add_flag("--forces", args->forces, "Plot the drive torque and, with --joint, polar diagrams of joint forces");
+  cmd->add_option("--speed", args->speed, "With --forces: constant drive speed [rpm] (kinetostatics)");
+  cmd->add_option("--joint", args->joints, "With --forces: a joint whose reaction is drawn as a polar diagram (repeatable)");
   cmd->add_option("--from", args->from, "First input (default: the file's sweep)");
   cmd->add_option("--to", args->to, "Last input (default: the file's sweep)");
   cmd->add_option("--step", args->step, "Input step (default: the file's sweep)");

@@ -45,7 +45,7 @@ void Run(const Args& args) {
     throw Exit{kExitBadInput};
   }
   const Proportionality p = ProportionalityDeviation(m, output, from, to, length, at, resolution, continuation);
-  if (!p.ok) {
+  if (!Usable(p.status)) {
     ReportSweep(args.file, m, p.sweep);
     Complain(args.file + ": " + p.message);
     throw Exit{kExitFailed};

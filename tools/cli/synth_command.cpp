@@ -305,16 +305,17 @@ void RunMzc(const Args& args) {
   CheckFormat(args.format);
   double lambda = 0;
   if (!args.kappa.empty()) {
-    std::string error;
-    if (!LambdaFromKappa(DegToRad(ParseNumberFlag("--kappa", args.kappa)), &lambda, &error)) {
-      Complain("--kappa: " + error);
+    const Expected<double> from_kappa = LambdaFromKappa(DegToRad(ParseNumberFlag("--kappa", args.kappa)));
+    if (!from_kappa) {
+      Complain("--kappa: " + from_kappa.error());
       throw Exit{kExitBadInput};
     }
+    lambda = *from_kappa;
   } else {
     lambda = Required("--lambda", args.lambda);
   }
   const MzcDesign d = MzcFromLambda(lambda, ParseNumberFlag("--D", args.diameter));
-  if (!d.ok) {
+  if (!d.ok()) {
     Complain(d.message);
     throw Exit{kExitBadInput};
   }
@@ -332,7 +333,7 @@ void RunMzc(const Args& args) {
   s.Add("k", d.k, "length");
   s.Add("contact_points", contact, "1");
   const Cognates c = RobertsCognates(m, {2, 2});
-  if (c.ok) {
+  if (c.ok()) {
     // the cognate whose crank turns with the double rocker's coupler is the crank-rocker
     s.Add("crank_rocker_l1", c.crank_first, "length");
     s.Add("crank_rocker_l2", c.coupler_first, "length");
@@ -349,7 +350,7 @@ void RunMzc(const Args& args) {
                                                              d.lambda, d.D),
                                               {lo, hi, (hi - lo) / 200}));
   }
-  if (!args.cognates_dir.empty() && c.ok) {
+  if (!args.cognates_dir.empty() && c.ok()) {
     WriteOutput(args.cognates_dir + "/" + c.first.name + ".yaml",
                 WriteMechanismYaml(c.first, "Crank-rocker cognate of a Meyer zur Capellen linkage (koppel synth mzc).", {0, 360, 1}));
   }

@@ -40,6 +40,9 @@ CouplerCurve TraceCurve(const Mechanism& m, const PointRef& point, const SweepOp
   const SweepResult sweep = Sweep(traced, options);
   CouplerCurve curve;
   curve.sweep = EventsOf(sweep);
+  curve.message = sweep.message;
+  curve.status = sweep.inputs.empty() ? AnalysisStatus::kFailed
+                                      : (sweep.complete() ? AnalysisStatus::kComplete : AnalysisStatus::kPartial);
   curve.singular = sweep.singular;
   const int n = static_cast<int>(sweep.inputs.size());
   for (int i = 0; i < n; ++i) {
@@ -56,6 +59,15 @@ CouplerCurve TraceCurve(const Mechanism& m, const PointRef& point, const SweepOp
                                                                                 curve.d1[i], curve.inputs[i] - curve.inputs[i - 1]));
   }
   return curve;
+}
+
+std::string CouplerCurve::Brief() const {
+  return std::string(ToString(status)) + ": " + std::to_string(inputs.size()) + " samples" +
+         (arc_length.empty() ? "" : ", arc length " + std::to_string(arc_length.back())) + (message.empty() ? "" : "; " + message);
+}
+
+std::string StraightStretch::Brief() const {
+  return std::string(ToString(status)) + (ok() ? ": Q_G = " + std::to_string(qg) + " over L = " + std::to_string(length) : ": " + message);
 }
 
 int FlattestSample(const CouplerCurve& curve) {
@@ -139,6 +151,7 @@ StraightStretch StretchBand(const Mechanism& m, const PointRef& point, double re
   const Frame f = FrameAround(m, point, reference, std::max(reference - from, resolution), std::max(to - reference, resolution),
                               resolution, continuation);
   if (!f.message.empty()) {
+    s.status = AnalysisStatus::kFailed;
     s.message = f.message;
     return s;
   }
@@ -150,7 +163,7 @@ StraightStretch StretchBand(const Mechanism& m, const PointRef& point, double re
                             }) - f.inputs.begin());
   };
   Measure(f, index_of(from), index_of(to), s);
-  s.found = true;
+  s.status = AnalysisStatus::kComplete;
   return s;
 }
 
@@ -166,6 +179,7 @@ StraightStretch LongestStraightStretch(const Mechanism& m, const PointRef& point
     const CouplerCurve curve = TraceCurve(m, point, whole);
     const int flat = FlattestSample(curve);
     if (flat < 0 || !curve.sweep.complete()) {
+      best.status = AnalysisStatus::kFailed;
       best.message = curve.sweep.message.empty() ? "the curve cannot be traced" : curve.sweep.message;
       return best;
     }
@@ -174,6 +188,7 @@ StraightStretch LongestStraightStretch(const Mechanism& m, const PointRef& point
   best.reference = *reference;
   const Frame f = FrameAround(m, point, *reference, half_range, half_range, resolution, continuation);
   if (!f.message.empty()) {
+    best.status = AnalysisStatus::kFailed;
     best.message = f.message;
     return best;
   }
@@ -197,11 +212,12 @@ StraightStretch LongestStraightStretch(const Mechanism& m, const PointRef& point
     }
   }
   if (best_a < 0) {
+    best.status = AnalysisStatus::kFailed;
     best.message = "no stretch through the reference point meets the tolerance";
     return best;
   }
   Measure(f, best_a, best_e, best);
-  best.found = true;
+  best.status = AnalysisStatus::kComplete;
   return best;
 }
 

@@ -25,6 +25,11 @@ const char* ToString(DeadCentreKind kind) {
   return "unclassified";
 }
 
+std::string DeadCentreReport::Brief() const {
+  return std::string(ToString(status)) + ": " + std::to_string(points.size()) + " dead centre" + (points.size() == 1 ? "" : "s") +
+         (has_stroke ? ", stroke " + std::to_string(stroke) : "") + (message.empty() ? "" : "; " + message);
+}
+
 DeadCentreKind ClassifyLineUp(const Mechanism& m, const Eigen::VectorXd& q) {
   const Joint& drive = m.joints[m.drive.joint];
   if (drive.type != JointType::kRevolute) return DeadCentreKind::kUnclassified;
@@ -53,7 +58,12 @@ DeadCentreReport FindDeadCentres(const Mechanism& m, int output, int component, 
   options.order = 2;
   const SweepResult sweep = Sweep(m, options);
   report.sweep = EventsOf(sweep);  // dead centres are searched over the part swept
-  if (sweep.inputs.empty()) return report;
+  report.message = sweep.message;
+  if (sweep.inputs.empty()) {
+    report.status = AnalysisStatus::kFailed;
+    return report;
+  }
+  report.status = sweep.complete() ? AnalysisStatus::kComplete : AnalysisStatus::kPartial;
   const int column = OutputColumn(m, output, component, 2);
   const int n = static_cast<int>(sweep.inputs.size());
   const double resolution = std::abs(options.step);
@@ -65,7 +75,7 @@ DeadCentreReport FindDeadCentres(const Mechanism& m, int output, int component, 
     stationary.max_step = resolution;
     stationary.continuation = options.continuation;
     const StationaryPoint p = RefineStationary(m, output, component, sweep.inputs[start], sweep.poses.row(start).transpose(), stationary);
-    if (!p.found) continue;
+    if (!p.ok()) continue;
     // one dead centre per sign change: drop a repeat found from the neighbouring interval
     const bool repeat = std::any_of(report.points.begin(), report.points.end(),
                                     [&](const DeadCentre& d) { return std::abs(d.input - p.input) < 1e-9; });

@@ -22,6 +22,7 @@ Proportionality ProportionalityDeviation(const Mechanism& m, int output, double 
   p.sweep = EventsOf(sweep);
   const int n = static_cast<int>(sweep.inputs.size());
   if (n < 2) {
+    p.status = AnalysisStatus::kFailed;
     p.message = sweep.message.empty() ? "fewer than two samples in the range" : sweep.message;
     return p;
   }
@@ -35,6 +36,7 @@ Proportionality ProportionalityDeviation(const Mechanism& m, int output, double 
     at.order = 1;
     const SweepResult r = Sweep(single, at);
     if (!r.complete()) {
+      p.status = AnalysisStatus::kFailed;
       p.message = r.message;
       return p;
     }
@@ -62,8 +64,14 @@ Proportionality ProportionalityDeviation(const Mechanism& m, int output, double 
     p.chord_deviation = std::max(p.chord_deviation, std::abs(sweep.outputs(i, 0) - sweep.outputs(0, 0) - chord * (sweep.inputs[i] - sweep.inputs[0])));
   p.phi_p = std::abs(sweep.inputs[n - 1] - sweep.inputs[0]);
   p.qp = (p.delta_s / reference_length) / p.phi_p;
-  p.ok = true;
+  p.status = sweep.complete() ? AnalysisStatus::kComplete : AnalysisStatus::kPartial;
+  p.message = sweep.message;
   return p;
+}
+
+std::string Proportionality::Brief() const {
+  return std::string(ToString(status)) + (Usable(status) ? ": Q_P = " + std::to_string(qp) + ", delta_s = " + std::to_string(delta_s) : "") +
+         (message.empty() ? "" : "; " + message);
 }
 
 }  // namespace koppel

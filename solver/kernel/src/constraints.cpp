@@ -15,26 +15,25 @@ Eigen::Vector2d Perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
 }  // namespace
 
-bool ResolveTransmission(const Mechanism& m, const Output& o, TransmissionGeometry* g, std::string* error) {
+Expected<TransmissionGeometry> ResolveTransmission(const Mechanism& m, const Output& o) {
+  using Result = Expected<TransmissionGeometry>;
+  TransmissionGeometry g;
   const int coupler = o.link;
   const Joint& out = m.joints[o.joint];
   if (out.link_a != coupler && out.link_b != coupler) {
-    *error = "joint '" + out.name + "' does not belong to coupler '" + m.links[coupler].name + "'";
-    return false;
+    return Result::Error("joint '" + out.name + "' does not belong to coupler '" + m.links[coupler].name + "'");
   }
   const int other = OtherJointOfBinaryLink(m, coupler, o.joint);
   if (other < 0) {
-    *error = "coupler '" + m.links[coupler].name + "' must be a binary link (exactly two joints)";
-    return false;
+    return Result::Error("coupler '" + m.links[coupler].name + "' must be a binary link (exactly two joints)");
   }
   // The coupler carries force along the line between its two joints; for a P joint at the far
   // end that line is not defined by points alone, so both joints must be revolute.
   if (m.joints[other].type != JointType::kRevolute || out.type != JointType::kRevolute) {
-    *error = "the coupler's joints '" + m.joints[other].name + "' and '" + out.name + "' must be revolute";
-    return false;
+    return Result::Error("the coupler's joints '" + m.joints[other].name + "' and '" + out.name + "' must be revolute");
   }
-  g->coupler_from = JointPointOn(m.joints[other], coupler);
-  g->coupler_to = JointPointOn(out, coupler);
+  g.coupler_from = JointPointOn(m.joints[other], coupler);
+  g.coupler_to = JointPointOn(out, coupler);
   const int output_link = out.link_a == coupler ? out.link_b : out.link_a;
   const int frame = m.FrameLink();
   for (int k = 0; k < static_cast<int>(m.joints.size()); ++k) {
@@ -43,16 +42,15 @@ bool ResolveTransmission(const Mechanism& m, const Output& o, TransmissionGeomet
     const bool joins_frame = (j.link_a == frame && j.link_b == output_link) || (j.link_b == frame && j.link_a == output_link);
     if (!joins_frame) continue;
     if (j.type == JointType::kRevolute) {
-      g->pivot = JointPointOn(j, output_link);
-      return true;
+      g.pivot = JointPointOn(j, output_link);
+      return g;
     }
     if (j.link_a == frame) {  // the slide line belongs to the frame: its direction is fixed
-      g->slide_joint = k;
-      return true;
+      g.slide_joint = k;
+      return g;
     }
   }
-  *error = "output link '" + m.links[output_link].name + "' must turn about or slide on the frame";
-  return false;
+  return Result::Error("output link '" + m.links[output_link].name + "' must turn about or slide on the frame");
 }
 
 ConstraintSystem::ConstraintSystem(const Mechanism& mechanism)
@@ -68,9 +66,13 @@ ConstraintSystem::ConstraintSystem(const Mechanism& mechanism)
   transmission_.resize(mechanism.outputs.size());
   for (int k = 0; k < static_cast<int>(mechanism.outputs.size()); ++k) {
     const koppel::Output& o = mechanism.outputs[k];
-    std::string error;
-    if (o.kind == OutputKind::kTransmissionAngle && !ResolveTransmission(mechanism, o, &transmission_[k], &error))
-      problems_.push_back("output '" + o.name + "': " + error);
+    if (o.kind != OutputKind::kTransmissionAngle) continue;
+    const Expected<TransmissionGeometry> geometry = ResolveTransmission(mechanism, o);
+    if (geometry) {
+      transmission_[k] = *geometry;
+    } else {
+      problems_.push_back("output '" + o.name + "': " + geometry.error());
+    }
   }
 }
 

@@ -497,12 +497,16 @@ WalkReport Continuation::AdvanceTo(double target, double max_step) {
     }
     if (h < options_.limit_resolution * input_scale_) {
       const SingularStructure s = AnalyseSingularity(solver_.system(), q_);
-      if (s.rcond < kNearSingularRcond && s.kind == SingularKind::kLimitPoint) {
+      if (s.rcond < kNearSingularRcond) {
+        // A singular position no step passes ends the branch for the drive: a limit point, or a
+        // flat, self-stressed pose whose branches all turn back there (a double fold, such as the
+        // Peaucellier cell stretched out) — for the drive that too is a limit.
         singular_points_.push_back({SingularKind::kLimitPoint, input_, s.rcond, s.joints, options_.at_branch_point});
-        return Ended(WalkStatus::kLimitPoint,
-                     "a limit point of the drive (a singular position: dead centre with respect to the input; joints " +
-                         JointNames(solver_.system().mechanism(), s.joints) + ") at " + Where(input_) +
-                         ": the input cannot pass it on this branch");
+        const std::string what = s.kind == SingularKind::kLimitPoint
+                                     ? "a limit point of the drive (a singular position: dead centre with respect to the input; joints "
+                                     : "a limit point of the drive where loops also fold flat (a singular position no branch passes; joints ";
+        return Ended(WalkStatus::kLimitPoint, what + JointNames(solver_.system().mechanism(), s.joints) + ") at " + Where(input_) +
+                                                  ": the input cannot pass it on this branch");
       }
       return Ended(WalkStatus::kFailed, "no pose could be found beyond " + Where(input_) +
                                             " (Newton did not converge, and the pose there is not singular)");

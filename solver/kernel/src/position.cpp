@@ -19,6 +19,8 @@ double Factorial(int k) {
   return f;
 }
 
+// Guesses tried for links whose angle the hint leaves open.
+constexpr int kAssemblyAttempts = 12;
 // Levenberg–Marquardt budget for assembly from a rough guess: generous, it runs once.
 constexpr int kAssemblyIterations = 400;
 // Assembly hands over to Newton once the residual is this small relative to L: Newton then
@@ -159,7 +161,7 @@ SolveReport PositionSolver::Correct(double input, Eigen::VectorXd& q) {
                 "Newton did not converge in " + std::to_string(options_.max_iterations) + " iterations");
 }
 
-Eigen::VectorXd PositionSolver::InitialGuess() const {
+Eigen::VectorXd PositionSolver::InitialGuess(int attempt) const {
   const Mechanism& m = mechanism_;
   const int n_links = static_cast<int>(m.links.size());
   const double input = m.hint.input;
@@ -234,6 +236,8 @@ Eigen::VectorXd PositionSolver::InitialGuess() const {
     }
     if (pick < 0) break;
     angle_known[pick] = true;
+    // a free angle: 0 first, then angles spread by the golden ratio (no two attempts alike)
+    if (attempt > 0) theta[pick] = WrapAngle(2 * kPi * std::fmod(0.6180339887498949 * (attempt + 7 * pick), 1.0));
     if (!estimates[pick].empty())
       origin[pick] = estimates[pick][0].second - Rotate(theta[pick], m.links[pick].points[estimates[pick][0].first].local);
     posed[pick] = true;
@@ -253,10 +257,18 @@ SolveReport PositionSolver::Assemble(Eigen::VectorXd& q) { return AssembleAt(mec
 
 SolveReport PositionSolver::AssembleAt(double input, Eigen::VectorXd& q) {
   // The guess honours the drive at the hint's input; at another input the drive row pulls the
-  // driven link there during the least-squares phase.
-  Eigen::VectorXd x = InitialGuess();
-  SolveReport report = AssembleFromGuess(input, x);
-  if (report.ok()) q = x;
+  // driven link there during the least-squares phase. A link whose angle the hint leaves open
+  // starts at 0; should least squares stall there (a link lying across the line it must reach is
+  // a stationary point of the cost), other angles are tried.
+  SolveReport report;
+  for (int attempt = 0; attempt < kAssemblyAttempts; ++attempt) {
+    Eigen::VectorXd x = InitialGuess(attempt);
+    report = AssembleFromGuess(input, x);
+    if (report.ok() || report.status == SolveStatus::kSingular) {
+      if (report.ok()) q = x;
+      return report;
+    }
+  }
   return report;
 }
 

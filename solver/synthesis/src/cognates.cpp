@@ -1,5 +1,7 @@
 #include "koppel/synthesis/cognates.hpp"
 
+#include "koppel/core/angles.hpp"
+
 #include "koppel/solver/position.hpp"
 #include "koppel/solver/sweep.hpp"
 
@@ -59,23 +61,23 @@ Mechanism BuildFourBar(const std::string& name, const std::string& p0, Complex z
 
 }  // namespace
 
-bool IdentifyFourBar(const Mechanism& m, FourBarJoints* f, std::string* error) {
+Expected<FourBarJoints> IdentifyFourBar(const Mechanism& m) {
+  using Result = Expected<FourBarJoints>;
+  FourBarJoints joints;
+  FourBarJoints* f = &joints;
   if (m.links.size() != 4 || m.joints.size() != 4) {
-    *error = "cognates need a four-bar: 4 links and 4 joints";
-    return false;
+    return Result::Error("cognates need a four-bar: 4 links and 4 joints");
   }
   for (const Joint& j : m.joints) {
     if (j.type != JointType::kRevolute) {
-      *error = "cognates need a four-bar of revolute joints (joint '" + j.name + "' is prismatic)";
-      return false;
+      return Result::Error("cognates need a four-bar of revolute joints (joint '" + j.name + "' is prismatic)");
     }
   }
   f->frame = m.FrameLink();
   f->a0 = m.drive.joint;
   const Joint& drive = m.joints[f->a0];
   if (drive.link_a != f->frame && drive.link_b != f->frame) {
-    *error = "the drive must be a frame joint (the crank's pivot)";
-    return false;
+    return Result::Error("the drive must be a frame joint (the crank's pivot)");
   }
   f->crank = drive.link_a == f->frame ? drive.link_b : drive.link_a;
   auto other_joint = [&](int link, int joint) {
@@ -91,16 +93,20 @@ bool IdentifyFourBar(const Mechanism& m, FourBarJoints* f, std::string* error) {
   f->rocker = other_link(f->b, f->coupler);
   f->b0 = other_joint(f->rocker, f->b);
   if (f->b0 < 0 || other_link(f->b0, f->rocker) != f->frame) {
-    *error = "the links do not form one loop frame-crank-coupler-rocker";
-    return false;
+    return Result::Error("the links do not form one loop frame-crank-coupler-rocker");
   }
-  return true;
+  return joints;
 }
 
 Cognates RobertsCognates(const Mechanism& m, const PointRef& point) {
   Cognates c;
-  FourBarJoints f;
-  if (!IdentifyFourBar(m, &f, &c.message)) return c;
+  c.status = DesignStatus::kInvalidRequest;
+  const Expected<FourBarJoints> identified = IdentifyFourBar(m);
+  if (!identified) {
+    c.message = identified.error();
+    return c;
+  }
+  const FourBarJoints& f = *identified;
   if (point.link != f.coupler) {
     c.message = "the point must lie on the coupler '" + m.links[f.coupler].name + "'";
     return c;
@@ -123,6 +129,7 @@ Cognates RobertsCognates(const Mechanism& m, const PointRef& point) {
   double xy[2];
   solver.system().GlobalPoint(point, q.data(), xy);
   const Complex k(xy[0], xy[1]);
+  c.status = DesignStatus::kNoDesign;  // from here on: the geometry has no cognates
   if (std::abs(b - a) == 0) {
     c.message = "the coupler joints coincide";
     return c;
@@ -155,8 +162,8 @@ Cognates RobertsCognates(const Mechanism& m, const PointRef& point) {
   // cognate 1's input over a turn of the original: the direction of r (B - A)
   SweepOptions turn;
   turn.from = input;
-  turn.to = input + 2 * 3.14159265358979323846;
-  turn.step = 3.14159265358979323846 / 360;
+  turn.to = input + 2 * kPi;
+  turn.step = kPi / 360;
   Mechanism traced = m;
   traced.outputs.clear();
   Output coupler;
@@ -174,14 +181,20 @@ Cognates RobertsCognates(const Mechanism& m, const PointRef& point) {
   double previous = std::arg(b - a), unwrapped = std::arg(a1 - a0);
   for (size_t i = 0; i < sweep.inputs.size(); ++i) {
     // unwrap the sampled direction so a full turn of the coupler shows as one
-    const double d = std::remainder(sweep.outputs(i, 0) - previous, 2 * 3.14159265358979323846);
+    const double d = std::remainder(sweep.outputs(i, 0) - previous, 2 * kPi);
     previous += d;
     unwrapped += d;
     c.first_input_min = std::min(c.first_input_min, unwrapped);
     c.first_input_max = std::max(c.first_input_max, unwrapped);
   }
-  c.ok = true;
+  c.status = DesignStatus::kOk;
+  c.message.clear();
   return c;
+}
+
+std::string Cognates::Brief() const {
+  return std::string(ToString(status)) + (ok() ? ": cognate frames " + std::to_string(frame_first) + " and " + std::to_string(frame_second)
+                                              : ": " + message);
 }
 
 }  // namespace koppel

@@ -80,9 +80,9 @@ void CheckRequiredRange(const MechanismBuilder& builder, const std::vector<doubl
     out->start.assembles_over_range = true;
     return;
   }
-  Mechanism m;
-  std::string error;
-  if (!builder(values, &m, &error)) return;
+  const Expected<Mechanism> built = builder(values);
+  if (!built) return;
+  const Mechanism& m = *built;
   const double lo = std::min(o.require_from, o.require_to), hi = std::max(o.require_from, o.require_to);
   const double span = std::max(std::abs(hi - m.hint.input), std::abs(lo - m.hint.input));
   const InputRange reach = DrivableRange(m, span, (hi - lo) / 360);
@@ -257,13 +257,13 @@ FitReport Fit(const MechanismBuilder& builder, const std::vector<FitParameter>& 
   report.assembles_over_range = best->start.assembles_over_range;
   report.drivable_from = best->drivable_from;
   report.drivable_to = best->drivable_to;
-  Mechanism fitted;
-  std::string error;
-  if (!builder(report.values, &fitted, &error)) {  // it was built for this start's evaluation: a builder that changed its mind
+  const Expected<Mechanism> built = builder(report.values);
+  if (!built) {  // it was built for this start's evaluation: a builder that changed its mind
     report.status = FitStatus::kNoUsableStart;
-    report.message = "the fitted values no longer build the mechanism: " + error;
+    report.message = "the fitted values no longer build the mechanism: " + built.error();
     return report;
   }
+  const Mechanism& fitted = *built;
   ReportTargets(fitted, targets, options, n, *best, &report);
   // the verdict: every target within its tolerance, and the required range
   std::string missed;

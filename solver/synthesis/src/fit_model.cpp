@@ -30,9 +30,9 @@ double WrappedAngle(double difference) {
 
 bool TargetModel::Evaluate(const double* unknowns, int n_params, double* residuals, double* jacobian) const {
   std::vector<double> p(unknowns, unknowns + n_params);
-  Mechanism m;
-  std::string error;
-  if (!builder_(p, &m, &error)) return false;
+  const Expected<Mechanism> built = builder_(p);
+  if (!built) return false;
+  const Mechanism& m = *built;
   PositionSolver solver(m);
   Eigen::VectorXd q(solver.NumCoordinates());
   if (!solver.Assemble(q).ok()) return false;
@@ -99,13 +99,15 @@ bool TargetModel::Perturb(const std::vector<double>& p, Perturbations* out) cons
   out->plus.resize(n);
   out->minus.resize(n);
   out->step.resize(n);
-  std::string error;
   for (size_t j = 0; j < n; ++j) {
     out->step[j] = kParameterStep * std::max(1.0, std::abs(p[j]));
     std::vector<double> pp = p, pm = p;
     pp[j] += out->step[j];
     pm[j] -= out->step[j];
-    if (!builder_(pp, &out->plus[j], &error) || !builder_(pm, &out->minus[j], &error)) return false;
+    Expected<Mechanism> plus = builder_(pp), minus = builder_(pm);
+    if (!plus || !minus) return false;
+    out->plus[j] = std::move(*plus);
+    out->minus[j] = std::move(*minus);
   }
   return true;
 }
@@ -187,7 +189,7 @@ bool TargetModel::DeadCentre(const Mechanism& m, PositionSolver& solver, const E
   Continuation path(solver);
   if (!path.Start(m.hint.input, q_hint).ok() || !path.AdvanceTo(t.input, 0.05).ok()) return false;
   const StationaryPoint dc = RefineStationary(m, t.output, t.component, path.input(), path.q());
-  if (!dc.found || dc.second == 0.0) return false;
+  if (!dc.ok() || dc.second == 0.0) return false;
   *residual = t.weight * (m.InputIsAngle() ? WrappedAngle(dc.input - t.input) : dc.input - t.input);
   if (!jacobian_row) return true;
   std::fill(jacobian_row, jacobian_row + n_unknowns, 0.0);

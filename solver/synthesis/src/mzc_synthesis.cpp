@@ -12,11 +12,13 @@ MzcDesign MzcFromLambda(double lambda, double D) {
   d.lambda = lambda;
   d.D = D;
   if (!(lambda >= 0.5 && lambda <= 1.5) || !(D > 0)) {
+    d.status = DesignStatus::kInvalidRequest;
     d.message = "needs 0.5 <= lambda <= 1.5 and D > 0";
     return d;
   }
   const double s2 = (1 + 2 * lambda) / 4;  // six-point condition
   if (s2 >= 1 || lambda - s2 <= 0) {
+    d.status = DesignStatus::kNoDesign;
     d.message = "lambda = " + std::to_string(lambda) + " gives no six-point linkage (lambda - sin^2 phi0 must be > 0)";
     return d;
   }
@@ -30,31 +32,33 @@ MzcDesign MzcFromLambda(double lambda, double D) {
   // crossed symmetric position: A' = (l2/2, H), B' = (-l2/2, H) with |A0'A'| = l1
   const double span = 0.5 * (d.l2 + d.l4);
   if (d.l1 <= span) {
+    d.status = DesignStatus::kNoDesign;
     d.message = "the rockers are too short for the crossed position";
     return d;
   }
   const double height = std::sqrt(d.l1 * d.l1 - span * span);
   d.pole_height = height * (0.5 * d.l4) / span;  // where A0'A' crosses the symmetry axis
-  d.ok = true;
+  d.status = DesignStatus::kOk;
   return d;
 }
 
-bool LambdaFromKappa(double kappa, double* lambda, std::string* error) {
+std::string MzcDesign::Brief() const {
+  return std::string(ToString(status)) + (ok() ? ": l1 = " + std::to_string(l1) + ", l2 = " + std::to_string(l2) + ", l4 = " + std::to_string(l4)
+                                              : ": " + message);
+}
+
+Expected<double> LambdaFromKappa(double kappa) {
   // f(lambda) = lambda^2 (3 - 2 lambda) - cos^2 kappa rises on [0, 1] from -cos^2 to 1 - cos^2:
   // the root in (0.5, 1] belongs to kappa in [0, kappa(0.5)); beyond 1, kappa turns negative.
   const double target = std::pow(std::cos(kappa), 2);
   auto f = [&](double l) { return l * l * (3 - 2 * l) - target; };
   double lo = 0.5, hi = 1.0;
-  if (f(lo) > 0 || f(hi) < 0) {
-    *error = "no lambda in [0.5, 1] for this kappa";
-    return false;
-  }
+  if (f(lo) > 0 || f(hi) < 0) return Expected<double>::Error("no lambda in [0.5, 1] for this kappa");
   for (int it = 0; it < 200; ++it) {
     const double mid = 0.5 * (lo + hi);
     (f(mid) < 0 ? lo : hi) = mid;
   }
-  *lambda = 0.5 * (lo + hi);
-  return true;
+  return 0.5 * (lo + hi);
 }
 
 Mechanism MzcMechanism(const MzcDesign& d) {

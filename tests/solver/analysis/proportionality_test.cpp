@@ -14,7 +14,7 @@ namespace koppel {
 TEST_CASE("proportional linkage reading example", "[proportionality]") {
   const Mechanism m = test::ProportionalLinkage(1.0, 0.5, 1.83);
   const Proportionality p = ProportionalityDeviation(m, 0, DegToRad(112.5), DegToRad(247.5), 0.5, std::nullopt, DegToRad(0.05));
-  REQUIRE(p.ok);
+  REQUIRE(p.status == AnalysisStatus::kComplete);
   CHECK(RadToDeg(p.reference) == Approx(180).margin(1e-9));  // the flat point
   CHECK(p.slope == Approx(test::Proportional(1.0, 0.5, 1.83, kPi).s1).margin(1e-12));
   CHECK(p.delta_s == Approx(0.018).margin(0.0005));

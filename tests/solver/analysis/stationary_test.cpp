@@ -26,7 +26,7 @@ TEST_CASE("slider-crank dead centres: phi_a and phi_i to 1e-12 from nearby sampl
       const int i = static_cast<int>(std::lround(expected / o.step));
       const StationaryPoint p = RefineStationary(m, 0, 0, r.inputs[i], r.poses.row(i).transpose());
       INFO("e = " << e << ", expected " << RadToDeg(expected) << " deg: " << p.message);
-      REQUIRE(p.found);
+      REQUIRE(p.ok());
       CHECK(std::abs(p.input - expected) < 1e-12);
       CHECK((maximum ? p.second < 0 : p.second > 0));
       // the value: s_a = sqrt((l1 + l2)^2 - e^2), s_i = sqrt((l2 - l1)^2 - e^2) (seed 000)
@@ -44,7 +44,8 @@ TEST_CASE("no stationary point where the output is monotonic", "[stationary]") {
   const SweepResult r = Sweep(m, o);
   REQUIRE(r.complete());
   const StationaryPoint p = RefineStationary(m, 2, 0, r.inputs[0], r.poses.row(0).transpose());
-  CHECK_FALSE(p.found);
+  CHECK_FALSE(p.ok());
+  CHECK(p.status == AnalysisStatus::kFailed);
   CHECK_FALSE(p.message.empty());
 }
 

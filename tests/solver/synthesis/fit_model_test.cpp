@@ -20,9 +20,8 @@ constexpr double kJacobianTolerance = 1e-5;
 
 // seed 003's four-bar with l2, l3 free; outputs K (point), psi (rocker angle), phi, mu
 MechanismBuilder Builder() {
-  return [](const std::vector<double>& p, Mechanism* m, std::string*) {
-    *m = test::FourBar(1.0, p[0], p[1], 4.0, 8.0, 0.3, 1);
-    return true;
+  return [](const std::vector<double>& p) -> Expected<Mechanism> {
+    return test::FourBar(1.0, p[0], p[1], 4.0, 8.0, 0.3, 1);
   };
 }
 

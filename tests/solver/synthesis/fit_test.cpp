@@ -19,9 +19,8 @@ const double kKappa = std::acos(5.0 / 9.0 * std::sqrt(3.0));
 
 // seed 003's four-bar with l3 and AK free
 MechanismBuilder FourBarBuilder() {
-  return [](const std::vector<double>& p, Mechanism* m, std::string*) {
-    *m = test::FourBar(1.0, kL23, p[0], 4.0, p[1], kKappa, 1);
-    return true;
+  return [](const std::vector<double>& p) -> Expected<Mechanism> {
+    return test::FourBar(1.0, kL23, p[0], 4.0, p[1], kKappa, 1);
   };
 }
 
@@ -80,9 +79,8 @@ TEST_CASE("precision points with free inputs", "[fit]") {
 }
 
 TEST_CASE("function generation: the offset of a slider-crank from its slider positions", "[fit]") {
-  const MechanismBuilder builder = [](const std::vector<double>& p, Mechanism* m, std::string*) {
-    *m = test::SliderCrank(1.0, 2.6, p[0]);
-    return true;
+  const MechanismBuilder builder = [](const std::vector<double>& p) -> Expected<Mechanism> {
+    return test::SliderCrank(1.0, 2.6, p[0]);
   };
   std::vector<FitTarget> targets;
   for (double phi : {0.0, 60.0, 130.0, 250.0}) {
@@ -137,9 +135,8 @@ TEST_CASE("dead-centre targets: a crank-rocker whose rocker has its dead centres
   // reference: the dead-centre synthesis answer for phi0 = 164 deg, psi0 = 60 deg, beta = 30 deg has
   // its extended dead centre at phi = 30 deg and the folded one at 30 - 164 = -134 deg; start from
   // other rocker and coupler lengths and ask for dead centres there (plus the swing as a value)
-  const MechanismBuilder builder = [](const std::vector<double>& p, Mechanism* m, std::string*) {
-    *m = test::FourBar(0.33200614543343, p[0], p[1], 1.0, 0.1, 0.0, 1);
-    return true;
+  const MechanismBuilder builder = [](const std::vector<double>& p) -> Expected<Mechanism> {
+    return test::FourBar(0.33200614543343, p[0], p[1], 1.0, 0.1, 0.0, 1);
   };
   std::vector<FitTarget> targets(2);
   targets[0].name = "extended";
@@ -171,9 +168,8 @@ namespace koppel {
 TEST_CASE("straight-line target: AK of seed 003 that makes K's path straightest around phi = 180", "[fit]") {
   // seed 003's K has six-point contact with its tangent at phi = 180 deg only for AK = 25/3
   // (with the other dimensions fixed): fitting AK for straightness over 150..210 deg finds it
-  const MechanismBuilder builder = [](const std::vector<double>& p, Mechanism* m, std::string*) {
-    *m = test::FourBar(1.0, kL23, kL23, 4.0, p[0], kKappa, 1);
-    return true;
+  const MechanismBuilder builder = [](const std::vector<double>& p) -> Expected<Mechanism> {
+    return test::FourBar(1.0, kL23, kL23, 4.0, p[0], kKappa, 1);
   };
   FitTarget t;
   t.name = "straight";
@@ -237,9 +233,8 @@ double VerticalFourBarDirection(double l1, double l2, double l3, double l4, doub
 }
 
 MechanismBuilder VerticalBuilder() {
-  return [](const std::vector<double>& p, Mechanism* m, std::string*) {
-    *m = VerticalFourBar(p[0], p[1], p[2], 3.0);
-    return true;
+  return [](const std::vector<double>& p) -> Expected<Mechanism> {
+    return VerticalFourBar(p[0], p[1], p[2], 3.0);
   };
 }
 
@@ -328,9 +323,8 @@ TEST_CASE("the result does not depend on the number of threads", "[fit]") {
 TEST_CASE("a design that does not assemble over the required range: the drivable range, not a bare 0", "[fit]") {
   // a non-Grashof four-bar (l1 + l4 = 6 > l2 + l3 = 5): its crank reaches only the inputs where
   // |AB0| <= l2 + l3, i.e. cos phi >= (l1^2 + l4^2 - (l2 + l3)^2) / (2 l1 l4) = -5/16
-  const MechanismBuilder builder = [](const std::vector<double>& p, Mechanism* m, std::string*) {
-    *m = test::FourBar(2.0, 2.5, p[0], 4.0, 1.0, 0.0, 1);
-    return true;
+  const MechanismBuilder builder = [](const std::vector<double>& p) -> Expected<Mechanism> {
+    return test::FourBar(2.0, 2.5, p[0], 4.0, 1.0, 0.0, 1);
   };
   FitTarget t;
   t.name = "psi";

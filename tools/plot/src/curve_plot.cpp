@@ -85,7 +85,7 @@ PlotResult CurvePlot(const Mechanism& m, const CurvePlotOptions& options) {
   bool band = false;
   if (options.straight) {
     const StraightStretch s = LongestStraightStretch(m, options.point, options.qg, options.reference, kPi, options.resolution);
-    if (!s.found) {
+    if (!s.ok()) {
       result.status = PlotStatus::kPartial;
       result.message = (result.message.empty() ? "" : result.message + "; ") + "straight line: " + s.message;
     } else {

@@ -1,11 +1,10 @@
 // The catalog card of a mechanism: the `catalog:` section of its YAML file. It says what the
-// mechanism is (titles, kind, motion, applications, source), declares its access features
-// (Zugriffsmerkmale) exactly as its document lists them, and carries the document's equations
-// and figures as checks that `koppel catalog check` recomputes with the generic solver.
+// mechanism is (titles, kind, classes, motion, applications, source), declares its access
+// features (Zugriffsmerkmale) exactly as its document lists them, and carries the document's
+// equations and figures as checks that `koppel catalog check` recomputes with the generic solver.
 #pragma once
 
 #include <map>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,6 +24,11 @@ struct AccessFeatures {
   std::map<std::string, int> joints_by_type;  // "D" revolute, "S" prismatic, "W" helical ...
 };
 
+// Übertragungsgetriebe (the output is a motion of a link: transfer function) or
+// Führungsgetriebe (a point or a link is guided along a path or through poses).
+enum class CardKind { kTransfer, kGuidance };
+const char* ToString(CardKind kind);  // "transfer", "guidance"
+
 // One of the document's equations, compared with a solver output over a sweep.
 struct EquationCheck {
   std::string name;     // e.g. "s'' (Bild 2)"
@@ -38,24 +42,49 @@ struct EquationCheck {
   int line = 0;         // line in the file, for messages
 };
 
-// A scalar figure of the document, recomputed from the solver.
-//   quantity: min, max, argmin, argmax (of `output` over the sweep; arg in input units),
-//             value (of `output` at `at`), derivative (order `order` of `output` at `at`),
-//             stroke (max - min of `output`), and the kinds the analysis modules add
-//             (deadcentre, straightline, proportionality, cognate ...).
+// What a figure measures; the table in figure_quantities.hpp gives each one's name in the file,
+// its arguments, its unit and its evaluator.
+enum class FigureQuantity {
+  kMin,                  // of an output over the sweep (or from..to)
+  kMax,
+  kArgMin,               // input where the output is least
+  kArgMax,
+  kStroke,               // max - min of an output
+  kValue,                // output at an input
+  kDerivative,           // order-k transfer function at an input
+  kDeadCentreSpan,       // crank angle from the folded to the extended dead centre
+  kDeadCentrePhiA,       // input of the extended dead centre (äußere Totlage)
+  kDeadCentrePhiI,       // input of the folded dead centre (innere Totlage)
+  kPhaseRatio,           // time ratio phi_H / (360 deg - phi_H)
+  kProportionalityDs,    // seed 001: band width about the flat-point tangent
+  kProportionalityQp,
+  kStraightlinePhiG,     // seed 003: longest stretch with Q_G <= qg
+  kStraightlinePhiA,
+  kStraightlineLength,
+  kStraightlineBand,     // band width of a given stretch from..to about the tangent at `at`
+  kCognateFrame,         // Roberts cognate's frame length
+  kInputLow,             // drivable range of the input: its lower limit position
+  kInputHigh,            // ... and its upper one
+  kRevolves,             // 1 when a joint can turn fully, 0 when it oscillates
+  kTurns,                // full turns of an angle output over the sweep
+  kBranchPoint,          // input of the branch point (change point) nearest `near`
+};
+
+// A scalar figure of the document, recomputed from the solver. Every key is checked against
+// the quantity's table entry when the card is read: an unknown quantity, an argument the
+// quantity does not take or a malformed argument is an error with its line.
 struct FigureCheck {
   std::string name;
-  std::string quantity;
-  std::string output;
+  FigureQuantity quantity = FigureQuantity::kValue;
+  std::string output;    // empty for quantities of the mechanism as a whole
   int component = 0;
-  int order = 0;
-  std::map<std::string, std::string> args;  // further arguments by name, as formulas or words
-  std::string expected;  // the document's value, as a formula (degrees for angles: see unit)
-  std::string unit;      // "deg" when expected is an angle in degrees; empty otherwise
+  // the quantity's arguments by name (formulas, an order, or a joint name), as written
+  std::map<std::string, std::string> args;
+  std::string expected;  // the document's value, as a formula over the parameters
+  bool degrees = false;  // `unit: deg`: expected is an angle in degrees (required for angles)
   double tolerance = 0;  // absolute, in the unit of `expected`; the document's rounding
   std::string printed;   // the printed figure when koppel's differs, and why (note)
   std::string note;
-  bool pending = false;  // declared, checked by a later analysis (reported, not failed)
   std::string variant;   // the CheckVariant it belongs to; empty: every variant
   int line = 0;
 };
@@ -69,8 +98,9 @@ struct CheckVariant {
 struct CatalogCard {
   std::string title_de;
   std::string title_en;
-  std::string kind;    // "transfer" (Übertragungsgetriebe) or "guidance" (Führungsgetriebe)
-  std::string motion;  // e.g. "full rotation -> oscillating translation"
+  CardKind kind = CardKind::kTransfer;
+  std::vector<std::string> classes;  // e.g. four-bar, crank-rocker (catalog_classes.hpp)
+  std::string motion;  // "<input motion> -> <output motion>[ ...]", e.g. "full rotation -> oscillating translation"
   std::vector<std::string> applications;
   std::string document;  // the source description
   std::string author;

@@ -14,6 +14,7 @@ namespace koppel {
 struct CatalogEntry {
   MechanismFile file;       // file.card is set
   AccessFeatures features;  // as declared, completed by the computed ones where not declared
+  std::vector<std::string> classes;  // as declared, plus the structural ones the graph shows
 };
 
 class Catalog {
@@ -40,12 +41,20 @@ struct CountRange {
 struct FeatureQuery {
   std::optional<CountRange> links, binary, ternary, quaternary, joints, revolute, prismatic;
   std::optional<CountRange> drives, drives_at_frame, outputs, outputs_at_frame;
-  std::string kind;  // "transfer" or "guidance"; empty: any
-  std::string text;  // case-insensitive substring of id or titles; empty: any
+  std::optional<CardKind> kind;   // any when not set
+  std::string klass;              // one of CatalogClasses(); empty: any
+  std::string motion;             // MotionMatches query, e.g. "rotation -> translation"; empty: any
+  std::string text;               // case-insensitive substring of id or titles (de, en); empty: any
+  std::optional<Mechanism> like;  // entries whose kinematic chain is isomorphic to this one's
 };
 
 bool Matches(const CatalogEntry& entry, const FeatureQuery& query);
 std::vector<const CatalogEntry*> FindEntries(const Catalog& catalog, const FeatureQuery& query);
+
+// True when the kinematic chains are isomorphic: a one-to-one map of the links that takes the
+// frame to the frame and every joint to a joint of the same type (R or P) between the mapped
+// links. Link names, joint names, dimensions, the drive and the outputs do not matter.
+bool SameKinematicChain(const Mechanism& a, const Mechanism& b);
 
 // The default catalog directory: $KOPPEL_CATALOG if set, else the one compiled in.
 std::string DefaultCatalogDirectory();

@@ -5,6 +5,7 @@
 
 #include "koppel/catalog/card.hpp"
 #include "koppel/core/expression.hpp"
+#include "koppel/core/loads.hpp"
 #include "koppel/core/mechanism.hpp"
 
 #include <optional>
@@ -52,6 +53,7 @@ struct MechanismFile {
   Mechanism mechanism;      // consistent, angles in radians
   SweepDefaults sweep;
   std::optional<CatalogCard> card;  // the `catalog` section, when present
+  Loads loads;  // masses, units, gravity and loads (loads.hpp); none when the file gives none
 };
 
 using Overrides = std::vector<std::pair<std::string, std::string>>;

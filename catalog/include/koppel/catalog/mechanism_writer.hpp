@@ -9,8 +9,10 @@
 namespace koppel {
 
 // `comment` goes on top as '#' lines; `parameters` (name, value) are written as the file's
-// parameters (informational: the geometry is written as numbers).
+// parameters (informational: the geometry is written as numbers). `loads`, when given, adds the
+// masses, units, gravity and loads (formulas written as they are: they may name the parameters).
 std::string WriteMechanismYaml(const Mechanism& mechanism, const std::string& comment, const SweepDefaults& sweep,
-                               const std::vector<std::pair<std::string, double>>& parameters = {});
+                               const std::vector<std::pair<std::string, double>>& parameters = {},
+                               const Loads* loads = nullptr);
 
 }  // namespace koppel

@@ -4,6 +4,7 @@
 // longest stretch that contains K_I.
 #pragma once
 
+#include "koppel/analysis/status.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/position.hpp"
 #include "koppel/solver/sweep.hpp"
@@ -18,13 +19,16 @@
 namespace koppel {
 
 struct CouplerCurve {
-  SweepEvents sweep;                         // status, singular points and gaps of the trace
+  AnalysisStatus status = AnalysisStatus::kNotRun;  // partial: the curve of the drivable part only
+  std::string message;
+  SweepEvents sweep;                         // singular points and gaps of the trace
   std::vector<double> inputs;
   std::vector<std::uint8_t> singular;        // per sample: the pose is singular (see SweepResult)
   std::vector<Eigen::Vector2d> points;       // global position
   std::vector<Eigen::Vector2d> d1, d2;       // d/dinput, d2/dinput2
   std::vector<double> arc_length;            // from the first sample, along the curve
   std::vector<double> curvature;             // signed, 1/length; 0 where the point stands still
+  std::string Brief() const;
 };
 
 // The mechanism with one output only: `point` (name "curve").
@@ -35,7 +39,7 @@ Mechanism WithPointOutput(const Mechanism& mechanism, const PointRef& point);
 CouplerCurve TraceCurve(const Mechanism& mechanism, const PointRef& point, const SweepOptions& range);
 
 struct StraightStretch {
-  bool found = false;
+  AnalysisStatus status = AnalysisStatus::kNotRun;  // kComplete: a stretch was measured
   std::string message;
   double reference = 0;                // input of K_I
   Eigen::Vector2d reference_point = Eigen::Vector2d::Zero();
@@ -45,6 +49,8 @@ struct StraightStretch {
   double length = 0;                   // L: extent of the stretch along g
   double band = 0;                     // Δy: width of the band parallel to g that holds the stretch
   double qg = 0;                       // band / length
+  bool ok() const { return status == AnalysisStatus::kComplete; }
+  std::string Brief() const;
 };
 
 // Band of a given stretch [from, to] against the tangent at `reference`.

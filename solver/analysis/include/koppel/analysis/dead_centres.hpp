@@ -4,6 +4,7 @@
 // centre is classified extended (Strecklage, äußere Totlage) or folded (Decklage, innere).
 #pragma once
 
+#include "koppel/analysis/status.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/position.hpp"
 #include "koppel/solver/sweep.hpp"
@@ -24,7 +25,11 @@ struct DeadCentre {
 };
 
 struct DeadCentreReport {
-  SweepEvents sweep;  // of the sweep searched: dead centres are found over its drivable part
+  // kComplete: searched over the whole range; kPartial: over its drivable part only (the gaps are
+  // in `sweep`); kFailed: no sample to search (not assemblable, invalid range)
+  AnalysisStatus status = AnalysisStatus::kNotRun;
+  std::string message;
+  SweepEvents sweep;  // of the sweep searched
   std::vector<DeadCentre> points;  // in input order
   // For an output with one extended and one folded dead centre per turn (the classic crank
   // mechanisms; otherwise the maximum and minimum stand in for them): phi_a, phi_i, s_a, s_i,
@@ -33,6 +38,7 @@ struct DeadCentreReport {
   bool has_stroke = false;
   bool classified = false;  // phi_a / phi_i from the crank–coupler line-up, not from max/min
   double phi_a = 0, phi_i = 0, s_a = 0, s_i = 0, stroke = 0, phi_h = 0, phase_ratio = 0;
+  std::string Brief() const;
 };
 
 // Sweeps `range` (its step sets the search resolution) and refines every dead centre of output

@@ -9,6 +9,7 @@
 // Q_P = (Δs / l) / phi_P with phi_P in radians and l the reference length.
 #pragma once
 
+#include "koppel/analysis/status.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/position.hpp"
 #include "koppel/solver/sweep.hpp"
@@ -19,8 +20,8 @@
 namespace koppel {
 
 struct Proportionality {
-  bool ok = false;        // computed (over the drivable part of the range: see sweep)
-  std::string message;    // why not computed
+  AnalysisStatus status = AnalysisStatus::kNotRun;  // partial: over the drivable part of the range (see sweep)
+  std::string message;    // why not computed, or why partial
   SweepEvents sweep;      // singular points and gaps of the range
   double reference = 0;   // input of the tangent point
   double slope = 0;       // s' there
@@ -28,6 +29,7 @@ struct Proportionality {
   double chord_deviation = 0;    // max |s - chord through the end points|, for comparison
   double phi_p = 0;       // range in radians (or length)
   double qp = 0;          // (delta_s / reference_length) / phi_p
+  std::string Brief() const;
 };
 
 // Over the drivable part of from..to when the branch cannot be driven through all of it (the

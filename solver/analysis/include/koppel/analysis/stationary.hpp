@@ -4,6 +4,7 @@
 // branch by continuation.
 #pragma once
 
+#include "koppel/analysis/status.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/continuation.hpp"
 
@@ -14,13 +15,15 @@
 namespace koppel {
 
 struct StationaryPoint {
-  bool found = false;
+  AnalysisStatus status = AnalysisStatus::kNotRun;  // kComplete: found
+  std::string message;       // why not found
   double input = 0.0;        // radians (R drive) or length (P drive)
   double value = 0.0;        // the output there
   double second = 0.0;       // y'' there: < 0 a maximum, > 0 a minimum
   int iterations = 0;
   Eigen::VectorXd q;         // the pose there
-  std::string message;       // why not found
+  bool ok() const { return status == AnalysisStatus::kComplete; }
+  std::string Brief() const;
 };
 
 struct StationaryOptions {
@@ -30,6 +33,7 @@ struct StationaryOptions {
   // Largest Newton step in the input: keeps the search near the sample it started from.
   double max_step = 0.1;
   ContinuationOptions continuation;  // how to walk between Newton steps
+  bool IsValid(std::string* why) const;
 };
 
 // Refines a stationary point of output `output` (component 0/1 for points) starting from a

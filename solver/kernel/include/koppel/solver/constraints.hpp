@@ -16,6 +16,7 @@
 // written out analytically (constraints.cpp) and checked against finite differences in the tests.
 #pragma once
 
+#include "koppel/core/expected.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/taylor.hpp"
 
@@ -37,9 +38,9 @@ struct TransmissionGeometry {
   int slide_joint = -1;  // valid when the output link slides on the frame
 };
 
-// Resolves a kTransmissionAngle output. False and *error when the coupler is not binary or the
-// output link is not jointed directly to the frame.
-bool ResolveTransmission(const Mechanism& m, const Output& o, TransmissionGeometry* geometry, std::string* error);
+// Resolves a kTransmissionAngle output; an error when the coupler is not binary or the output
+// link is not jointed directly to the frame.
+Expected<TransmissionGeometry> ResolveTransmission(const Mechanism& m, const Output& o);
 
 class ConstraintSystem {
  public:

@@ -99,6 +99,9 @@ class PositionSolver {
   // x = J^-1 rhs with the factorisation of the last converged pose (implicit-function theorem:
   // dq/dp = -J^-1 dF/dp). Precondition: the last Correct/Assemble succeeded.
   Eigen::VectorXd SolveWithJacobian(const Eigen::VectorXd& rhs) const;
+  // x = J^-T rhs with the same factorisation: the Lagrange multipliers (multipliers.hpp). False
+  // when there is none or J is not square (redundant joints: the multipliers are not unique).
+  bool SolveWithJacobianTranspose(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;  // multipliers.cpp
 
   // Rank of the constraint rows (drive row excluded) at q, and the actual mobility
   // NumCoordinates() - rank.
@@ -108,7 +111,9 @@ class PositionSolver {
   void Evaluate(const Eigen::VectorXd& q, double input);  // fills residual_ and jacobian_
   bool Factorize();                                       // factorises jacobian_
   void SolveFactorized(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
-  Eigen::VectorXd InitialGuess() const;
+  // The first guess from the frame, the drive and the hint. Links whose angle neither determines
+  // get angle 0 on attempt 0 and a spread of angles on later attempts (see AssembleAt).
+  Eigen::VectorXd InitialGuess(int attempt) const;
   SolveReport Report(SolveStatus status, int iterations, std::string message) const;
   template <int N> bool SeriesImpl(int order, Eigen::MatrixXd& coefficients);
 

@@ -12,7 +12,9 @@
 // equal to the original's crank angle; cognate 1 at A0 (its input follows the original coupler).
 #pragma once
 
+#include "koppel/core/expected.hpp"
 #include "koppel/core/mechanism.hpp"
+#include "koppel/synthesis/design_status.hpp"
 
 #include <string>
 
@@ -23,11 +25,11 @@ struct FourBarJoints {
   int a0 = -1, a = -1, b = -1, b0 = -1;  // joints
 };
 
-// Recognises a four-bar of R joints driven at a frame joint; false and *error otherwise.
-bool IdentifyFourBar(const Mechanism& m, FourBarJoints* joints, std::string* error);
+// Recognises a four-bar of R joints driven at a frame joint; an error saying what is not otherwise.
+Expected<FourBarJoints> IdentifyFourBar(const Mechanism& m);
 
 struct Cognates {
-  bool ok = false;
+  DesignStatus status = DesignStatus::kNotRun;  // kInvalidRequest: not a four-bar or not a coupler point
   std::string message;
   Mechanism first;   // pivots A0, C0
   Mechanism second;  // pivots C0, B0
@@ -38,6 +40,8 @@ struct Cognates {
   // the input range of cognate 1 (its crank follows the original coupler, so for a crank-rocker
   // original it is a rocker): [min, max] over one turn of the original, radians
   double first_input_min = 0, first_input_max = 0;
+  bool ok() const { return status == DesignStatus::kOk; }
+  std::string Brief() const;
 };
 
 // `point` is the coupler point (on the coupler link). Assembles the original at its hint.

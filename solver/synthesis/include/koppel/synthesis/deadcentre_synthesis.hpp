@@ -39,6 +39,7 @@
 #pragma once
 
 #include "koppel/core/mechanism.hpp"
+#include "koppel/synthesis/design_status.hpp"
 
 #include <string>
 
@@ -50,15 +51,6 @@ inline constexpr double kReanalysisTolerance = 1e-9;
 enum class RockerSense { kSame, kOpposite };
 const char* ToString(RockerSense sense);  // "same", "opposite"
 
-enum class DesignStatus {
-  kNotRun,
-  kOk,                // a design, proved by re-analysis
-  kInvalidRequest,    // the request failed IsValid
-  kNoDesign,          // no crank mechanism for this request (or this beta / offset)
-  kBoundaryOptimum,   // mu_min grows towards a boundary where a link vanishes: no best design
-  kReanalysisFailed,  // the generic solver does not confirm the closed form: nothing reported
-};
-const char* ToString(DesignStatus status);
 
 struct CrankRockerRequest {
   double phi0 = 0;  // crank angle from the folded to the extended dead centre, in (0, 2 pi)

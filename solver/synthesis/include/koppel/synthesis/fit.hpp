@@ -22,6 +22,7 @@
 #pragma once
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/expected.hpp"
 #include "koppel/core/mechanism.hpp"
 
 #include <Eigen/Core>
@@ -32,9 +33,9 @@
 
 namespace koppel {
 
-// Builds the mechanism for parameter values; false and *error when the values make no mechanism.
+// Builds the mechanism for parameter values, or says why the values make no mechanism.
 // Called from several threads at once: it must not share mutable state.
-using MechanismBuilder = std::function<bool(const std::vector<double>& values, Mechanism* mechanism, std::string* error)>;
+using MechanismBuilder = std::function<Expected<Mechanism>(const std::vector<double>& values)>;
 
 struct FitParameter {
   std::string name;

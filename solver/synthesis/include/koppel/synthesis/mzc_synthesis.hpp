@@ -12,23 +12,27 @@
 //   lambda^2 (3 - 2 lambda) = 1/(1 + tan^2 kappa).
 #pragma once
 
+#include "koppel/core/expected.hpp"
 #include "koppel/core/mechanism.hpp"
+#include "koppel/synthesis/design_status.hpp"
 
 #include <string>
 
 namespace koppel {
 
 struct MzcDesign {
-  bool ok = false;
+  DesignStatus status = DesignStatus::kNotRun;  // kOk, kInvalidRequest (lambda, D), kNoDesign
   std::string message;
   double lambda = 0, D = 0, phi0 = 0, kappa = 0;   // phi0, kappa in radians
   double l1 = 0, l2 = 0, l3 = 0, l4 = 0, k = 0;   // k = A'K = B'K
   double pole_height = 0;                           // of the pole P above the frame line
+  bool ok() const { return status == DesignStatus::kOk; }
+  std::string Brief() const;
 };
 
 MzcDesign MzcFromLambda(double lambda, double D);
-// lambda from kappa (the root of lambda^2 (3 - 2 lambda) = cos^2 kappa in [0.5, 1.5] for 0 <= kappa < pi/2... ).
-bool LambdaFromKappa(double kappa, double* lambda, std::string* error);
+// lambda from kappa (the root of lambda^2 (3 - 2 lambda) = cos^2 kappa in [0.5, 1]).
+Expected<double> LambdaFromKappa(double kappa);
 
 // The double rocker in koppel's conventions: A0' = (-l4/2, 0), B0' = (l4/2, 0), driven at A0'
 // with the input = angle of A0'A' against +x (phi0 in the crossed symmetric position, where it

@@ -1,0 +1,67 @@
+#include "koppel/core/formula.hpp"
+
+#include "koppel/core/angles.hpp"
+
+#include <muParser.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace koppel {
+
+struct CompiledFormula::Impl {
+  mu::Parser parser;
+  // muparser binds variables by address: the constants and the variables live here, at fixed
+  // addresses for the formula's lifetime (the Impl never moves, only its owner's pointer does).
+  std::vector<double> constants;
+  std::vector<double> variables;
+};
+
+CompiledFormula::CompiledFormula() = default;
+CompiledFormula::~CompiledFormula() = default;
+CompiledFormula::CompiledFormula(CompiledFormula&&) noexcept = default;
+CompiledFormula& CompiledFormula::operator=(CompiledFormula&&) noexcept = default;
+
+bool CompiledFormula::Compile(const std::string& formula, const ParameterSet& parameters, const std::vector<std::string>& variables,
+                              std::string* error) {
+  auto impl = std::make_unique<Impl>();
+  impl->constants.reserve(parameters.Values().size());
+  impl->variables.assign(variables.size(), 0.0);
+  // the address each name ends up bound to: variables shadow parameters, later variables earlier ones
+  std::map<std::string, double*> bound;
+  for (const auto& [name, value] : parameters.Values()) {
+    impl->constants.push_back(value);
+    bound[name] = &impl->constants.back();
+  }
+  for (size_t i = 0; i < variables.size(); ++i) bound[variables[i]] = &impl->variables[i];
+  try {
+    impl->parser.DefineConst("pi", kPi);
+    impl->parser.DefineConst("deg", kPi / 180.0);
+    for (const auto& [name, address] : bound) impl->parser.DefineVar(name, address);
+    impl->parser.SetExpr(formula);
+    impl->parser.Eval();  // parses now, so that an unknown name is a compile error
+  } catch (const mu::Parser::exception_type& e) {
+    if (error) {
+      std::string message = e.GetMsg();
+      if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && !e.GetToken().empty()) message = "unknown name '" + e.GetToken() + "'";
+      *error = "formula '" + formula + "' does not parse: " + message;
+    }
+    return false;
+  }
+  impl_ = std::move(impl);
+  text_ = formula;
+  return true;
+}
+
+double CompiledFormula::Evaluate(const double* values) const {
+  std::copy(values, values + impl_->variables.size(), impl_->variables.begin());
+  try {
+    const double value = impl_->parser.Eval();
+    return std::isfinite(value) ? value : std::numeric_limits<double>::quiet_NaN();
+  } catch (const mu::Parser::exception_type&) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+}
+
+}  // namespace koppel

@@ -1,0 +1,139 @@
+#include "koppel/analysis/forces.hpp"
+
+#include "koppel/analysis/inertia.hpp"
+#include "koppel/analysis/loads_at_pose.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace koppel {
+namespace {
+
+// The size of the drive torque the loads make: sum |F| L + |M| (L the mechanism's length scale,
+// in metres), over L for a P drive's force. What the two drives are compared to, also where the
+// loads do no work (a dead centre of the loaded point) or cancel.
+double LoadScale(const PoseMotion& pose, const AppliedLoads& loads) {
+  const double lever = pose.system().length_scale() * pose.metres_per_unit();
+  double scale = 0.0;
+  for (const AppliedLoads::Force& f : loads.forces) scale += f.force.norm() * lever;
+  for (const AppliedLoads::Torque& t : loads.torques) scale += std::abs(t.torque);
+  return pose.system().mechanism().InputIsAngle() ? scale : scale / lever;
+}
+
+}  // namespace
+
+bool ForcesOptions::IsValid(std::string* why) const {
+  if (speed && !std::isfinite(*speed)) {
+    if (why) *why = "the drive speed must be a finite number";
+    return false;
+  }
+  return sweep.IsValid(why);
+}
+
+std::string ForcesResult::Brief() const {
+  int computed = 0;
+  for (const ForcesRow& row : rows) computed += row.computed;
+  std::string brief = std::string(ToString(status)) + (kinetostatic ? " (kinetostatics)" : " (statics)") + ": forces at " +
+                      std::to_string(computed) + " of " + std::to_string(rows.size()) + " samples";
+  if (indeterminate) brief += ", reactions statically indeterminate";
+  return brief;
+}
+
+ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesOptions& options) {
+  ForcesResult result;
+  result.kinetostatic = options.speed.has_value();
+  std::string why;
+  auto fail = [&](std::string message, bool bad_input) {
+    result.status = AnalysisStatus::kFailed;
+    result.message = std::move(message);
+    result.bad_input = bad_input;
+    return result;
+  };
+  if (!options.IsValid(&why)) return fail(why, true);
+  LoadModel model;
+  if (!model.Prepare(m, loads, &why)) return fail(why, true);
+  SweepOptions sweep_options = options.sweep;
+  sweep_options.order = 0;  // the table of outputs is not needed: poses are
+  const SweepResult sweep = Sweep(m, sweep_options);
+  result.sweep = EventsOf(sweep);
+  if (sweep.status == SweepStatus::kNotAssemblable || sweep.status == SweepStatus::kInvalidOptions)
+    return fail(sweep.message, sweep.status == SweepStatus::kInvalidOptions);
+
+  PositionSolver solver(m);
+  result.indeterminate = solver.system().NumEquations() != solver.NumCoordinates();
+  const double speed = options.speed.value_or(0.0);
+  Eigen::MatrixXd series;
+  int missing = 0;
+  for (size_t i = 0; i < sweep.inputs.size(); ++i) {
+    ForcesRow row;
+    row.input = sweep.inputs[i];
+    row.singular = sweep.singular[i] != 0;
+    row.q = sweep.poses.row(i).transpose();
+    auto skip = [&](std::string problem) {
+      row.problem = std::move(problem);
+      ++missing;
+      result.rows.push_back(row);
+    };
+    if (row.singular) {
+      skip("the pose is singular: at a limit point the drive torque to hold the loads is unbounded, at a branch point the "
+           "reactions are not determined");
+      continue;
+    }
+    Eigen::VectorXd& q = row.q;
+    const SolveReport solved = solver.Correct(row.input, q);
+    if (!solved.ok() || !solver.Series(2, series)) {
+      skip("the pose does not solve again: " + solved.message);
+      continue;
+    }
+    const PoseMotion pose(solver.system(), series, loads.metres_per_unit);
+    MotionState state;
+    state.input = row.input;
+    state.speed = speed;
+    state.time = speed != 0.0 ? (row.input - options.sweep.from) / speed : 0.0;
+    AppliedLoads applied;
+    if (!model.Evaluate(pose, state, &applied, &why)) {
+      skip(why);
+      continue;
+    }
+    if (options.speed) applied.Add(InertiaLoads(pose, loads.masses, state));
+    const ReducedInertia inertia = ReduceInertia(pose, loads.masses);
+    row.reduced_inertia = inertia.value;
+    row.reduced_inertia_derivative = inertia.derivative;
+    row.drive_virtual_work = VirtualWorkDrive(applied);
+    row.load_scale = LoadScale(pose, applied);
+    row.virtual_work = true;
+    if (result.indeterminate) {
+      skip("the joint reactions are statically indeterminate (redundant joints)");
+      continue;
+    }
+    Reactions reactions;
+    if (!JointReactions(solver, q, GeneralizedForces(pose, applied), loads.metres_per_unit, &reactions)) {
+      skip("the multipliers could not be solved for at this pose");
+      continue;
+    }
+    row.drive = reactions.drive;
+    row.joints = std::move(reactions.joints);
+    row.computed = true;
+    if (row.load_scale > 0.0)
+      result.worst_disagreement = std::max(result.worst_disagreement, std::abs(row.drive - row.drive_virtual_work) / row.load_scale);
+    result.rows.push_back(std::move(row));
+  }
+
+  if (result.worst_disagreement > kVirtualWorkAgreement)
+    return fail("the drive torque from the joint reactions and by virtual work disagree by " +
+                    std::to_string(result.worst_disagreement) + " of the loads' size: a bug, please report it",
+                false);
+  if (sweep.complete() && missing == 0) {
+    result.status = AnalysisStatus::kComplete;
+    return result;
+  }
+  result.status = AnalysisStatus::kPartial;
+  std::string message;
+  if (missing > 0) message = std::to_string(missing) + " of " + std::to_string(sweep.inputs.size()) + " computed samples have no forces";
+  if (result.indeterminate) message += ": the mechanism has redundant joints, so its joint reactions are statically indeterminate";
+  if (!sweep.complete()) message += (message.empty() ? "" : "; ") + sweep.message;
+  result.message = message;
+  return result;
+}
+
+}  // namespace koppel

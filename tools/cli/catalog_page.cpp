@@ -1,0 +1,93 @@
+// koppel catalog show ID --format html: the entry's page with its kinematic scheme and the plots
+// of its Abtrieb outputs (transfer functions, or the path of a guided point), drawn from the same
+// solver as the checks; the text page below them.
+#include "catalog_command.hpp"
+
+#include "koppel/analysis/coupler_curve.hpp"
+#include "koppel/core/angles.hpp"
+#include "koppel/plot/plots.hpp"
+#include "koppel/plot/sampled_run.hpp"
+#include "koppel/plot/scheme.hpp"
+
+namespace koppel::cli {
+namespace {
+
+std::string Escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+SweepOptions CardRange(const CatalogEntry& e, int order) {
+  const CatalogCard& c = *e.file.card;
+  const bool angle = e.file.mechanism.InputIsAngle();
+  SweepOptions range;
+  range.from = angle ? DegToRad(c.from) : c.from;
+  range.to = angle ? DegToRad(c.to) : c.to;
+  range.step = angle ? DegToRad(c.step) : c.step;
+  range.order = order;
+  return range;
+}
+
+// the scheme at the assembly's input, scaled to hold every pose of the card's sweep
+std::string Scheme(const CatalogEntry& e, std::vector<std::string>* problems) {
+  const Mechanism& m = e.file.mechanism;
+  const plot::SampledRun run = plot::SampleMechanism(m, CardRange(e, 0));
+  if (!run.complete) problems->push_back("scheme: " + run.message);
+  if (run.size() == 0) return "";
+  plot::SchemeScene scene;
+  std::string why;
+  if (!plot::PoseAt(m, run, m.hint.input, &scene.q, &why)) {
+    problems->push_back("scheme: " + why);
+    return "";
+  }
+  for (int i = 0; i < run.size(); ++i) scene.extent.push_back(run.poses.row(i).transpose());
+  scene.caption = e.file.id;
+  return plot::DrawScheme(m, scene);
+}
+
+// one plot per Abtrieb output: a guided point's path, otherwise its transfer functions
+std::string OutputPlot(const CatalogEntry& e, const std::string& name, std::vector<std::string>* problems) {
+  const Mechanism& m = e.file.mechanism;
+  const int output = m.FindOutput(name);
+  plot::PlotResult result;
+  if (m.outputs[output].kind == OutputKind::kPoint) {
+    plot::CurvePlotOptions options;
+    options.point = m.outputs[output].p;
+    options.range = CardRange(e, 2);
+    result = plot::CurvePlot(m, options);
+  } else {
+    plot::TransferPlotOptions options;
+    options.output = output;
+    options.order = 2;
+    options.range = CardRange(e, 2);
+    result = plot::TransferPlot(m, options);
+  }
+  if (result.status != plot::PlotStatus::kComplete) problems->push_back(name + ": " + result.Brief());
+  return result.svg;
+}
+
+}  // namespace
+
+std::string EntryHtml(const CatalogEntry& e, const std::string& text_page, std::vector<std::string>* problems) {
+  const CatalogCard& c = *e.file.card;
+  std::string figures = Scheme(e, problems);
+  for (const std::string& o : c.outputs) figures += OutputPlot(e, o, problems);
+  std::string notes;
+  for (const std::string& p : *problems) notes += "<li>" + Escape(p) + "</li>";
+  return "<!DOCTYPE html>\n<html lang=\"de\"><head><meta charset=\"utf-8\"><title>" + Escape(e.file.id) +
+         "</title>\n<style>body{font-family:sans-serif;max-width:60em;margin:2em auto}svg{max-width:100%;height:auto;"
+         "display:block;margin:1em 0}pre{white-space:pre-wrap}</style></head><body>\n<h1>" + Escape(c.title_de) + "</h1>\n<h2>" +
+         Escape(c.title_en) + "</h2>\n" + (notes.empty() ? "" : "<p>Not everything could be drawn:</p><ul>" + notes + "</ul>\n") +
+         figures + "\n<pre>" + Escape(text_page) + "</pre>\n</body></html>\n";
+}
+
+}  // namespace koppel::cli

@@ -200,7 +200,7 @@ void RunShow(const CatalogArgs& args) {
                            report.Brief() + "\n";
   std::vector<std::string> problems;
   if (args.format == "json") {
-    WriteOutput(args.out, PageJson(e, report).dump(1) + "\n");
+    WriteOutput(args.out, JsonText(PageJson(e, report)));
   } else if (args.format == "html") {
     WriteOutput(args.out, EntryHtml(e, page, &problems));
     for (const std::string& p : problems) Complain(e.file.id + ": " + p);

@@ -15,6 +15,10 @@ void AddSynthCommand(CLI::App& app);
 void AddRangeCommand(CLI::App& app);
 void AddClassifyCommand(CLI::App& app);
 void AddFitSubcommand(CLI::App& synth);  // koppel synth fit
+void AddMotionSubcommand(CLI::App& synth);    // koppel synth motion
+void AddFunctionSubcommand(CLI::App& synth);  // koppel synth function
+void AddPathSubcommand(CLI::App& synth);      // koppel synth path
+void AddAtlasCommand(CLI::App& app);          // koppel atlas build|merge
 void AddPlotCommand(CLI::App& app);  // plot, draw, view: tools/plot
 void AddDrawCommand(CLI::App& app);
 void AddViewCommand(CLI::App& app);

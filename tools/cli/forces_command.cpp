@@ -138,7 +138,7 @@ void RunForces(const ForcesArgs& args) {
     j["worst_disagreement"] = result.worst_disagreement;
     j.update(SweepEventsJson(m, result.sweep));
     if (!result.complete()) j["message"] = result.message;
-    WriteOutput(args.out, j.dump(1) + "\n");
+    WriteOutput(args.out, JsonText(j));
   }
   ReportSweep(args.file, m, result.sweep);
   if (!result.complete()) {

@@ -44,6 +44,7 @@ int Run(int argc, char** argv) {
   koppel::cli::AddViewCommand(app);
   koppel::cli::AddForcesCommand(app);
   koppel::cli::AddSimulateCommand(app);
+  koppel::cli::AddAtlasCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

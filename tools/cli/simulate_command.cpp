@@ -145,7 +145,7 @@ void RunSimulate(const SimulateArgs& args) {
     j["evaluations"] = result.evaluations;
     j["singular_points"] = SingularPointsJson(m, result.singular_points);
     if (!result.complete()) j["message"] = result.message;
-    WriteOutput(args.out, j.dump(1) + "\n");
+    WriteOutput(args.out, JsonText(j));
   }
   ReportSingularPoints(args.file, m, result.singular_points);
   if (!result.complete()) {

@@ -435,6 +435,9 @@ void AddSynthCommand(CLI::App& app) {
   mzc->callback([args] { RunMzc(*args); });
 
   AddFitSubcommand(*cmd);
+  AddMotionSubcommand(*cmd);
+  AddFunctionSubcommand(*cmd);
+  AddPathSubcommand(*cmd);
 }
 
 }  // namespace koppel::cli

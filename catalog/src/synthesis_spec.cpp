@@ -1,0 +1,159 @@
+#include "koppel/catalog/synthesis_spec.hpp"
+
+#include "koppel/catalog/mechanism_file.hpp"
+#include "koppel/core/angles.hpp"
+#include "yaml_reader.hpp"
+
+#include <fmt/core.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace koppel {
+namespace {
+
+// The file's root map, or InputError with the syntax error's position.
+YAML::Node LoadRoot(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({Diagnostic{path, 0, 0, "", "cannot open file"}});
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    return YAML::Load(text.str());
+  } catch (const YAML::Exception& e) {
+    throw InputError({Diagnostic{path, e.mark.line + 1, e.mark.column + 1, "", "YAML syntax error: " + e.msg}});
+  }
+}
+
+// [from, to] with from != to.
+bool Range(YamlReader& r, const YAML::Node& node, const std::string& key, double* from, double* to) {
+  if (!node.IsDefined()) return false;
+  if (!node.IsSequence() || node.size() != 2) {
+    r.Error(node, key, "expected [from, to]");
+    return false;
+  }
+  const auto a = r.Number(node[0], Index(key, 0)), b = r.Number(node[1], Index(key, 1));
+  if (!a || !b) return false;
+  if (*a == *b) {
+    r.Error(node, key, "from and to must differ");
+    return false;
+  }
+  *from = *a;
+  *to = *b;
+  return true;
+}
+
+}  // namespace
+
+MotionSpec ReadMotionSpec(const std::string& path) {
+  const YAML::Node root = LoadRoot(path);
+  MotionSpec spec;
+  spec.path = path;
+  YamlReader r(path, nullptr);
+  r.set_fallback(YAML::Mark());
+  if (!r.ExpectMap(root, "")) throw InputError(r.diagnostics());
+  r.CheckKeys(root, "", {"poses"});
+  const YAML::Node poses = r.Require(root, "poses", "");
+  if (poses.IsDefined() && r.ExpectSequence(poses, "poses")) {
+    if (poses.size() < 2 || poses.size() > 5) r.Error(poses, "poses", fmt::format("expected 2 to 5 poses, found {}", poses.size()));
+    for (size_t i = 0; i < poses.size(); ++i) {
+      const std::string p = Index("poses", static_cast<int>(i));
+      if (!poses[i].IsSequence() || poses[i].size() != 3) {
+        r.Error(poses[i], p, "expected [x, y, angle_deg]");
+        continue;
+      }
+      const auto x = r.Number(poses[i][0], Index(p, 0)), y = r.Number(poses[i][1], Index(p, 1)), a = r.Number(poses[i][2], Index(p, 2));
+      if (x && y && a) spec.poses.push_back({{*x, *y}, DegToRad(*a)});
+    }
+    // two equal poses give no condition
+    for (size_t i = 0; i < spec.poses.size(); ++i) {
+      for (size_t j = i + 1; j < spec.poses.size(); ++j) {
+        if ((spec.poses[i].point - spec.poses[j].point).norm() == 0 && AngleDifference(spec.poses[i].angle, spec.poses[j].angle) == 0)
+          r.Error(poses[j], Index("poses", static_cast<int>(j)), fmt::format("repeats pose {}", i + 1));
+      }
+    }
+  }
+  if (!r.diagnostics().empty()) throw InputError(r.diagnostics());
+  return spec;
+}
+
+FunctionSpec ReadFunctionSpec(const std::string& path) {
+  const YAML::Node root = LoadRoot(path);
+  FunctionSpec spec;
+  spec.path = path;
+  YamlReader r(path, nullptr);
+  r.set_fallback(YAML::Mark());
+  if (!r.ExpectMap(root, "")) throw InputError(r.diagnostics());
+  r.CheckKeys(root, "", {"type", "function", "x", "input", "output", "points", "at", "frame"});
+  FunctionRequest& q = spec.request;
+  if (const YAML::Node type = root["type"]; type.IsDefined()) {
+    const std::string t = r.Text(type, "type").value_or("");
+    if (t == "four-bar") q.type = FunctionGenerator::kFourBar;
+    else if (t == "slider-crank") q.type = FunctionGenerator::kSliderCrank;
+    else r.Error(type, "type", "expected four-bar or slider-crank, found '" + t + "'");
+  }
+  const YAML::Node function = r.Require(root, "function", "");
+  if (function.IsDefined()) spec.formula = r.Text(function, "function").value_or("");
+  const bool ranges = Range(r, r.Require(root, "x", ""), "x", &q.x_from, &q.x_to) &
+                      Range(r, r.Require(root, "input", ""), "input", &q.input_from, &q.input_to) &
+                      Range(r, r.Require(root, "output", ""), "output", &q.output_from, &q.output_to);
+  q.input_from = DegToRad(q.input_from);
+  q.input_to = DegToRad(q.input_to);
+  if (q.type == FunctionGenerator::kFourBar) {
+    q.output_from = DegToRad(q.output_from);
+    q.output_to = DegToRad(q.output_to);
+  }
+  const YAML::Node points = root["points"], at = root["at"];
+  if (points.IsDefined() && at.IsDefined()) r.Error(at, "at", "give points or at, not both");
+  if (points.IsDefined()) {
+    if (const auto n = r.Count(points, "points")) {
+      if (*n < 3 || *n > 1000) r.Error(points, "points", "expected 3 to 1000 precision points");
+      q.points = *n;
+    }
+  }
+  if (at.IsDefined() && r.ExpectSequence(at, "at")) {
+    if (at.size() < 3 || at.size() > 1000) r.Error(at, "at", "expected 3 to 1000 precision points");
+    for (size_t i = 0; i < at.size(); ++i) {
+      const auto x = r.Number(at[i], Index("at", static_cast<int>(i)));
+      if (!x) continue;
+      if (ranges && (*x < std::min(q.x_from, q.x_to) || *x > std::max(q.x_from, q.x_to)))
+        r.Error(at[i], Index("at", static_cast<int>(i)), fmt::format("x = {} lies outside x: [{}, {}]", *x, q.x_from, q.x_to));
+      q.at.push_back(*x);
+    }
+  }
+  if (const YAML::Node frame = root["frame"]; frame.IsDefined()) {
+    if (q.type == FunctionGenerator::kSliderCrank) r.Error(frame, "frame", "a slider-crank has no frame length (its slide is the frame)");
+    if (const auto f = r.Number(frame, "frame")) {
+      if (!(*f > 0)) r.Error(frame, "frame", "expected a positive length");
+      q.frame = *f;
+    }
+  }
+  // the formula: evaluated with x defined, at both ends and at the precision points
+  const std::string formula = spec.formula;
+  q.function = [formula](double x, double* y) {
+    ParameterSet p;
+    p.DefineValue("x", x);
+    std::string error;
+    const std::optional<double> v = p.Evaluate(formula, &error);
+    if (!v) return false;
+    *y = *v;
+    return true;
+  };
+  if (function.IsDefined() && ranges && !formula.empty()) {
+    std::vector<double> xs = {q.x_from, q.x_to};
+    xs.insert(xs.end(), q.at.begin(), q.at.end());
+    for (double x : xs) {
+      ParameterSet p;
+      p.DefineValue("x", x);
+      std::string error;
+      if (!p.Evaluate(formula, &error)) {
+        r.Error(function, "function", fmt::format("cannot evaluate at x = {}: {}", x, error));
+        break;
+      }
+    }
+  }
+  if (!r.diagnostics().empty()) throw InputError(r.diagnostics());
+  return spec;
+}
+
+}  // namespace koppel

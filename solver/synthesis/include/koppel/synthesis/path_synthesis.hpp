@@ -1,0 +1,78 @@
+// Path generation from an atlas (atlas.hpp): the four-bars whose coupler curve passes nearest a
+// set of points. The points' descriptor (their polygon, closed; or for an open target traced
+// there and back) is looked up among the atlas's curves of the same kind (closed curves of
+// cranks, or arcs of rockers) by nearest neighbours (nanoflann's k-d tree), trying the descriptor
+// ambiguity, the reversed traversal and the mirror image. Each candidate is moved onto the points
+// by the similarity the descriptors give, pre-polished in closed form (Ceres on the triangle
+// A B B0, milliseconds), and the best `top` are polished by the least-squares fit (fit.hpp)
+// through the real mechanism: every point a point target of the coupler point with its crank
+// angle free (the timing free), the pivots, link lengths and the coupler point free. The error of
+// a linkage is the RMS of the points' distances from its polished coupler curve (the fit's
+// residuals at the optimal crank angles), in the points' unit.
+#pragma once
+
+#include "koppel/analysis/classification.hpp"
+#include "koppel/core/mechanism.hpp"
+#include "koppel/synthesis/atlas.hpp"
+#include "koppel/synthesis/four_bar_design.hpp"
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+// The atlas's curves in two k-d trees (closed, open). Immutable once built: queries from any thread.
+class AtlasIndex {
+ public:
+  explicit AtlasIndex(std::vector<AtlasEntry> entries);
+  ~AtlasIndex();
+  AtlasIndex(const AtlasIndex&) = delete;
+  AtlasIndex& operator=(const AtlasIndex&) = delete;
+
+  const std::vector<AtlasEntry>& entries() const;
+  // The k entries of the given kind nearest `features` (squared distances ascending).
+  std::vector<std::pair<std::uint32_t, float>> Nearest(const std::array<float, kAtlasFeatures>& features, bool closed, int k) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+struct PathRequest {
+  std::vector<Eigen::Vector2d> points;  // in order along the path
+  bool open = false;                    // an open stretch of a path (matched against rocker arcs)
+  int top = 10;                         // linkages returned
+  int candidates = 0;                   // atlas candidates pre-polished in closed form (0: max(100, 10 top))
+  int threads = 0;                      // polishing threads (0: one per core)
+  bool IsValid(std::string* why) const;
+};
+
+struct PathLinkage {
+  double error = 0;               // RMS distance of the points from the polished curve
+  double descriptor_distance = 0; // of the atlas candidate from the points' descriptor
+  AtlasEntry source;              // the atlas curve it came from
+  bool polished = false;          // the fit ran (else the candidate as the similarity put it)
+  std::string fit;                // the fit's Brief()
+  FourBarGeometry geometry;       // pivots, joints and the coupler point (plane origin) at the first point's pose
+  double crank = 0, coupler = 0, rocker = 0, frame = 0;
+  Eigen::Vector2d coupler_point = Eigen::Vector2d::Zero();  // K in the coupler's frame: along A -> B, and left of it
+  GrashofType grashof = GrashofType::kNotApplicable;
+  Mechanism mechanism;            // four_bar_design.hpp: output "P" is the coupler point
+};
+
+enum class PathStatus { kOk, kNoCandidate, kInvalidRequest };
+const char* ToString(PathStatus status);
+
+struct PathResult {
+  PathStatus status = PathStatus::kInvalidRequest;
+  std::string message;
+  std::vector<PathLinkage> linkages;  // by error, smallest first
+  bool ok() const { return status == PathStatus::kOk; }
+};
+
+PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request);
+
+}  // namespace koppel

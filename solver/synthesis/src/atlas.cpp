@@ -1,0 +1,326 @@
+#include "koppel/synthesis/atlas.hpp"
+
+#include "koppel/core/angles.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <thread>
+
+namespace koppel {
+namespace {
+
+static_assert(std::endian::native == std::endian::little, "the atlas file is written little endian as it lies in memory");
+
+constexpr int kResample = 64;       // points of equal arc length the descriptor is taken from
+constexpr int kTraceSamples = 256;  // points of a curve for its descriptor
+constexpr double kLogLength = 1.6094379124341003;  // log 5: lengths in [1/5, 5]
+constexpr double kShortestArc = kPi / 18;  // 10 deg of crank travel at least
+constexpr char kMagic[12] = {'K', 'O', 'P', 'P', 'E', 'L', '-', 'A', 'T', 'L', 'A', 'S'};
+constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::uint64_t kHeaderBytes = 12 + 4 + 4 + 8;
+constexpr std::uint64_t kEntryBytes = 8 + 8 + 5 * 8 + 4 + kAtlasFeatures * 4;
+
+using Complex = std::complex<double>;
+
+// SplitMix64 (Steele, Lea, Flood 2014): a counter-based seed for entry `index`, so that any
+// shard or thread draws the same entry.
+std::uint64_t Mix(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+// Uniform in [0, 1) from the top 53 bits (the same on every standard library).
+struct Draw {
+  std::uint64_t state;
+  double Next() {
+    state = Mix(state);
+    return static_cast<double>(state >> 11) * 0x1.0p-53;
+  }
+};
+
+// The crank angles at which the loop closes: [lo, hi] (hi - lo < 2 pi) or the full turn.
+struct Feasible {
+  bool any = false, full = false;
+  double lo = 0, hi = 0;
+};
+
+// |A - B0|^2 = a^2 + 1 - 2 a cos(phi) must lie in [(b - c)^2, (b + c)^2].
+Feasible CrankAngles(double a, double b, double c, int side) {
+  Feasible f;
+  const double cmin = (a * a + 1 - (b + c) * (b + c)) / (2 * a), cmax = (a * a + 1 - (b - c) * (b - c)) / (2 * a);
+  if (cmin > cmax || cmin > 1 || cmax < -1) return f;
+  f.any = true;
+  if (cmin <= -1 && cmax >= 1) {
+    f.full = true;
+    f.lo = 0;
+    f.hi = 2 * kPi;
+  } else if (cmin > -1 && cmax < 1) {  // two intervals, mirror images in the frame line
+    f.lo = std::acos(cmax);
+    f.hi = std::acos(cmin);
+    if (side < 0) {
+      f.lo = -std::acos(cmin);
+      f.hi = -std::acos(cmax);
+    }
+  } else if (cmin <= -1) {  // one interval through pi
+    f.lo = std::acos(cmax);
+    f.hi = 2 * kPi - f.lo;
+  } else {  // one interval through 0
+    f.hi = std::acos(cmin);
+    f.lo = -f.hi;
+  }
+  return f;
+}
+
+// B for crank angle phi on `branch`; the triangle's angle clamped at the limit positions, where
+// rounding may leave |cos| a few ulps above 1.
+bool JointB(double a, double b, double c, double phi, int branch, Eigen::Vector2d* pa, Eigen::Vector2d* pb) {
+  *pa = a * Eigen::Vector2d(std::cos(phi), std::sin(phi));
+  const Eigen::Vector2d d = Eigen::Vector2d(1, 0) - *pa;
+  const double r = d.norm();
+  double cos_gamma = (b * b + r * r - c * c) / (2 * b * r);
+  if (!(std::abs(cos_gamma) <= 1 + 1e-9)) return false;
+  cos_gamma = std::clamp(cos_gamma, -1.0, 1.0);
+  const double gamma = std::atan2(d.y(), d.x()) + branch * std::acos(cos_gamma);
+  *pb = *pa + b * Eigen::Vector2d(std::cos(gamma), std::sin(gamma));
+  return true;
+}
+
+void WriteBytes(std::string* out, const void* p, size_t n) { out->append(static_cast<const char*>(p), n); }
+template <class T> void Put(std::string* out, T v) { WriteBytes(out, &v, sizeof v); }
+template <class T> T Get(const char*& p) {
+  T v;
+  std::memcpy(&v, p, sizeof v);
+  p += sizeof v;
+  return v;
+}
+
+}  // namespace
+
+AtlasEntry DrawAtlasEntry(std::uint64_t seed, std::uint64_t index) {
+  Draw draw{Mix(seed) ^ Mix(index + 0x632be59bd9b4e019ULL)};
+  AtlasCurve curve;
+  for (;;) {
+    AtlasEntry e;
+    e.seed = seed;
+    e.index = index;
+    e.crank = std::exp(kLogLength * (2 * draw.Next() - 1));
+    e.coupler = std::exp(kLogLength * (2 * draw.Next() - 1));
+    e.rocker = std::exp(kLogLength * (2 * draw.Next() - 1));
+    e.p = -1 + 3 * draw.Next();
+    e.q = -1.5 + 3 * draw.Next();
+    e.branch = draw.Next() < 0.5 ? 1 : -1;
+    e.side = draw.Next() < 0.5 ? 1 : -1;
+    const Feasible f = CrankAngles(e.crank, e.coupler, e.rocker, e.side);
+    if (!f.any || f.hi - f.lo < kShortestArc) continue;
+    e.closed = f.full ? 1 : 0;
+    CurveDescriptor d;
+    if (!TraceAtlasCurve(e, kTraceSamples, &curve) || !DescribeCurve(curve.coupler_point, &d)) continue;
+    for (int k = 0; k < kAtlasFeatures; ++k) e.descriptor[k] = static_cast<float>(d.features[k]);
+    return e;
+  }
+}
+
+bool TraceAtlasCurve(const AtlasEntry& e, int samples, AtlasCurve* curve) {
+  const Feasible f = CrankAngles(e.crank, e.coupler, e.rocker, e.side);
+  if (!f.any || samples < 3) return false;
+  curve->coupler_point.resize(samples);
+  curve->a.resize(samples);
+  curve->b.resize(samples);
+  curve->crank_angle.resize(samples);
+  const double mid = 0.5 * (f.lo + f.hi), half = 0.5 * (f.hi - f.lo);
+  for (int i = 0; i < samples; ++i) {
+    const double t = 2 * kPi * i / samples;
+    // a full turn: phi = t; an interval: there and back, phi = mid - half cos t (smooth at the limits)
+    const double phi = f.full ? t : mid - half * std::cos(t);
+    Eigen::Vector2d a, b;
+    if (!JointB(e.crank, e.coupler, e.rocker, phi, e.branch, &a, &b)) return false;
+    const Eigen::Vector2d ab = b - a, normal(-ab.y(), ab.x());
+    curve->a[i] = a;
+    curve->b[i] = b;
+    curve->crank_angle[i] = phi;
+    curve->coupler_point[i] = a + e.p * ab + e.q * normal;
+  }
+  return true;
+}
+
+bool DescribeCurve(const std::vector<Eigen::Vector2d>& path, CurveDescriptor* d) {
+  const int n = static_cast<int>(path.size());
+  if (n < 3) return false;
+  // resample at equal arc length along the closed polygon
+  std::vector<double> s(n + 1, 0.0);
+  for (int i = 0; i < n; ++i) s[i + 1] = s[i] + (path[(i + 1) % n] - path[i]).norm();
+  const double total = s[n];
+  double extent = 0;
+  for (const Eigen::Vector2d& p : path) extent = std::max(extent, (p - path[0]).norm());
+  if (!(total > 0) || !(extent > 1e-12 * total) || !std::isfinite(total)) return false;
+  std::vector<Complex> z(kResample);
+  int seg = 0;
+  for (int j = 0; j < kResample; ++j) {
+    const double at = total * j / kResample;
+    while (seg < n - 1 && s[seg + 1] <= at) ++seg;
+    const double w = s[seg + 1] > s[seg] ? (at - s[seg]) / (s[seg + 1] - s[seg]) : 0.0;
+    const Eigen::Vector2d p = (1 - w) * path[seg] + w * path[(seg + 1) % n];
+    z[j] = {p.x(), p.y()};
+  }
+  std::array<Complex, 2 * kAtlasHarmonics + 1> c{};  // c[k + K] = c_k
+  for (int k = -kAtlasHarmonics; k <= kAtlasHarmonics; ++k) {
+    Complex sum = 0;
+    for (int j = 0; j < kResample; ++j) sum += z[j] * std::polar(1.0, -2 * kPi * k * j / kResample);
+    c[k + kAtlasHarmonics] = sum / static_cast<double>(kResample);
+  }
+  auto at = [&](int k) -> Complex& { return c[k + kAtlasHarmonics]; };
+  // traverse so that |c_1| >= |c_-1| (reversing time swaps c_k and c_-k)
+  if (std::abs(at(-1)) > std::abs(at(1))) std::reverse(c.begin(), c.end());
+  d->centre = at(0);
+  d->scale = std::abs(at(1));
+  if (!(d->scale > 1e-12 * total)) return false;
+  // turn by alpha and shift time by tau: c_k -> c_k e^{i(alpha + k tau)}; c_1 and c_-1 real
+  const double alpha = -0.5 * (std::arg(at(1)) + std::arg(at(-1))), tau = -0.5 * (std::arg(at(1)) - std::arg(at(-1)));
+  d->turn = alpha;
+  int f = 0;
+  for (int k = -kAtlasHarmonics; k <= kAtlasHarmonics; ++k) {
+    if (k == 0 || k == 1) continue;
+    const Complex v = at(k) * std::polar(1.0, alpha + k * tau) / d->scale;
+    d->features[f++] = v.real();
+    d->features[f++] = v.imag();
+  }
+  return true;
+}
+
+CurveDescriptor OtherBranchOfAmbiguity(const CurveDescriptor& d) {
+  CurveDescriptor o = d;
+  o.turn = d.turn + kPi;
+  int f = 0;
+  for (int k = -kAtlasHarmonics; k <= kAtlasHarmonics; ++k) {
+    if (k == 0 || k == 1) continue;
+    const double sign = (k + 1) % 2 == 0 ? 1.0 : -1.0;  // e^{i pi (k + 1)}
+    o.features[f] *= sign;
+    o.features[f + 1] *= sign;
+    f += 2;
+  }
+  return o;
+}
+
+bool AtlasBuildOptions::IsValid(std::string* why) const {
+  std::string problem;
+  if (count < 1 || count > kMaxAtlasCurves) problem = fmt::format("count must be between 1 and {}", kMaxAtlasCurves);
+  else if (shards < 1 || shard < 0 || shard >= shards) problem = "the shard k/n needs 0 <= k < n";
+  else if (static_cast<std::uint64_t>(shards) > count) problem = "more shards than curves";
+  else if (threads < 0) problem = "threads must not be negative (0: one per core)";
+  if (why) *why = problem;
+  return problem.empty();
+}
+
+std::vector<AtlasEntry> BuildAtlas(const AtlasBuildOptions& o) {
+  if (!o.IsValid(nullptr)) return {};
+  // indices [first, last) of this shard: every index in exactly one shard
+  const auto bound = [&](int k) { return static_cast<std::uint64_t>((static_cast<unsigned __int128>(o.count) * k) / o.shards); };
+  const std::uint64_t first = bound(o.shard), last = bound(o.shard + 1);
+  std::vector<AtlasEntry> entries(last - first);
+  constexpr std::uint64_t kChunk = 1024;
+  std::atomic<std::uint64_t> next{0};
+  auto work = [&] {
+    for (std::uint64_t start = next.fetch_add(kChunk); start < entries.size(); start = next.fetch_add(kChunk)) {
+      const std::uint64_t end = std::min<std::uint64_t>(start + kChunk, entries.size());
+      for (std::uint64_t i = start; i < end; ++i) entries[i] = DrawAtlasEntry(o.seed, first + i);
+    }
+  };
+  const unsigned threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  return entries;
+}
+
+std::uint64_t AtlasFileSize(std::uint64_t count) { return kHeaderBytes + count * kEntryBytes; }
+
+std::string SerialiseAtlas(const std::vector<AtlasEntry>& entries) {
+  std::string out;
+  out.reserve(AtlasFileSize(entries.size()));
+  WriteBytes(&out, kMagic, sizeof kMagic);
+  Put<std::uint32_t>(&out, kFormatVersion);
+  Put<std::uint32_t>(&out, kAtlasFeatures);
+  Put<std::uint64_t>(&out, entries.size());
+  for (const AtlasEntry& e : entries) {
+    Put(&out, e.seed);
+    Put(&out, e.index);
+    for (double v : {e.crank, e.coupler, e.rocker, e.p, e.q}) Put(&out, v);
+    Put(&out, e.branch);
+    Put(&out, e.side);
+    Put(&out, e.closed);
+    Put<std::uint8_t>(&out, 0);
+    for (float v : e.descriptor) Put(&out, v);
+  }
+  return out;
+}
+
+bool ParseAtlas(const std::string& bytes, std::vector<AtlasEntry>* entries, std::string* error) {
+  if (bytes.size() < kHeaderBytes || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) {
+    *error = "not a koppel atlas (no KOPPEL-ATLAS header)";
+    return false;
+  }
+  const char* p = bytes.data() + sizeof kMagic;
+  const auto version = Get<std::uint32_t>(p), features = Get<std::uint32_t>(p);
+  const auto count = Get<std::uint64_t>(p);
+  if (version != kFormatVersion || features != kAtlasFeatures) {
+    *error = fmt::format("atlas format {} with {} features; this koppel reads format {} with {}", version, features, kFormatVersion, kAtlasFeatures);
+    return false;
+  }
+  if (count > kMaxAtlasCurves || bytes.size() != AtlasFileSize(count)) {
+    *error = fmt::format("the header promises {} curves ({} bytes) but the file has {} bytes (truncated or not an atlas)", count,
+                         count > kMaxAtlasCurves ? 0 : AtlasFileSize(count), bytes.size());
+    return false;
+  }
+  entries->resize(count);
+  for (AtlasEntry& e : *entries) {
+    e.seed = Get<std::uint64_t>(p);
+    e.index = Get<std::uint64_t>(p);
+    e.crank = Get<double>(p);
+    e.coupler = Get<double>(p);
+    e.rocker = Get<double>(p);
+    e.p = Get<double>(p);
+    e.q = Get<double>(p);
+    e.branch = Get<std::int8_t>(p);
+    e.side = Get<std::int8_t>(p);
+    e.closed = Get<std::uint8_t>(p);
+    Get<std::uint8_t>(p);
+    for (float& v : e.descriptor) v = Get<float>(p);
+    bool finite = std::isfinite(e.crank) && std::isfinite(e.coupler) && std::isfinite(e.rocker) && std::isfinite(e.p) && std::isfinite(e.q);
+    for (float v : e.descriptor) finite = finite && std::isfinite(v);
+    if (!finite || !(e.crank > 0 && e.coupler > 0 && e.rocker > 0) || std::abs(e.branch) != 1 || std::abs(e.side) != 1 || e.closed > 1) {
+      *error = fmt::format("entry {} (seed {}, index {}) is malformed", &e - entries->data(), e.seed, e.index);
+      return false;
+    }
+  }
+  return true;
+}
+
+bool MergeAtlases(std::vector<std::vector<AtlasEntry>> parts, std::vector<AtlasEntry>* merged, std::string* error) {
+  std::uint64_t total = 0;
+  for (const auto& part : parts) total += part.size();
+  if (total > kMaxAtlasCurves) {
+    *error = fmt::format("{} curves together: more than {}", total, kMaxAtlasCurves);
+    return false;
+  }
+  merged->clear();
+  merged->reserve(total);
+  for (auto& part : parts) merged->insert(merged->end(), part.begin(), part.end());
+  std::sort(merged->begin(), merged->end(), [](const AtlasEntry& a, const AtlasEntry& b) { return a.seed != b.seed ? a.seed < b.seed : a.index < b.index; });
+  for (size_t i = 1; i < merged->size(); ++i) {
+    if ((*merged)[i].seed == (*merged)[i - 1].seed && (*merged)[i].index == (*merged)[i - 1].index) {
+      *error = fmt::format("curve {} of seed {} appears twice (a shard given twice?)", (*merged)[i].index, (*merged)[i].seed);
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace koppel

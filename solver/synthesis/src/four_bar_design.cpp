@@ -1,0 +1,89 @@
+#include "koppel/synthesis/four_bar_design.hpp"
+
+#include <cmath>
+
+namespace koppel {
+namespace {
+
+double Angle(const Eigen::Vector2d& v) { return std::atan2(v.y(), v.x()); }
+double Cross(const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); }
+
+// A global point in the body frame (origin, angle).
+Eigen::Vector2d Local(const Eigen::Vector2d& global, const Eigen::Vector2d& origin, double angle) {
+  const Eigen::Vector2d d = global - origin;
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * d.x() + s * d.y(), -s * d.x() + c * d.y()};
+}
+
+// A binary link with its body x axis along from -> to.
+Link Bar(const std::string& name, const std::string& from_name, const Eigen::Vector2d& from, const std::string& to_name,
+         const Eigen::Vector2d& to) {
+  Link link;
+  link.name = name;
+  link.points = {{from_name, Eigen::Vector2d::Zero()}, {to_name, Eigen::Vector2d((to - from).norm(), 0.0)}};
+  return link;
+}
+
+}  // namespace
+
+Mechanism DesignedFourBar(const FourBarGeometry& g, const std::string& name) {
+  Mechanism m;
+  m.name = name;
+  Link frame;
+  frame.name = "frame";
+  frame.is_frame = true;
+  frame.points = {{"A0", g.a0}, {"B0", g.b0}};
+  Link coupler;
+  coupler.name = "coupler";
+  coupler.points = {{"A", Local(g.a, g.plane_origin, g.plane_angle)},
+                    {"B", Local(g.b, g.plane_origin, g.plane_angle)},
+                    {"P", Eigen::Vector2d::Zero()}};
+  m.links = {frame, Bar("crank", "A0", g.a0, "A", g.a), coupler, Bar("rocker", "B0", g.b0, "B", g.b)};
+  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3), PinJoint(m, "B0", 0, 3)};
+  // joint angle of A0 = the crank's angle against +x; the input reads `input` in this pose
+  const double crank_angle = Angle(g.a - g.a0);
+  m.drive.joint = 0;
+  m.drive.input_name = "phi";
+  m.drive.zero = crank_angle - g.input.value_or(crank_angle);
+  Output p;
+  p.name = "P";
+  p.kind = OutputKind::kPoint;
+  p.p = {2, 2};
+  Output theta;
+  theta.name = "theta";
+  theta.kind = OutputKind::kLinkAngle;
+  theta.link = 2;
+  Output psi;
+  psi.name = "psi";
+  psi.kind = OutputKind::kLinkAngle;
+  psi.link = 3;
+  const double rocker_angle = Angle(g.b - g.b0);
+  psi.offset = rocker_angle - g.psi.value_or(rocker_angle);
+  Output mu;
+  mu.name = "mu";
+  mu.kind = OutputKind::kTransmissionAngle;
+  mu.link = 2;
+  mu.joint = 2;
+  m.outputs = {p, theta, psi, mu};
+  m.hint.input = g.input.value_or(crank_angle);
+  m.hint.points = {{{1, 1}, g.a}, {{2, 0}, g.a}, {{2, 1}, g.b}, {{2, 2}, g.plane_origin}, {{3, 1}, g.b}};
+  return m;
+}
+
+std::optional<Eigen::Vector2d> FourBarJointB(const Eigen::Vector2d& a, const Eigen::Vector2d& b0, double b, double c, int branch) {
+  const Eigen::Vector2d d = b0 - a;
+  const double r = d.norm();
+  if (!(r > 0)) return std::nullopt;
+  // law of cosines in the triangle A B B0: the angle at A between A -> B0 and A -> B
+  const double cos_gamma = (b * b + r * r - c * c) / (2 * std::abs(b) * r);
+  if (!(cos_gamma >= -1 && cos_gamma <= 1)) return std::nullopt;
+  const double gamma = Angle(d) + branch * std::acos(cos_gamma);
+  return Eigen::Vector2d(a + std::abs(b) * Eigen::Vector2d(std::cos(gamma), std::sin(gamma)));
+}
+
+int FourBarBranch(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& b0) {
+  const double s = Cross(b0 - a, b - a);
+  return s > 0 ? 1 : s < 0 ? -1 : 0;
+}
+
+}  // namespace koppel

@@ -1,0 +1,315 @@
+#include "koppel/synthesis/function_synthesis.hpp"
+
+#include "koppel/core/angles.hpp"
+#include "koppel/solver/sweep.hpp"
+#include "koppel/synthesis/fit.hpp"
+#include "koppel/synthesis/four_bar_design.hpp"
+
+#include <Eigen/Dense>
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace koppel {
+namespace {
+
+// Links shorter than this (relative to the frame, or the output range for a slider-crank) make
+// no mechanism: the precision points are then (nearly) degenerate.
+constexpr double kShortestLink = 1e-9;
+
+// The unknowns of the linear equation: four-bar (a, b, c), slider-crank (a, b, e).
+struct Dimensions {
+  double a = 0, b = 0, third = 0;
+};
+
+// Four-bar with signed crank a and rocker c (body x axes along A0 -> A for a > 0; the link angles
+// are phi and psi either way); B assembled at phi on `branch`.
+std::optional<Mechanism> FourBarAt(const Dimensions& dim, double d, double phi, int branch) {
+  const Eigen::Vector2d a0(0, 0), b0(d, 0), a = dim.a * Eigen::Vector2d(std::cos(phi), std::sin(phi));
+  const std::optional<Eigen::Vector2d> b = FourBarJointB(a, b0, dim.b, dim.third, branch);
+  if (!b) return std::nullopt;
+  Mechanism m;
+  m.name = "function-generator";
+  m.links = {{"frame", true, {{"A0", a0}, {"B0", b0}}},
+             {"crank", false, {{"A0", {0, 0}}, {"A", {dim.a, 0}}}},
+             {"coupler", false, {{"A", {0, 0}}, {"B", {dim.b, 0}}}},
+             {"rocker", false, {{"B0", {0, 0}}, {"B", {dim.third, 0}}}}};
+  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3), PinJoint(m, "B0", 0, 3)};
+  m.drive.joint = 0;
+  Output psi;
+  psi.name = "psi";
+  psi.kind = OutputKind::kLinkAngle;
+  psi.link = 3;
+  Output mu;
+  mu.name = "mu";
+  mu.kind = OutputKind::kTransmissionAngle;
+  mu.link = 2;
+  mu.joint = 2;
+  m.outputs = {psi, mu};
+  m.hint.input = phi;
+  m.hint.points = {{{1, 1}, a}, {{2, 0}, a}, {{2, 1}, *b}, {{3, 1}, *b}};
+  return m;
+}
+
+// Slider-crank: slide along y = e, B = (s, e); B at phi on `branch` (+1: s > a cos phi).
+std::optional<Mechanism> SliderCrankAt(const Dimensions& dim, double phi, int branch) {
+  const double e = dim.third;
+  const Eigen::Vector2d a = dim.a * Eigen::Vector2d(std::cos(phi), std::sin(phi));
+  const double h2 = dim.b * dim.b - std::pow(e - a.y(), 2);
+  if (!(h2 >= 0)) return std::nullopt;
+  const Eigen::Vector2d b(a.x() + branch * std::sqrt(h2), e);
+  Mechanism m;
+  m.name = "function-generator";
+  m.links = {{"frame", true, {{"A0", {0, 0}}, {"F", {0, e}}}},
+             {"crank", false, {{"A0", {0, 0}}, {"A", {dim.a, 0}}}},
+             {"coupler", false, {{"A", {0, 0}}, {"B", {std::abs(dim.b), 0}}}},
+             {"slider", false, {{"B", {0, 0}}}}};
+  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3)};
+  Joint slide;
+  slide.name = "S";
+  slide.type = JointType::kPrismatic;
+  slide.link_a = 0;
+  slide.point_a = 1;
+  slide.link_b = 3;
+  slide.point_b = 0;
+  m.joints.push_back(slide);
+  m.drive.joint = 0;
+  Output s;
+  s.name = "s";
+  s.kind = OutputKind::kJoint;
+  s.joint = 3;
+  Output mu;
+  mu.name = "mu";
+  mu.kind = OutputKind::kTransmissionAngle;
+  mu.link = 2;
+  mu.joint = 2;
+  m.outputs = {s, mu};
+  m.hint.input = phi;
+  m.hint.points = {{{1, 1}, a}, {{2, 0}, a}, {{2, 1}, b}, {{3, 0}, b}};
+  return m;
+}
+
+// The linear equations through the precision points; false for a degenerate solution.
+bool SolveLinear(const FunctionRequest& r, const std::vector<double>& phi, const std::vector<double>& out, Dimensions* dim, std::string* why) {
+  const int n = static_cast<int>(phi.size());
+  Eigen::MatrixXd m(n, 3);
+  Eigen::VectorXd rhs(n);
+  for (int i = 0; i < n; ++i) {
+    if (r.type == FunctionGenerator::kFourBar) {
+      m.row(i) << std::cos(phi[i]), std::cos(out[i]), 1;
+      rhs[i] = std::cos(phi[i] - out[i]);
+    } else {
+      m.row(i) << out[i] * std::cos(phi[i]), std::sin(phi[i]), -1;
+      rhs[i] = out[i] * out[i];
+    }
+  }
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(m);
+  if (qr.rank() < 3) {
+    *why = "the precision points make the linear equations singular";
+    return false;
+  }
+  const Eigen::Vector3d k = qr.solve(rhs);
+  if (r.type == FunctionGenerator::kFourBar) {
+    const double d = r.frame;
+    // R1 = -d/c, R2 = d/a, R3 = (a^2 - b^2 + c^2 + d^2) / (2ac)
+    dim->third = -d / k[0];
+    dim->a = d / k[1];
+    const double b2 = dim->a * dim->a + dim->third * dim->third + d * d - 2 * dim->a * dim->third * k[2];
+    if (!(std::isfinite(dim->a) && std::isfinite(dim->third) && b2 > std::pow(kShortestLink * d, 2))) {
+      *why = "Freudenstein's equation gives no real coupler length for these precision points";
+      return false;
+    }
+    dim->b = std::sqrt(b2);
+  } else {
+    dim->a = k[0] / 2;
+    dim->third = k[1] / k[0];
+    const double b2 = dim->a * dim->a + dim->third * dim->third - k[2];
+    if (!(std::isfinite(dim->a) && std::isfinite(dim->third) && b2 > 0)) {
+      *why = "the slider-crank's equation gives no real coupler length for these precision points";
+      return false;
+    }
+    dim->b = std::sqrt(b2);
+  }
+  return true;
+}
+
+}  // namespace
+
+const char* ToString(FunctionStatus status) {
+  switch (status) {
+    case FunctionStatus::kOk: return "ok";
+    case FunctionStatus::kNotDrivable: return "not drivable over the input range";
+    case FunctionStatus::kNoMechanism: return "no mechanism";
+    case FunctionStatus::kInvalidRequest: return "invalid request";
+  }
+  return "?";
+}
+
+std::string FunctionDesign::Brief() const {
+  std::string text = ToString(status);
+  if (!message.empty()) text += ": " + message;
+  return text;
+}
+
+std::vector<double> ChebyshevPoints(double from, double to, int n) {
+  std::vector<double> x;
+  for (int i = 1; i <= n; ++i) x.push_back(0.5 * (from + to) - 0.5 * (to - from) * std::cos((2 * i - 1) * kPi / (2 * n)));
+  return x;
+}
+
+bool FunctionRequest::IsValid(std::string* why) const {
+  std::string problem;
+  const bool finite = std::isfinite(x_from) && std::isfinite(x_to) && std::isfinite(input_from) && std::isfinite(input_to) &&
+                      std::isfinite(output_from) && std::isfinite(output_to) && std::isfinite(frame);
+  if (!function) problem = "no function";
+  else if (!finite) problem = "the ranges must be finite";
+  else if (x_from == x_to) problem = "the x range is empty";
+  else if (input_from == input_to) problem = "the input range is empty";
+  else if (output_from == output_to) problem = "the output range is empty";
+  else if (!(frame > 0)) problem = "the frame length must be positive";
+  else if (at.empty() && (points < 3 || points > 1000)) problem = "points must be between 3 and 1000";
+  else if (!at.empty() && (at.size() < 3 || at.size() > 1000)) problem = "at: needs between 3 and 1000 precision points";
+  else if (error_samples < 2 || error_samples > 1'000'000) problem = "error_samples must be between 2 and 1000000";
+  if (problem.empty()) {
+    for (double x : at) {
+      if (!(std::isfinite(x) && x >= std::min(x_from, x_to) && x <= std::max(x_from, x_to))) problem = fmt::format("precision point x = {} lies outside the x range", x);
+    }
+  }
+  if (why) *why = problem;
+  return problem.empty();
+}
+
+FunctionDesign SynthesiseFunction(const FunctionRequest& r) {
+  FunctionDesign design;
+  if (!r.IsValid(&design.message)) return design;
+  const bool four_bar = r.type == FunctionGenerator::kFourBar;
+  double y_from = 0, y_to = 0;
+  if (!r.function(r.x_from, &y_from) || !r.function(r.x_to, &y_to) || y_from == y_to) {
+    design.message = "f must be defined at both ends of the x range and differ there";
+    return design;
+  }
+  auto input_of = [&](double x) { return r.input_from + (x - r.x_from) / (r.x_to - r.x_from) * (r.input_to - r.input_from); };
+  auto desired = [&](double x, double* out) {
+    double y = 0;
+    if (!r.function(x, &y)) return false;
+    *out = r.output_from + (y - y_from) / (y_to - y_from) * (r.output_to - r.output_from);
+    return std::isfinite(*out);
+  };
+  design.precision_x = r.at.empty() ? ChebyshevPoints(r.x_from, r.x_to, r.points) : r.at;
+  std::vector<double> phi, out;
+  for (double x : design.precision_x) {
+    double o = 0;
+    if (!desired(x, &o)) {
+      design.message = fmt::format("f is not defined at the precision point x = {}", x);
+      return design;
+    }
+    phi.push_back(input_of(x));
+    out.push_back(o);
+  }
+  Dimensions dim;
+  if (!SolveLinear(r, phi, out, &dim, &design.message)) {
+    design.status = FunctionStatus::kNoMechanism;
+    return design;
+  }
+  // the assembly branch the first precision point puts B on, kept while polishing
+  int branch = 1;
+  if (four_bar) {
+    const Eigen::Vector2d a = dim.a * Eigen::Vector2d(std::cos(phi[0]), std::sin(phi[0]));
+    const Eigen::Vector2d b = Eigen::Vector2d(r.frame, 0) + dim.third * Eigen::Vector2d(std::cos(out[0]), std::sin(out[0]));
+    branch = FourBarBranch(a, b, {r.frame, 0}) >= 0 ? 1 : -1;
+  } else {
+    branch = out[0] >= dim.a * std::cos(phi[0]) ? 1 : -1;
+  }
+  auto build = [&](const Dimensions& d) { return four_bar ? FourBarAt(d, r.frame, phi[0], branch) : SliderCrankAt(d, phi[0], branch); };
+  const double size = four_bar ? r.frame : std::abs(r.output_to - r.output_from);
+  auto usable = [&](const Dimensions& d) { return std::min({std::abs(d.a), std::abs(d.b), four_bar ? std::abs(d.third) : 1e300}) > kShortestLink * size; };
+  if (!usable(dim) || !build(dim)) {
+    design.status = FunctionStatus::kNoMechanism;
+    design.message = "the precision points give a degenerate mechanism (a link of zero length, or it does not close at the first point)";
+    return design;
+  }
+  // more points than unknowns: polish the least-squares design on the true output through the solver
+  if (phi.size() > 3) {
+    const MechanismBuilder builder = [&](const std::vector<double>& v) -> Expected<Mechanism> {
+      const std::optional<Mechanism> built = build({v[0], v[1], v[2]});
+      if (!built) return Expected<Mechanism>::Error("does not close at the first precision point");
+      return *built;
+    };
+    const std::vector<FitParameter> parameters = {{"a", dim.a}, {"b", dim.b}, {"third", dim.third}};
+    std::vector<FitTarget> targets;
+    for (size_t i = 0; i < phi.size(); ++i) {
+      FitTarget t;
+      t.name = fmt::format("x = {}", design.precision_x[i]);
+      t.output = 0;
+      t.input = phi[i];
+      t.value = out[i];
+      targets.push_back(t);
+    }
+    FitOptions options;
+    options.starts = 1;
+    options.threads = 1;
+    options.require_from = std::min(r.input_from, r.input_to);
+    options.require_to = std::max(r.input_from, r.input_to);
+    const FitReport fit = Fit(builder, parameters, targets, options);
+    design.polish_report = fit.Brief();
+    if (!fit.values.empty() && fit.assembles_over_range) {
+      const Dimensions polished{fit.values[0], fit.values[1], fit.values[2]};
+      if (usable(polished) && build(polished)) {
+        dim = polished;
+        design.polished = true;
+      }
+    }
+  }
+  design.mechanism = *build(dim);
+  design.output = 0;
+  design.crank = std::abs(dim.a);
+  design.coupler = std::abs(dim.b);
+  if (four_bar) {
+    design.rocker = std::abs(dim.third);
+    design.frame = r.frame;
+  } else {
+    design.offset = dim.third;
+  }
+  // the structural error over the whole input range, by the solver
+  auto difference = [&](double generated, double wanted) { return four_bar ? AngleDifference(generated, wanted) : generated - wanted; };
+  SweepOptions sweep;
+  sweep.from = r.input_from;
+  sweep.to = r.input_to;
+  sweep.step = (r.input_to - r.input_from) / (r.error_samples - 1);
+  sweep.order = 0;
+  const SweepResult s = Sweep(design.mechanism, sweep);
+  for (size_t i = 0; i < s.inputs.size(); ++i) {
+    StructuralErrorSample e;
+    e.input = s.inputs[i];
+    e.x = r.x_from + (e.input - r.input_from) / (r.input_to - r.input_from) * (r.x_to - r.x_from);
+    if (!desired(e.x, &e.desired)) {
+      design.status = FunctionStatus::kInvalidRequest;
+      design.message = fmt::format("f is not defined at x = {} inside the x range", e.x);
+      return design;
+    }
+    e.generated = s.outputs(static_cast<Eigen::Index>(i), 0);
+    e.error = difference(e.generated, e.desired);
+    design.error_max = std::max(design.error_max, std::abs(e.error));
+    design.error_curve.push_back(e);
+  }
+  std::sort(design.error_curve.begin(), design.error_curve.end(), [&](const auto& u, const auto& v) { return (u.x < v.x) == (r.x_from < r.x_to); });
+  for (size_t i = 0; i < phi.size(); ++i) {
+    SweepOptions at;
+    at.from = at.to = phi[i];
+    at.order = 0;
+    const SweepResult p = Sweep(design.mechanism, at);
+    if (!p.complete()) continue;  // reported through the error curve's status below
+    design.error_at_precision = std::max(design.error_at_precision, std::abs(difference(p.outputs(0, 0), out[i])));
+  }
+  if (!s.complete()) {
+    design.status = FunctionStatus::kNotDrivable;
+    design.message = "the mechanism does not run through the whole input range on its branch: " + s.message;
+    return design;
+  }
+  design.status = FunctionStatus::kOk;
+  return design;
+}
+
+}  // namespace koppel

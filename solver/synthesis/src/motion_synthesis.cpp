@@ -1,0 +1,213 @@
+#include "koppel/synthesis/motion_synthesis.hpp"
+
+#include "koppel/core/angles.hpp"
+#include "koppel/solver/position.hpp"
+#include "koppel/solver/sweep.hpp"
+#include "koppel/synthesis/four_bar_design.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+namespace koppel {
+namespace {
+
+// The 1e-9 of the mechanism's size for the poses; links shorter than this are degenerate.
+constexpr double kPoseTolerance = 1e-9;
+// Samples of the transmission angle over the travel: at most this step [rad] (0.25 deg).
+constexpr double kMuStep = kPi / 720;
+
+double Angle(const Eigen::Vector2d& v) { return std::atan2(v.y(), v.x()); }
+double Positive(double angle) {
+  const double r = std::fmod(angle, 2 * kPi);
+  return r < 0 ? r + 2 * kPi : r;
+}
+
+// The size the tolerances refer to: the longest link or distance between the joints.
+double MechanismSize(const Dyad& crank, const Dyad& rocker) {
+  const Eigen::Vector2d p[] = {crank.centre, crank.circle, rocker.circle, rocker.centre};
+  double size = 0;
+  for (const auto& u : p)
+    for (const auto& v : p) size = std::max(size, (u - v).norm());
+  return size;
+}
+
+// The plane's pose error of the assembled pose q against a pose: distance and angle times size.
+double PoseError(const PositionSolver& solver, const Eigen::VectorXd& q, const Pose& pose, double size) {
+  const ConstraintSystem& s = solver.system();
+  const Eigen::Vector2d p(s.Output(0, 0, q.data()), s.Output(0, 1, q.data()));
+  return std::max((p - pose.point).norm(), std::abs(AngleDifference(s.Output(1, 0, q.data()), pose.angle)) * size);
+}
+
+// The mechanism assembled at pose j from that pose's own geometry (its hint moved there).
+bool AssembleAtPose(const Mechanism& m, const std::vector<Pose>& poses, int j, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                    double input, Eigen::VectorXd* q, double* error, double size) {
+  Mechanism at = m;
+  const Eigen::Vector2d aj = MovePoint(poses[0], poses[j], a), bj = MovePoint(poses[0], poses[j], b);
+  at.hint.input = input;
+  at.hint.points = {{{1, 1}, aj}, {{2, 0}, aj}, {{2, 1}, bj}, {{2, 2}, poses[j].point}, {{3, 1}, bj}};
+  PositionSolver solver(at);
+  q->resize(solver.NumCoordinates());
+  if (!solver.Assemble(*q).ok()) return false;
+  *error = PoseError(solver, *q, poses[j], size);
+  return true;
+}
+
+}  // namespace
+
+bool MotionOptions::IsValid(std::string* why) const {
+  std::string problem;
+  if (threads < 0) problem = "threads must not be negative (0: one per core)";
+  if (why) *why = problem;
+  return problem.empty();
+}
+
+MotionFourBar AnalyseMotionFourBar(const std::vector<Pose>& poses, const Dyad& crank, const Dyad& rocker) {
+  MotionFourBar f;
+  f.crank = crank;
+  f.rocker = rocker;
+  const double size = MechanismSize(crank, rocker);
+  const Eigen::Vector2d a0 = crank.centre, a = crank.circle, b = rocker.circle, b0 = rocker.centre;
+  const double shortest = std::min({(a - a0).norm(), (b - a).norm(), (b0 - b).norm(), (b0 - a0).norm()});
+  if (!(shortest > kPoseTolerance * std::max(size, PoseScale(poses)))) {
+    f.message = "a link of zero length (the two dyads share a point)";
+    return f;
+  }
+  FourBarGeometry g;
+  g.a0 = a0;
+  g.a = a;
+  g.b = b;
+  g.b0 = b0;
+  g.plane_origin = poses[0].point;
+  g.plane_angle = poses[0].angle;
+  f.mechanism = DesignedFourBar(g, "burmester-four-bar");
+  const Mechanism& m = f.mechanism;
+  f.grashof = ClassifyChain(m).grashof;
+
+  // every pose: assembled by the solver from its own geometry, the plane where the pose says
+  const int n = static_cast<int>(poses.size());
+  std::vector<double> phi(n);
+  std::vector<int> branch(n);
+  for (int j = 0; j < n; ++j) {
+    const Eigen::Vector2d aj = MovePoint(poses[0], poses[j], a), bj = MovePoint(poses[0], poses[j], b);
+    phi[j] = Angle(aj - a0);
+    branch[j] = FourBarBranch(aj, bj, b0);
+    Eigen::VectorXd q;
+    double error = 0;
+    if (!AssembleAtPose(m, poses, j, a, b, phi[j], &q, &error, size)) {
+      f.message = fmt::format("the solver does not assemble the four-bar in pose {}", j + 1);
+      return f;
+    }
+    f.pose_error = std::max(f.pose_error, error);
+  }
+  if (f.pose_error > kPoseTolerance * size) {
+    f.message = fmt::format("the coupler misses a pose by {:.3g} (tolerance {:.3g})", f.pose_error, kPoseTolerance * size);
+    return f;
+  }
+  for (int j = 1; j < n; ++j) f.branch_defect = f.branch_defect || branch[j] != branch[0];
+
+  // the drivable range of the first pose's branch and the travel through the poses
+  const InputRange reach = DrivableRange(m, 2 * kPi * 1.05, DegToRad(1));
+  f.crank_turns_fully = !reach.low_limited && !reach.high_limited;
+  std::vector<double> travel(n);  // unwrapped inputs in the sense of travel
+  if (f.crank_turns_fully) {
+    f.drive_from = phi[0];
+    f.drive_to = phi[0] + 2 * kPi;
+    std::vector<double> ccw(n), cw(n);
+    for (int j = 0; j < n; ++j) {
+      ccw[j] = Positive(phi[j] - phi[0]);
+      cw[j] = Positive(phi[0] - phi[j]);
+    }
+    const bool in_ccw = std::is_sorted(ccw.begin(), ccw.end()), in_cw = std::is_sorted(cw.begin(), cw.end());
+    f.order_defect = !in_ccw && !in_cw;
+    const bool sense = in_ccw || (!in_cw && ccw[n - 1] <= cw[n - 1]);  // out of order: the shorter way to the last
+    for (int j = 0; j < n; ++j) travel[j] = phi[0] + (sense ? ccw[j] : -cw[j]);
+  } else {
+    f.drive_from = reach.low;
+    f.drive_to = reach.high;
+    bool reachable = true;
+    for (int j = 0; j < n; ++j) {
+      travel[j] = reach.low + Positive(phi[j] - reach.low);
+      reachable = reachable && travel[j] <= reach.high + 1e-12;
+    }
+    f.branch_defect = f.branch_defect || !reachable;
+    const bool up = std::is_sorted(travel.begin(), travel.end()), down = std::is_sorted(travel.rbegin(), travel.rend());
+    f.order_defect = !up && !down;
+  }
+  f.pose_inputs = travel;
+
+  // driven from the first pose, the crank reaches every other one on its branch
+  PositionSolver solver(m);
+  Eigen::VectorXd q(solver.NumCoordinates());
+  if (!solver.Assemble(q).ok()) {
+    f.message = "the solver does not assemble the four-bar in the first pose";
+    return f;
+  }
+  if (!f.branch_defect) {
+    Continuation path(solver);
+    if (!path.Start(travel[0], q).ok()) {
+      f.message = "the first pose is a singular position";
+      return f;
+    }
+    for (int j = 1; j < n && !f.branch_defect; ++j) {
+      if (!path.AdvanceTo(travel[j], 0.05).ok() || PoseError(solver, path.q(), poses[j], size) > kPoseTolerance * size) {
+        f.branch_defect = true;
+        f.message = fmt::format("driven from the first pose the crank does not reach pose {} (another circuit)", j + 1);
+      }
+    }
+  }
+  // mu_min over the travel from the first pose to the last (on the first pose's branch)
+  SweepOptions sweep;
+  sweep.from = travel[0];
+  sweep.to = travel[n - 1];
+  const double span = std::abs(sweep.to - sweep.from);
+  sweep.step = span > 0 ? span / std::ceil(span / kMuStep) : kMuStep;
+  sweep.order = 0;
+  const SweepResult s = Sweep(m, sweep);
+  const int mu_column = OutputColumn(m, 3, 0, 0);
+  f.mu_min = kPi / 2;
+  for (Eigen::Index r = 0; r < s.outputs.rows(); ++r) f.mu_min = std::min(f.mu_min, s.outputs(r, mu_column));
+  if (!s.complete() && f.message.empty()) f.message = "mu_min only over the part of the travel the branch reaches: " + s.message;
+  f.passes = true;
+  return f;
+}
+
+MotionResult FourBarsFromDyads(const std::vector<Pose>& poses, const std::vector<Dyad>& dyads, const MotionOptions& options) {
+  std::vector<std::pair<int, int>> pairs;
+  for (int i = 0; i < static_cast<int>(dyads.size()); ++i) {
+    for (int j = 0; j < static_cast<int>(dyads.size()); ++j) {
+      if (i == j || (!options.both_drives && j < i)) continue;
+      pairs.push_back({i, j});
+    }
+  }
+  std::vector<MotionFourBar> all(pairs.size());
+  std::atomic<size_t> next{0};
+  auto work = [&] {
+    for (size_t k = next++; k < pairs.size(); k = next++) all[k] = AnalyseMotionFourBar(poses, dyads[pairs[k].first], dyads[pairs[k].second]);
+  };
+  const unsigned threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  MotionResult result;
+  for (MotionFourBar& f : all) {
+    if (!f.passes) {
+      // a shared point is no four-bar, not a failed one
+      if (f.message.rfind("a link of zero length", 0) == 0) continue;
+      ++result.failed;
+      result.failures.push_back(f.message);
+    } else if (options.require_crank && !f.crank_turns_fully) {
+      ++result.rejected;
+    } else {
+      result.four_bars.push_back(std::move(f));
+    }
+  }
+  std::stable_sort(result.four_bars.begin(), result.four_bars.end(), [](const MotionFourBar& x, const MotionFourBar& y) { return x.mu_min > y.mu_min; });
+  return result;
+}
+
+}  // namespace koppel

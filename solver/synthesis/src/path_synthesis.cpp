@@ -1,0 +1,351 @@
+#include "koppel/synthesis/path_synthesis.hpp"
+
+#include "koppel/core/angles.hpp"
+#include "koppel/synthesis/fit.hpp"
+
+#include "path_prepolish.hpp"
+
+#include <fmt/core.h>
+#include <nanoflann.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <optional>
+#include <thread>
+
+namespace koppel {
+
+// The features of one kind of curve as nanoflann's dataset (rows of the entries' descriptors).
+struct FeatureRows {
+  const std::vector<AtlasEntry>* entries = nullptr;
+  std::vector<std::uint32_t> rows;  // entry index of each row
+  size_t kdtree_get_point_count() const { return rows.size(); }
+  float kdtree_get_pt(size_t row, size_t dim) const { return (*entries)[rows[row]].descriptor[dim]; }
+  template <class Box> bool kdtree_get_bbox(Box&) const { return false; }
+};
+using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, FeatureRows>, FeatureRows, kAtlasFeatures, std::uint32_t>;
+
+struct AtlasIndex::Impl {
+  std::vector<AtlasEntry> entries;
+  FeatureRows closed, open;
+  std::unique_ptr<Tree> closed_tree, open_tree;
+};
+
+AtlasIndex::AtlasIndex(std::vector<AtlasEntry> entries) : impl_(std::make_unique<Impl>()) {
+  impl_->entries = std::move(entries);
+  impl_->closed.entries = impl_->open.entries = &impl_->entries;
+  for (std::uint32_t i = 0; i < impl_->entries.size(); ++i) (impl_->entries[i].closed ? impl_->closed : impl_->open).rows.push_back(i);
+  // leaves of 16: the usual balance of tree depth against brute force at the leaves
+  const nanoflann::KDTreeSingleIndexAdaptorParams params(16);
+  if (!impl_->closed.rows.empty()) impl_->closed_tree = std::make_unique<Tree>(kAtlasFeatures, impl_->closed, params);
+  if (!impl_->open.rows.empty()) impl_->open_tree = std::make_unique<Tree>(kAtlasFeatures, impl_->open, params);
+}
+
+AtlasIndex::~AtlasIndex() = default;
+
+const std::vector<AtlasEntry>& AtlasIndex::entries() const { return impl_->entries; }
+
+std::vector<std::pair<std::uint32_t, float>> AtlasIndex::Nearest(const std::array<float, kAtlasFeatures>& features, bool closed, int k) const {
+  const Tree* tree = closed ? impl_->closed_tree.get() : impl_->open_tree.get();
+  const FeatureRows& rows = closed ? impl_->closed : impl_->open;
+  if (!tree || k < 1) return {};
+  std::vector<std::uint32_t> found(k);
+  std::vector<float> distance(k);
+  const size_t n = tree->knnSearch(features.data(), k, found.data(), distance.data());
+  std::vector<std::pair<std::uint32_t, float>> result;
+  for (size_t i = 0; i < n; ++i) result.push_back({rows.rows[found[i]], distance[i]});
+  return result;
+}
+
+namespace {
+
+using Complex = std::complex<double>;
+
+// Samples of an atlas curve for placing a candidate on the points.
+constexpr int kCandidateSamples = 720;
+// Rounds of re-timing in the pre-polish (each a closed-form fit of a few milliseconds).
+constexpr int kRetimings = 4;
+
+// One way of reading the points: mirrored or not, with its descriptor.
+struct Reading {
+  bool mirror = false;
+  CurveDescriptor descriptor;
+};
+
+// Which atlas entry, read which way.
+struct Candidate {
+  std::uint32_t entry = 0;
+  float distance = 0;
+  Reading reading;
+};
+
+double Scale(const std::vector<Eigen::Vector2d>& points) {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  for (const auto& p : points) centre += p / static_cast<double>(points.size());
+  double s = 0;
+  for (const auto& p : points) s = std::max(s, (p - centre).norm());
+  return s;
+}
+
+double Angle(const Eigen::Vector2d& v) { return std::atan2(v.y(), v.x()); }
+
+// The four-bar of the fit's unknowns: A0, B0, a, b, c, K (in the coupler frame), at crank angle
+// phi on `branch`.
+struct Placement {
+  double phi = 0;
+  int branch = 1;
+  std::optional<FourBarGeometry> Geometry(const std::vector<double>& v) const {
+    const Eigen::Vector2d a0(v[0], v[1]), b0(v[2], v[3]);
+    const Eigen::Vector2d a = a0 + v[4] * Eigen::Vector2d(std::cos(phi), std::sin(phi));
+    const std::optional<Eigen::Vector2d> b = FourBarJointB(a, b0, v[5], v[6], branch);
+    if (!b || !((*b - a).norm() > 0) || !(v[4] > 0)) return std::nullopt;
+    const Eigen::Vector2d u = (*b - a).normalized(), left(-u.y(), u.x());
+    FourBarGeometry g;
+    g.a0 = a0;
+    g.a = a;
+    g.b = *b;
+    g.b0 = b0;
+    g.plane_origin = a + v[7] * u + v[8] * left;
+    g.plane_angle = Angle(u);
+    return g;
+  }
+};
+
+// A candidate laid onto the points, pre-polished in closed form.
+struct Placed {
+  Placement placement;
+  std::vector<double> unknowns, inputs;
+  double error = std::numeric_limits<double>::infinity();
+};
+
+std::optional<Placed> Place(const AtlasIndex& atlas, const Candidate& c, const PathRequest& request) {
+  const AtlasEntry& entry = atlas.entries()[c.entry];
+  AtlasCurve curve;
+  CurveDescriptor own;
+  if (!TraceAtlasCurve(entry, kCandidateSamples, &curve) || !DescribeCurve(curve.coupler_point, &own)) return std::nullopt;
+  // the similarity that lays the atlas curve onto the points (then the mirror, if read so)
+  const CurveDescriptor& q = c.reading.descriptor;
+  const Complex rho = std::polar(q.scale / own.scale, own.turn - q.turn);
+  auto place = [&](const Eigen::Vector2d& p) {
+    const Complex z = q.centre + rho * (Complex(p.x(), p.y()) - own.centre);
+    return c.reading.mirror ? Eigen::Vector2d(z.real(), -z.imag()) : Eigen::Vector2d(z.real(), z.imag());
+  };
+  const Eigen::Vector2d a0 = place({0, 0}), b0 = place({1, 0});
+  std::vector<Eigen::Vector2d> k(kCandidateSamples);
+  for (int i = 0; i < kCandidateSamples; ++i) k[i] = place(curve.coupler_point[i]);
+  auto nearest = [&](const Eigen::Vector2d& p) {
+    int best = 0;
+    for (int i = 1; i < kCandidateSamples; ++i)
+      if ((k[i] - p).squaredNorm() < (k[best] - p).squaredNorm()) best = i;
+    return best;
+  };
+  // assembled where the first point is (closed), or mid-way between the limit positions (open)
+  const int hint = request.open ? kCandidateSamples / 4 : nearest(request.points[0]);
+  const Eigen::Vector2d a = place(curve.a[hint]), b = place(curve.b[hint]), kh = k[hint];
+  const Eigen::Vector2d u = (b - a).normalized(), left(-u.y(), u.x());
+  Placed out;
+  out.placement.phi = Angle(a - a0);
+  out.placement.branch = FourBarBranch(a, b, b0) >= 0 ? 1 : -1;
+  out.unknowns = {a0.x(), a0.y(), b0.x(), b0.y(), (a - a0).norm(), (b - a).norm(), (b - b0).norm(), (kh - a).dot(u), (kh - a).dot(left)};
+  for (const Eigen::Vector2d& p : request.points) {
+    const double phi = Angle(place(curve.a[nearest(p)]) - a0);
+    out.inputs.push_back(out.placement.phi + AngleDifference(phi, out.placement.phi));
+  }
+  out.error = PrePolish(request.points, out.placement.branch, &out.unknowns, &out.inputs);
+  if (!std::isfinite(out.error)) return std::nullopt;
+  // the timing is where free-timing fits get stuck: give each point the crank angle of its nearest
+  // point on the polished curve and polish again, while that helps
+  for (int round = 0; round < kRetimings; ++round) {
+    std::vector<double> unknowns = out.unknowns, inputs = out.inputs;
+    for (size_t i = 0; i < inputs.size(); ++i) {
+      double best = std::numeric_limits<double>::infinity();
+      for (int j = 0; j < kCandidateSamples; ++j) {
+        const double phi = out.placement.phi + 2 * kPi * j / kCandidateSamples - kPi;
+        Eigen::Vector2d p;
+        if (!CouplerPointAt(unknowns, out.placement.branch, phi, &p)) continue;
+        if ((p - request.points[i]).squaredNorm() < best) {
+          best = (p - request.points[i]).squaredNorm();
+          inputs[i] = phi;
+        }
+      }
+    }
+    const double error = PrePolish(request.points, out.placement.branch, &unknowns, &inputs);
+    if (!(error < 0.99 * out.error)) break;
+    out.error = error;
+    out.unknowns = unknowns;
+    out.inputs = inputs;
+  }
+  // the crank angles stay within a turn of the assembly's (the fit walks there by continuation)
+  for (double& phi : out.inputs) phi = out.placement.phi + AngleDifference(phi, out.placement.phi);
+  return out;
+}
+
+// The final polish by the fit through the real mechanism, from the pre-polished start.
+std::optional<PathLinkage> Polish(const Placed& placed, const Candidate& c, const AtlasEntry& entry, const PathRequest& request, double scale) {
+  const Placement placement = placed.placement;
+  std::vector<FitParameter> parameters;
+  const char* names[] = {"A0_x", "A0_y", "B0_x", "B0_y", "crank", "coupler", "rocker", "K_along", "K_left"};
+  for (int j = 0; j < 9; ++j) {
+    FitParameter p{names[j], placed.unknowns[j]};
+    if (j >= 4 && j <= 6) p.lower = std::min(1e-6 * scale, p.start);  // link lengths stay positive
+    parameters.push_back(p);
+  }
+  std::vector<FitTarget> targets;
+  for (size_t i = 0; i < request.points.size(); ++i) {
+    FitTarget t;
+    t.name = fmt::format("point {}", i + 1);
+    t.output = 0;
+    t.point = true;
+    t.position = request.points[i];
+    t.input_free = true;
+    t.input = placed.inputs[i];
+    targets.push_back(t);
+  }
+  const MechanismBuilder builder = [placement](const std::vector<double>& v) -> Expected<Mechanism> {
+    const std::optional<FourBarGeometry> g = placement.Geometry(v);
+    if (!g) return Expected<Mechanism>::Error("the loop does not close at the assembly's crank angle");
+    return DesignedFourBar(*g, "path-linkage");
+  };
+  FitOptions options;
+  options.starts = 1;
+  options.threads = 1;
+  options.length_tolerance = 1e-9 * scale;  // only the report's verdict: the error is what counts
+  const FitReport fit = Fit(builder, parameters, targets, options);
+  if (fit.values.empty()) return std::nullopt;
+  const std::optional<FourBarGeometry> g = placement.Geometry(fit.values);
+  if (!g) return std::nullopt;
+  PathLinkage l;
+  double sum = 0;
+  for (const FitTargetResult& t : fit.targets) sum += t.residual * t.residual;
+  l.error = std::sqrt(sum / fit.targets.size());
+  l.descriptor_distance = std::sqrt(c.distance);
+  l.source = entry;
+  l.polished = true;
+  l.fit = fit.Brief();
+  l.geometry = *g;
+  l.mechanism = DesignedFourBar(*g, "path-linkage");
+  l.crank = fit.values[4];
+  l.coupler = fit.values[5];
+  l.rocker = fit.values[6];
+  l.frame = (g->b0 - g->a0).norm();
+  l.coupler_point = {fit.values[7], fit.values[8]};
+  l.grashof = ClassifyChain(l.mechanism).grashof;
+  return l;
+}
+
+// Runs job(i) for i < n on `threads` threads.
+void OnEveryCore(size_t n, int threads_wanted, const std::function<void(size_t)>& job) {
+  std::atomic<size_t> next{0};
+  auto work = [&] {
+    for (size_t i = next++; i < n; i = next++) job(i);
+  };
+  const unsigned threads = threads_wanted > 0 ? threads_wanted : std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+}
+
+}  // namespace
+
+const char* ToString(PathStatus status) {
+  switch (status) {
+    case PathStatus::kOk: return "ok";
+    case PathStatus::kNoCandidate: return "no candidate";
+    case PathStatus::kInvalidRequest: return "invalid request";
+  }
+  return "?";
+}
+
+bool PathRequest::IsValid(std::string* why) const {
+  std::string problem;
+  if (points.size() < 4) problem = "at least four points";
+  else if (points.size() > 10'000) problem = "at most 10000 points";
+  else if (top < 1 || top > 1000) problem = "top must be between 1 and 1000";
+  else if (candidates < 0 || candidates > 10'000) problem = "candidates must be between 0 and 10000";
+  else if (threads < 0) problem = "threads must not be negative (0: one per core)";
+  for (const Eigen::Vector2d& p : points)
+    if (problem.empty() && !p.allFinite()) problem = "every point must be finite";
+  if (why) *why = problem;
+  return problem.empty();
+}
+
+PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
+  PathResult result;
+  if (!request.IsValid(&result.message)) return result;
+  QuietSolverLog();
+  const double scale = Scale(request.points);
+  if (!(scale > 0)) {
+    result.message = "the points coincide";
+    return result;
+  }
+  // the readings: mirrored or not, traversed either way, both sides of the ambiguity
+  std::vector<Reading> readings;
+  for (bool mirror : {false, true}) {
+    for (bool reverse : {false, true}) {
+      std::vector<Eigen::Vector2d> path = request.points;
+      if (mirror)
+        for (auto& p : path) p.y() = -p.y();
+      if (reverse) std::reverse(path.begin(), path.end());
+      if (request.open)  // there and back, like the atlas's arcs
+        for (size_t i = request.points.size() - 1; i-- > 1;) path.push_back(path[i]);
+      CurveDescriptor d;
+      if (!DescribeCurve(path, &d)) continue;
+      readings.push_back({mirror, d});
+      readings.push_back({mirror, OtherBranchOfAmbiguity(d)});
+    }
+  }
+  if (readings.empty()) {
+    result.message = "the points have no extent along a path";
+    return result;
+  }
+  const int wanted = request.candidates > 0 ? request.candidates : std::max(100, 10 * request.top);
+  std::map<std::uint32_t, Candidate> best;
+  for (const Reading& r : readings) {
+    std::array<float, kAtlasFeatures> f;
+    for (int i = 0; i < kAtlasFeatures; ++i) f[i] = static_cast<float>(r.descriptor.features[i]);
+    for (const auto& [entry, distance] : atlas.Nearest(f, !request.open, wanted)) {
+      auto it = best.find(entry);
+      if (it == best.end() || distance < it->second.distance) best[entry] = {entry, distance, r};
+    }
+  }
+  std::vector<Candidate> candidates;
+  for (const auto& [entry, c] : best) candidates.push_back(c);
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
+  if (candidates.size() > static_cast<size_t>(wanted)) candidates.resize(wanted);
+  if (candidates.empty()) {
+    result.status = PathStatus::kNoCandidate;
+    result.message = request.open ? "the atlas holds no open curves (rocker arcs)" : "the atlas holds no closed curves";
+    return result;
+  }
+  // every candidate pre-polished in closed form; the best `top` polished through the mechanism
+  std::vector<std::optional<Placed>> placed(candidates.size());
+  OnEveryCore(candidates.size(), request.threads, [&](size_t i) { placed[i] = Place(atlas, candidates[i], request); });
+  std::vector<size_t> order;
+  for (size_t i = 0; i < placed.size(); ++i)
+    if (placed[i]) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return placed[a]->error < placed[b]->error; });
+  if (order.size() > static_cast<size_t>(request.top)) order.resize(request.top);
+  std::vector<std::optional<PathLinkage>> polished(order.size());
+  OnEveryCore(order.size(), request.threads, [&](size_t i) {
+    const Candidate& c = candidates[order[i]];
+    polished[i] = Polish(*placed[order[i]], c, atlas.entries()[c.entry], request, scale);
+  });
+  for (auto& l : polished)
+    if (l) result.linkages.push_back(std::move(*l));
+  std::stable_sort(result.linkages.begin(), result.linkages.end(), [](const PathLinkage& a, const PathLinkage& b) { return a.error < b.error; });
+  if (result.linkages.size() > static_cast<size_t>(request.top)) result.linkages.resize(request.top);
+  if (result.linkages.empty()) {
+    result.status = PathStatus::kNoCandidate;
+    result.message = fmt::format("none of the {} nearest atlas curves could be polished onto the points", candidates.size());
+    return result;
+  }
+  result.status = PathStatus::kOk;
+  return result;
+}
+
+}  // namespace koppel

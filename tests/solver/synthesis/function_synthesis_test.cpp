@@ -1,0 +1,163 @@
+// Function generation on the classic exercises of Freudenstein's method (y = log10 x over
+// 1 <= x <= 10 and y = x^2 over 0 <= x <= 1, three Chebyshev points; e.g. Shigley & Uicker,
+// Theory of Machines and Mechanisms, ch. 10, and Hartenberg & Denavit, Kinematic Synthesis of
+// Linkages, ch. 11), crank over 60 deg and rocker over 90 deg. References: the structural error is re-evaluated here in closed form (the
+// triangle A B B0 of the designed lengths, the branch followed by continuity), independent of
+// the solver that the library's error curve comes from.
+#include "koppel/synthesis/function_synthesis.hpp"
+
+#include "koppel/core/angles.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+namespace koppel {
+namespace {
+
+constexpr double kExact = 1e-9;       // exact through the precision points: solver precision, far below 1e-9
+constexpr double kSameCurve = 1e-9;   // closed form and solver agree on every sample
+
+FunctionRequest Request(std::function<bool(double, double*)> f, double x0, double x1, double in0, double in1, double out0, double out1) {
+  FunctionRequest r;
+  r.function = std::move(f);
+  r.x_from = x0;
+  r.x_to = x1;
+  r.input_from = DegToRad(in0);
+  r.input_to = DegToRad(in1);
+  r.output_from = DegToRad(out0);
+  r.output_to = DegToRad(out1);
+  return r;
+}
+
+bool Log10(double x, double* y) {
+  if (!(x > 0)) return false;
+  *y = std::log10(x);
+  return true;
+}
+bool Square(double x, double* y) {
+  *y = x * x;
+  return true;
+}
+
+// The rocker angle of the designed four-bar at crank angle phi in closed form: the signed local
+// x of A on the crank and of B on the rocker, B on the side nearest `previous_b`.
+double ClosedFormPsi(const Mechanism& m, double phi, Eigen::Vector2d* previous_b) {
+  const double a = m.links[1].points[1].local.x(), b = m.links[2].points[1].local.x(), c = m.links[3].points[1].local.x();
+  const Eigen::Vector2d b0 = m.links[0].points[1].local, pa = a * Eigen::Vector2d(std::cos(phi), std::sin(phi));
+  const Eigen::Vector2d d = b0 - pa;
+  const double r = d.norm(), cos_gamma = (b * b + r * r - c * c) / (2 * b * r);
+  REQUIRE(std::abs(cos_gamma) <= 1);
+  Eigen::Vector2d best;
+  double nearest = 1e300;
+  for (int side : {-1, 1}) {
+    const double g = std::atan2(d.y(), d.x()) + side * std::acos(cos_gamma);
+    const Eigen::Vector2d pb = pa + b * Eigen::Vector2d(std::cos(g), std::sin(g));
+    if ((pb - *previous_b).norm() < nearest) {
+      nearest = (pb - *previous_b).norm();
+      best = pb;
+    }
+  }
+  *previous_b = best;
+  const Eigen::Vector2d rocker = (best - b0) / c;  // signed c: the rocker's body x axis
+  return std::atan2(rocker.y(), rocker.x());
+}
+
+void CheckAgainstClosedForm(const FunctionRequest& r, const FunctionDesign& d) {
+  const Mechanism& m = d.mechanism;
+  Eigen::Vector2d b = m.hint.points[2].global;
+  double worst = 0, largest = 0;
+  for (const StructuralErrorSample& e : d.error_curve) {  // in x order = input order here
+    const double psi = ClosedFormPsi(m, e.input, &b);
+    double y = 0;
+    REQUIRE(r.function(e.x, &y));
+    double y0 = 0, y1 = 0;
+    r.function(r.x_from, &y0);
+    r.function(r.x_to, &y1);
+    const double wanted = r.output_from + (y - y0) / (y1 - y0) * (r.output_to - r.output_from);
+    worst = std::max(worst, std::abs(AngleDifference(psi, e.generated)));
+    largest = std::max(largest, std::abs(AngleDifference(psi, wanted)));
+  }
+  CHECK(worst <= kSameCurve);
+  CHECK(std::abs(largest - d.error_max) <= kSameCurve);
+}
+
+}  // namespace
+
+TEST_CASE("log10 x over 1..10, three Chebyshev points: exact at the points, the error maximum re-evaluated", "[function]") {
+  const FunctionRequest r = Request(Log10, 1, 10, 15, 75, 105, 195);
+  const FunctionDesign d = SynthesiseFunction(r);
+  INFO(d.Brief());
+  REQUIRE(d.ok());
+  REQUIRE(d.precision_x.size() == 3);
+  CHECK(d.error_at_precision <= kExact);
+  CHECK(d.error_max > 1e-4);  // three points cannot make log10 exact everywhere
+  CHECK(d.error_curve.size() == 361);
+  CheckAgainstClosedForm(r, d);
+  // the Chebyshev points themselves: x_i = 5.5 - 4.5 cos((2i - 1) pi / 6)
+  CHECK_THAT(d.precision_x[0], Catch::Matchers::WithinAbs(5.5 - 4.5 * std::cos(kPi / 6), 1e-12));
+  CHECK_THAT(d.precision_x[1], Catch::Matchers::WithinAbs(5.5, 1e-12));
+}
+
+TEST_CASE("x^2 over 0..1, three Chebyshev points and points given by `at`", "[function]") {
+  FunctionRequest r = Request(Square, 0, 1, 165, 225, 240, 330);
+  const FunctionDesign d = SynthesiseFunction(r);
+  INFO(d.Brief());
+  REQUIRE(d.ok());
+  CHECK(d.error_at_precision <= kExact);
+  CheckAgainstClosedForm(r, d);
+  r.at = {0.1, 0.5, 0.9};
+  const FunctionDesign at = SynthesiseFunction(r);
+  REQUIRE(at.ok());
+  CHECK(at.error_at_precision <= kExact);
+  CheckAgainstClosedForm(r, at);
+}
+
+TEST_CASE("more points: least squares polished through the mechanism does not get worse", "[function]") {
+  FunctionRequest r = Request(Log10, 1, 10, 15, 75, 105, 195);
+  r.points = 6;
+  const FunctionDesign d = SynthesiseFunction(r);
+  INFO(d.Brief() << " " << d.polish_report);
+  REQUIRE(d.ok());
+  CHECK(d.polished);
+  CheckAgainstClosedForm(r, d);
+  r.points = 3;
+  const FunctionDesign three = SynthesiseFunction(r);
+  // six points in the least-squares sense spread the error: the maximum stays of the same order
+  CHECK(d.error_max < 3 * three.error_max);
+}
+
+TEST_CASE("slider-crank: s = x^2 exact at three points", "[function]") {
+  FunctionRequest r = Request(Square, 0, 1, 40, 130, 0, 0);
+  r.type = FunctionGenerator::kSliderCrank;
+  r.output_from = 1.0;
+  r.output_to = 2.0;
+  const FunctionDesign d = SynthesiseFunction(r);
+  INFO(d.Brief());
+  REQUIRE(d.ok());
+  CHECK(d.error_at_precision <= kExact * 2);
+  CHECK(d.error_max > 1e-6);
+  // independent: the slider position in closed form, s = a cos phi + sqrt(b^2 - (e - a sin phi)^2) on the branch of the first point
+  const Mechanism& m = d.mechanism;
+  const double a = m.links[1].points[1].local.x(), b = m.links[2].points[1].local.x(), e = m.links[0].points[1].local.y();
+  const double side = m.hint.points[2].global.x() >= a * std::cos(m.hint.input) ? 1 : -1;
+  double worst = 0;
+  for (const StructuralErrorSample& s : d.error_curve) {
+    const double closed = a * std::cos(s.input) + side * std::sqrt(b * b - std::pow(e - a * std::sin(s.input), 2));
+    worst = std::max(worst, std::abs(closed - s.generated));
+  }
+  CHECK(worst <= kSameCurve);
+}
+
+TEST_CASE("function requests that make no mechanism are refused with a reason", "[function]") {
+  FunctionRequest r = Request(Log10, 1, 10, 15, 75, 105, 195);
+  r.points = 2;
+  CHECK(SynthesiseFunction(r).status == FunctionStatus::kInvalidRequest);
+  r.points = 3;
+  r.x_from = 0;  // log10 0 undefined
+  const FunctionDesign d = SynthesiseFunction(r);
+  CHECK(d.status == FunctionStatus::kInvalidRequest);
+  CHECK_THAT(d.message, Catch::Contains("defined"));
+}
+
+}  // namespace koppel

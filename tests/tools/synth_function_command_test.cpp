@@ -1,0 +1,68 @@
+// `koppel synth function` end to end: log10 x by a four-bar and x^2 by a slider-crank
+// (tests/data/function-*.yaml); the error curve's largest |error| is error_max, it vanishes at
+// the precision points, and the mechanism file sweeps through the range.
+#include "support/run.hpp"
+#include "support/temp_file.hpp"
+#include "support/text.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <sstream>
+
+namespace koppel {
+
+TEST_CASE("synth function log10: the rows, the error curve and the mechanism", "[cli][function]") {
+  test::TempDir dir;
+  const std::string curve = (dir.path() / "error.csv").string(), yaml = (dir.path() / "gen.yaml").string();
+  const test::RunResult r = test::RunKoppel("synth function " + test::TestDataPath("function-log10.yaml") + " --error-curve " + curve + " -o " + yaml);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto s = test::ParseSummary(r.out);
+  for (const char* key : {"crank", "coupler", "rocker", "frame", "error_max"}) CHECK(s.count(key) == 1);
+  CHECK(s.size() == 5);
+  CHECK(s.at("frame") == 1);
+  // error_max is the curve's largest |error|; at x = 5.5 (a Chebyshev point) the error vanishes
+  std::istringstream in(test::ReadText(curve));
+  std::string line;
+  std::getline(in, line);
+  CHECK(line == "x,crank,desired,generated,error");
+  double largest = 0, at_middle = 1;
+  while (std::getline(in, line)) {
+    double x, crank, desired, generated, error;
+    char c;
+    std::istringstream cells(line);
+    cells >> x >> c >> crank >> c >> desired >> c >> generated >> c >> error;
+    largest = std::max(largest, std::abs(error));
+    if (std::abs(x - 5.5) < 1e-9) at_middle = std::abs(error);
+  }
+  CHECK(largest == Approx(s.at("error_max")).epsilon(1e-9));
+  CHECK(at_middle <= 1e-7);  // degrees
+  CHECK(test::RunKoppel("analyze " + yaml + " --step 5").exit_code == 0);
+}
+
+TEST_CASE("synth function slider-crank prints crank, coupler, offset and error_max", "[cli][function]") {
+  const test::RunResult r = test::RunKoppel("synth function " + test::TestDataPath("function-square-slider.yaml"));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto s = test::ParseSummary(r.out);
+  CHECK(s.count("offset") == 1);
+  CHECK(s.at("error_max") > 0);
+}
+
+TEST_CASE("synth function refuses bad specs with the line", "[cli][function]") {
+  test::TempDir dir;
+  const test::RunResult unknown = test::RunKoppel(
+      "synth function " + dir.Write("f.yaml", "function: log10(x)\nx: [1, 10]\ninput: [15, 75]\noutput: [105, 195]\npoints: 3\nsteps: 4\n"));
+  CHECK(unknown.exit_code == 2);
+  CHECK_THAT(unknown.err, Catch::Contains("f.yaml:6:"));
+  const test::RunResult undefined =
+      test::RunKoppel("synth function " + dir.Write("g.yaml", "function: log10(x)\nx: [-1, 10]\ninput: [15, 75]\noutput: [105, 195]\n"));
+  CHECK(undefined.exit_code == 2);
+  const test::RunResult both =
+      test::RunKoppel("synth function " + dir.Write("h.yaml", "function: x^2\nx: [0, 1]\ninput: [15, 75]\noutput: [105, 195]\npoints: 3\nat: [0.1, 0.5, 0.9]\n"));
+  CHECK(both.exit_code == 2);
+  CHECK_THAT(both.err, Catch::Contains("h.yaml:6:") && Catch::Contains("not both"));
+}
+
+}  // namespace koppel

@@ -1,0 +1,126 @@
+// `koppel synth motion` end to end on poses of a known crank-rocker's coupler (tests/data/
+// motion-*-poses.yaml, read off koppel's sweep of A0 (0, 0), A (1, 0.2), B (3.1, 2.4),
+// B0 (4, 0.3)): the known four-bar is among the rows, every written mechanism file analyses
+// through the poses again (koppel analyze), and bad requests exit 2.
+#include "support/run.hpp"
+#include "support/temp_file.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <sstream>
+
+namespace koppel {
+namespace {
+
+constexpr double kRecovered = 1e-9;
+
+struct Row {
+  std::vector<double> numbers;  // the eight coordinates
+  std::string grashof;
+  int branch_defect = 0, order_defect = 0;
+  double mu_min = 0;
+};
+
+std::vector<Row> Rows(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  REQUIRE(line == "A0_x,A0_y,A_x,A_y,B_x,B_y,B0_x,B0_y,grashof,branch_defect,order_defect,mu_min");
+  std::vector<Row> rows;
+  while (std::getline(in, line)) {
+    std::istringstream cells(line);
+    std::string cell;
+    Row r;
+    for (int i = 0; i < 8 && std::getline(cells, cell, ','); ++i) r.numbers.push_back(std::stod(cell));
+    std::getline(cells, r.grashof, ',');
+    std::getline(cells, cell, ',');
+    r.branch_defect = std::stoi(cell);
+    std::getline(cells, cell, ',');
+    r.order_defect = std::stoi(cell);
+    std::getline(cells, cell, ',');
+    r.mu_min = std::stod(cell);
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+bool IsKnown(const Row& r) {
+  const double known[] = {0, 0, 1, 0.2, 3.1, 2.4, 4, 0.3};
+  for (int i = 0; i < 8; ++i)
+    if (std::abs(r.numbers[i] - known[i]) > kRecovered) return false;
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("synth motion recovers the known four-bar from 3, 4 and 5 poses", "[cli][motion]") {
+  const std::string three = test::TestDataPath("motion-three-poses.yaml"), four = test::TestDataPath("motion-four-poses.yaml"),
+                    five = test::TestDataPath("motion-five-poses.yaml");
+  for (const std::string& request : {three + " --circle-point 1,0.2 --circle-point 3.1,2.4", four + " --circle-point 1,0.2 --circle-point 3.1,2.4", five}) {
+    INFO(request);
+    const test::RunResult r = test::RunKoppel("synth motion " + request);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::vector<Row> rows = Rows(r.out);
+    int known = 0;
+    for (size_t i = 0; i < rows.size(); ++i) {
+      if (i > 0) CHECK(rows[i].mu_min <= rows[i - 1].mu_min);  // sorted by mu_min
+      if (!IsKnown(rows[i])) continue;
+      ++known;
+      CHECK(rows[i].grashof == "crank-rocker");
+      CHECK(rows[i].branch_defect == 0);
+      CHECK(rows[i].order_defect == 0);
+    }
+    CHECK(known == 1);
+  }
+}
+
+TEST_CASE("synth motion -o writes mechanism files whose coupler meets the poses again", "[cli][motion]") {
+  test::TempDir dir;
+  const test::RunResult r = test::RunKoppel("synth motion " + test::TestDataPath("motion-five-poses.yaml") + " --require crank -o " + dir.path().string());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const std::vector<Row> rows = Rows(r.out);
+  REQUIRE(!rows.empty());
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const std::string file = (dir.path() / ("four-bar-" + std::to_string(i + 1) + ".yaml")).string();
+    // the file reads back and turns fully (--require crank)
+    const test::RunResult c = test::RunKoppel("classify " + file);
+    INFO(c.out << c.err);
+    CHECK(c.exit_code == 0);
+    CHECK_THAT(c.out, Catch::Contains(rows[i].grashof));
+  }
+}
+
+TEST_CASE("synth motion: four poses write the Burmester curves", "[cli][motion]") {
+  test::TempDir dir;
+  const std::string curves = (dir.path() / "curves.csv").string();
+  const test::RunResult r = test::RunKoppel("synth motion " + test::TestDataPath("motion-four-poses.yaml") + " --samples 6 --top 3 --curves " + curves);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(Rows(r.out).size() <= 3);
+  const std::string text = test::ReadText(curves);
+  CHECK(text.rfind("direction,centre_x,centre_y,circle_x,circle_y\n", 0) == 0);
+  CHECK(std::count(text.begin(), text.end(), '\n') > 360);
+}
+
+TEST_CASE("synth motion refuses bad requests", "[cli][motion]") {
+  test::TempDir dir;
+  const std::string three = test::TestDataPath("motion-three-poses.yaml");
+  CHECK(test::RunKoppel("synth motion " + three).exit_code == 2);  // no circle point, no grid
+  CHECK(test::RunKoppel("synth motion " + three + " --circle-point 1").exit_code == 2);
+  CHECK(test::RunKoppel("synth motion " + three + " --grid 3 --require rocker").exit_code == 2);
+  const test::RunResult six = test::RunKoppel("synth motion " + dir.Write("six.yaml", "poses: [[0,0,0],[1,0,1],[2,0,2],[3,0,3],[4,0,4],[5,0,5]]\n"));
+  CHECK(six.exit_code == 2);
+  CHECK_THAT(six.err, Catch::Contains("six.yaml:1:8") && Catch::Contains("2 to 5 poses"));
+  const test::RunResult bad = test::RunKoppel("synth motion " + dir.Write("bad.yaml", "poses:\n  - [0, 0, 0]\n  - [1, 0]\n"));
+  CHECK(bad.exit_code == 2);
+  CHECK_THAT(bad.err, Catch::Contains("bad.yaml:3:") && Catch::Contains("[x, y, angle_deg]"));
+  // a circle point off the circle-point curve of four poses has no centre point
+  const test::RunResult off = test::RunKoppel("synth motion " + test::TestDataPath("motion-four-poses.yaml") + " --circle-point 0.5,0.5");
+  CHECK(off.exit_code == 1);
+  CHECK_THAT(off.err, Catch::Contains("not on the circle-point curve"));
+}
+
+}  // namespace koppel

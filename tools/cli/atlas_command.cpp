@@ -1,0 +1,122 @@
+// koppel atlas build|merge: the coupler-curve atlas of path synthesis (atlas.hpp).
+#include "commands.hpp"
+#include "common.hpp"
+
+#include "koppel/synthesis/atlas.hpp"
+#include "atlas_file.hpp"
+
+#include <fmt/core.h>
+
+#include <chrono>
+#include <iostream>
+
+namespace koppel::cli {
+namespace {
+
+struct Args {
+  std::string count, seed = "1", shard, out, threads;
+  std::vector<std::string> inputs;
+  bool quiet = false;
+};
+
+std::uint64_t WholeNumber(const std::string& flag, const std::string& text, std::uint64_t hi) {
+  std::size_t used = 0;
+  std::uint64_t v = 0;
+  try {
+    v = std::stoull(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || v > hi || text[0] == '-') {
+    Complain(fmt::format("{}: expected a whole number from 0 to {}, found '{}'", flag, hi, text));
+    throw Exit{kExitBadInput};
+  }
+  return v;
+}
+
+void RequireOutput(const Args& args) {
+  if (args.out.empty() || args.out == "-") {
+    Complain("-o ATLAS is required (the atlas is a binary file)");
+    throw Exit{kExitBadInput};
+  }
+}
+
+void Build(const Args& args) {
+  RequireOutput(args);
+  AtlasBuildOptions o;
+  o.count = WholeNumber("--count", args.count, kMaxAtlasCurves);
+  o.seed = WholeNumber("--seed", args.seed, UINT64_MAX);
+  if (!args.shard.empty()) {
+    const auto slash = args.shard.find('/');
+    if (slash == std::string::npos) {
+      Complain("--shard: expected k/n (0 <= k < n), found '" + args.shard + "'");
+      throw Exit{kExitBadInput};
+    }
+    o.shard = static_cast<int>(WholeNumber("--shard", args.shard.substr(0, slash), 1'000'000));
+    o.shards = static_cast<int>(WholeNumber("--shard", args.shard.substr(slash + 1), 1'000'000));
+  }
+  if (!args.threads.empty()) o.threads = static_cast<int>(WholeNumber("--threads", args.threads, 1024));
+  if (std::string why; !o.IsValid(&why)) {
+    Complain(why);
+    throw Exit{kExitBadInput};
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<AtlasEntry> entries = BuildAtlas(o);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  WriteOutput(args.out, SerialiseAtlas(entries));
+  std::size_t closed = 0;
+  for (const AtlasEntry& e : entries) closed += e.closed;
+  if (!args.quiet)
+    std::cerr << fmt::format("koppel atlas build: {} curves ({} closed, {} rocker arcs) of seed {}, shard {}/{}, in {:.2f} s\n", entries.size(), closed,
+                             entries.size() - closed, o.seed, o.shard, o.shards, seconds);
+}
+
+void Merge(const Args& args) {
+  RequireOutput(args);
+  if (args.inputs.empty()) {
+    Complain("atlas merge: name the atlases to merge");
+    throw Exit{kExitBadInput};
+  }
+  std::vector<std::vector<AtlasEntry>> parts;
+  for (const std::string& path : args.inputs) parts.push_back(ReadAtlasFile(path));
+  std::vector<AtlasEntry> merged;
+  std::string error;
+  if (!MergeAtlases(std::move(parts), &merged, &error)) {
+    Complain("atlas merge: " + error);
+    throw Exit{kExitBadInput};
+  }
+  WriteOutput(args.out, SerialiseAtlas(merged));
+  if (!args.quiet) std::cerr << fmt::format("koppel atlas merge: {} curves from {} atlases\n", merged.size(), args.inputs.size());
+}
+
+}  // namespace
+
+void AddAtlasCommand(CLI::App& app) {
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand("atlas", "The coupler-curve atlas of path synthesis (koppel synth path): build it, merge shards.");
+  cmd->require_subcommand(1);
+  CLI::App* build = cmd->add_subcommand(
+      "build",
+      "Draws N four-bars from the documented space (README, 'Path synthesis': link ratios log-uniform in [1/5, 5],\n"
+      "coupler points over a box around the coupler, Grashof and non-Grashof alike) and stores each coupler curve's\n"
+      "normalised Fourier descriptor with its dimensions. Entry i of seed S is the same whoever draws it: --shard k/n\n"
+      "draws the k-th of n equal parts of the N (k from 0), so n machines or jobs build the parts and `atlas merge` joins\n"
+      "them into the very atlas one `build` would write. Uses every core (--threads).\n"
+      "Example: koppel atlas build --count 100000 -o atlas.bin");
+  build->add_option("--count", args->count, "Curves in the whole atlas (every shard together)")->required();
+  build->add_option("--seed", args->seed, "Seed of the draws (default 1)");
+  build->add_option("--shard", args->shard, "k/n: build only the k-th of n parts (0 <= k < n)");
+  build->add_option("-o,--output", args->out, "The atlas file to write")->required();
+  build->add_option("--threads", args->threads, "Threads (default: one per core)");
+  build->add_flag("--quiet", args->quiet, "No summary on stderr");
+  build->callback([args] { Build(*args); });
+  CLI::App* merge = cmd->add_subcommand("merge",
+                                        "Joins atlases (the shards of one build, or builds of different seeds) into one, ordered by seed and\n"
+                                        "index; refuses a curve that appears twice. Example: koppel atlas merge part0.bin part1.bin -o atlas.bin");
+  merge->add_option("atlases", args->inputs, "The atlas files")->required();
+  merge->add_option("-o,--output", args->out, "The merged atlas file")->required();
+  merge->add_flag("--quiet", args->quiet, "No summary on stderr");
+  merge->callback([args] { Merge(*args); });
+}
+
+}  // namespace koppel::cli

@@ -1,0 +1,38 @@
+#include "atlas_file.hpp"
+
+#include "common.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace koppel::cli {
+
+std::vector<AtlasEntry> ReadAtlasFile(const std::string& path) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec) {
+    Complain(path + ": cannot read the atlas (" + ec.message() + ")");
+    throw Exit{kExitBadInput};
+  }
+  // a size no atlas has is refused before it is read
+  if (size > AtlasFileSize(kMaxAtlasCurves)) {
+    Complain(path + ": larger than any atlas koppel writes");
+    throw Exit{kExitBadInput};
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(size, '\0');
+  if (!in.read(bytes.data(), static_cast<std::streamsize>(size))) {
+    Complain(path + ": cannot read the atlas");
+    throw Exit{kExitBadInput};
+  }
+  std::vector<AtlasEntry> entries;
+  std::string error;
+  if (!ParseAtlas(bytes, &entries, &error)) {
+    Complain(path + ": " + error);
+    throw Exit{kExitBadInput};
+  }
+  return entries;
+}
+
+}  // namespace koppel::cli

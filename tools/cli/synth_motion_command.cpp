@@ -1,0 +1,233 @@
+// koppel synth motion: Burmester motion generation (burmester.hpp, motion_synthesis.hpp).
+#include "commands.hpp"
+#include "common.hpp"
+
+#include "koppel/catalog/mechanism_writer.hpp"
+#include "koppel/catalog/synthesis_spec.hpp"
+#include "koppel/core/angles.hpp"
+#include "koppel/synthesis/motion_synthesis.hpp"
+
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <iostream>
+
+namespace koppel::cli {
+namespace {
+
+struct Args {
+  std::string poses, dir, out, curves, require, crank_turn = "90", grid, samples = "18", top, threads;
+  std::vector<std::string> circle_points;
+};
+
+Eigen::Vector2d ParsePoint(const std::string& flag, const std::string& text) {
+  const auto comma = text.find(',');
+  if (comma == std::string::npos) {
+    Complain(flag + ": expected X,Y, found '" + text + "'");
+    throw Exit{kExitBadInput};
+  }
+  return {ParseNumberFlag(flag, text.substr(0, comma)), ParseNumberFlag(flag, text.substr(comma + 1))};
+}
+
+int Whole(const std::string& flag, const std::string& text, int lo, int hi) {
+  const double v = ParseNumberFlag(flag, text);
+  if (v != std::floor(v) || v < lo || v > hi) {
+    Complain(fmt::format("{} must be a whole number from {} to {}", flag, lo, hi));
+    throw Exit{kExitBadInput};
+  }
+  return static_cast<int>(v);
+}
+
+// Circle points on an n x n grid over the poses' box, enlarged by their size each way.
+std::vector<Eigen::Vector2d> Grid(const std::vector<Pose>& poses, int n) {
+  Eigen::Vector2d lo = poses[0].point, hi = poses[0].point;
+  for (const Pose& p : poses) {
+    lo = lo.cwiseMin(p.point);
+    hi = hi.cwiseMax(p.point);
+  }
+  const double margin = PoseScale(poses);
+  lo.array() -= margin;
+  hi.array() += margin;
+  std::vector<Eigen::Vector2d> points;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) points.push_back(lo + Eigen::Vector2d((hi.x() - lo.x()) * (i + 0.5) / n, (hi.y() - lo.y()) * (j + 0.5) / n));
+  return points;
+}
+
+// The dyads the request asks for, by the number of poses.
+std::vector<Dyad> Dyads(const Args& args, const std::vector<Pose>& poses) {
+  const int n = static_cast<int>(poses.size());
+  std::vector<Eigen::Vector2d> circle;
+  for (const std::string& c : args.circle_points) circle.push_back(ParsePoint("--circle-point", c));
+  if (!args.grid.empty()) {
+    if (n != 3) {
+      Complain("--grid is for three poses (a family of dyads from a grid of circle points)");
+      throw Exit{kExitBadInput};
+    }
+    for (const Eigen::Vector2d& p : Grid(poses, Whole("--grid", args.grid, 1, 100))) circle.push_back(p);
+  }
+  std::vector<Dyad> dyads;
+  if (n == 5) {
+    if (!circle.empty()) {
+      Complain("five poses fix the dyads (the Ball-Burmester points): no --circle-point");
+      throw Exit{kExitBadInput};
+    }
+    const BallBurmester bb = BallBurmesterPoints(poses);
+    if (!bb.message.empty()) Complain(args.poses + ": " + bb.message);
+    return bb.dyads;
+  }
+  if (n == 4 && circle.empty()) {
+    const BurmesterCurves curves = CentrePointCurve(poses, Whole("--samples", args.samples, 1, 1000), false);
+    if (!curves.ok()) {
+      Complain(args.poses + ": " + curves.message);
+      throw Exit{kExitFailed};
+    }
+    for (const BurmesterCurveSample& s : curves.samples) dyads.push_back(s.dyad);
+    return dyads;
+  }
+  if (circle.empty()) {
+    Complain(n == 2 ? "two poses: give the circle points (--circle-point X,Y, twice for a four-bar)"
+                    : "three poses: give --circle-point X,Y (twice for a four-bar) or --grid N");
+    throw Exit{kExitBadInput};
+  }
+  const double turn = n == 2 ? DegToRad(ParseNumberFlag("--crank-turn", args.crank_turn)) : 0;
+  for (const Eigen::Vector2d& c : circle) {
+    const CentrePointResult r = n == 2 ? CentrePointTwoPoses(poses, c, turn) : CentrePoint(poses, c);
+    if (r.ok()) {
+      dyads.push_back(r.dyad);
+    } else if (args.grid.empty() || r.status == BurmesterStatus::kInvalidRequest) {
+      Complain(fmt::format("circle point ({}, {}): {}", c.x(), c.y(), r.message));
+      throw Exit{r.status == BurmesterStatus::kInvalidRequest ? kExitBadInput : kExitFailed};
+    }
+  }
+  return dyads;
+}
+
+// The four-poses curves as a CSV: one row per sample.
+void WriteCurves(const Args& args, const std::vector<Pose>& poses) {
+  if (poses.size() != 4) {
+    Complain("--curves is for four poses (the centre-point and circle-point curves)");
+    throw Exit{kExitBadInput};
+  }
+  const BurmesterCurves curves = CentrePointCurve(poses, 360);
+  if (!curves.ok()) {
+    Complain(args.poses + ": " + curves.message);
+    throw Exit{kExitFailed};
+  }
+  Table t;
+  t.columns = {"direction", "centre_x", "centre_y", "circle_x", "circle_y"};
+  for (const BurmesterCurveSample& s : curves.samples)
+    t.rows.push_back({RadToDeg(s.direction), s.dyad.centre.x(), s.dyad.centre.y(), s.dyad.circle.x(), s.dyad.circle.y()});
+  WriteOutput(args.curves, t.ToCsv());
+}
+
+std::string Comment(const MotionFourBar& f, int rank, const std::string& poses) {
+  const bool full = f.crank_turns_fully;
+  return fmt::format("Four-bar {} of koppel synth motion {} (Burmester). The coupler is the moving plane: its point P and\n"
+                     "its angle theta pass through every pose (re-analysis error {:.3g}). Grashof type {}; branch defect {}; order\n"
+                     "defect {}; the input phi (crank angle against +x) {}; mu_min over the poses' travel {:.6g} deg.\n"
+                     "Crank angles of the poses: {} deg.",
+                     rank, poses, f.pose_error, ToString(f.grashof), f.branch_defect ? "yes" : "no", f.order_defect ? "yes" : "no",
+                     full ? "turns fully" : fmt::format("reaches {:.6g} .. {:.6g} deg on this branch", RadToDeg(f.drive_from), RadToDeg(f.drive_to)),
+                     RadToDeg(f.mu_min), [&] {
+                       std::string s;
+                       for (double v : f.pose_inputs) s += fmt::format("{}{:.6g}", s.empty() ? "" : ", ", RadToDeg(v));
+                       return s;
+                     }());
+}
+
+void Run(const Args& args) {
+  MotionSpec spec;
+  try {
+    spec = ReadMotionSpec(args.poses);
+  } catch (const InputError& e) {
+    for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
+    throw Exit{kExitBadInput};
+  }
+  MotionOptions options;
+  if (!args.require.empty()) {
+    if (args.require != "crank") {
+      Complain("--require: only 'crank' (the input turns fully)");
+      throw Exit{kExitBadInput};
+    }
+    options.require_crank = true;
+  }
+  if (!args.threads.empty()) options.threads = Whole("--threads", args.threads, 0, 1024);
+  const int top = args.top.empty() ? 0 : Whole("--top", args.top, 1, 1'000'000);
+  if (!args.curves.empty()) WriteCurves(args, spec.poses);
+  const std::vector<Dyad> dyads = Dyads(args, spec.poses);
+  if (dyads.size() > 2000) {
+    Complain(fmt::format("{} dyads make {} four-bars: fewer, please (--grid, --samples)", dyads.size(), dyads.size() * (dyads.size() - 1)));
+    throw Exit{kExitBadInput};
+  }
+  const MotionResult result = FourBarsFromDyads(spec.poses, dyads, options);
+  std::cerr << fmt::format("koppel synth motion: {} poses, {} dyads, {} four-bars re-analysed through every pose{}\n", spec.poses.size(),
+                           dyads.size(), result.four_bars.size(),
+                           options.require_crank ? fmt::format(", {} without a crank left out", result.rejected) : "");
+  Table table;
+  table.columns = {"A0_x", "A0_y", "A_x", "A_y", "B_x", "B_y", "B0_x", "B0_y", "grashof", "branch_defect", "order_defect", "mu_min"};
+  std::string csv;
+  for (size_t i = 0; i < table.columns.size(); ++i) csv += (i ? "," : "") + table.columns[i];
+  csv += "\n";
+  const size_t shown = top > 0 ? std::min<size_t>(top, result.four_bars.size()) : result.four_bars.size();
+  if (!args.dir.empty()) std::filesystem::create_directories(args.dir);
+  for (size_t i = 0; i < shown; ++i) {
+    const MotionFourBar& f = result.four_bars[i];
+    for (double v : {f.crank.centre.x(), f.crank.centre.y(), f.crank.circle.x(), f.crank.circle.y(), f.rocker.circle.x(), f.rocker.circle.y(),
+                     f.rocker.centre.x(), f.rocker.centre.y()})
+      csv += FormatNumber(v) + ",";
+    csv += fmt::format("{},{},{},{}\n", ToString(f.grashof), f.branch_defect ? 1 : 0, f.order_defect ? 1 : 0, FormatNumber(RadToDeg(f.mu_min)));
+    if (!args.dir.empty()) {
+      const SweepDefaults sweep = f.crank_turns_fully ? SweepDefaults{RadToDeg(f.drive_from), RadToDeg(f.drive_from) + 360, 1}
+                                                      : SweepDefaults{RadToDeg(f.drive_from), RadToDeg(f.drive_to), (RadToDeg(f.drive_to) - RadToDeg(f.drive_from)) / 360};
+      Mechanism m = f.mechanism;
+      m.name = fmt::format("four-bar-{}", i + 1);
+      WriteOutput((std::filesystem::path(args.dir) / (m.name + ".yaml")).string(), WriteMechanismYaml(m, Comment(f, static_cast<int>(i + 1), args.poses), sweep));
+    }
+  }
+  WriteOutput(args.out, csv);
+  for (const std::string& failure : result.failures) Complain("a four-bar failed its re-analysis: " + failure);
+  if (result.failed > 0) throw Exit{kExitFailed};
+  if (result.four_bars.empty()) {
+    Complain(dyads.empty() ? "no dyad meets the poses" : "no four-bar meets the request");
+    throw Exit{kExitFailed};
+  }
+}
+
+}  // namespace
+
+void AddMotionSubcommand(CLI::App& synth) {
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = synth.add_subcommand(
+      "motion",
+      "Motion generation (Burmester): four-bars whose coupler carries a plane through 2 to 5 poses, given in POSES.yaml as\n"
+      "`poses: [[x, y, angle_deg], ...]` (a reference point of the plane and its angle, global). A dyad is a circle point\n"
+      "A of the plane (global, in the first pose) and its centre point A0; two dyads make a four-bar driven at A0.\n"
+      "  2 poses: --circle-point (twice); the centre point on the bisector where the crank turns by --crank-turn (90 deg).\n"
+      "  3 poses: --circle-point: its centre point (the circumcentre of its three positions); --grid N: a family of dyads\n"
+      "    from an N x N grid of circle points over the poses.\n"
+      "  4 poses: --curves FILE writes the centre-point and circle-point curves (CSV); the dyads are --circle-point (it\n"
+      "    must lie on the circle-point curve) or --samples N lines through a pole (up to two dyads each).\n"
+      "  5 poses: the Ball-Burmester points (at most four real ones, from the resultant of two circular cubics).\n"
+      "Every pair of dyads (either one driven) is re-analysed by the solver: the coupler's point and angle must meet every pose\n"
+      "to 1e-9 of the four-bar's size. One CSV row per four-bar, by mu_min (largest first): pivots and circle points in the\n"
+      "first pose, the Grashof type, branch defect (poses on different assembly branches, or not reachable driving the\n"
+      "crank), order defect (driven one way, the crank meets the poses out of order), mu_min [deg] over the travel from the\n"
+      "first pose to the last. --require crank keeps the four-bars whose input turns fully; -o DIR writes each as a\n"
+      "mechanism file (four-bar-1.yaml, ...; the comment gives the drivable range). Exit 1 when no four-bar results.\n"
+      "Example: koppel synth motion poses.yaml --circle-point 1,0.2 --circle-point 3.1,2.4 -o designs");
+  cmd->add_option("poses", args->poses, "POSES.yaml")->required();
+  cmd->add_option("--circle-point", args->circle_points, "A circle point X,Y (first pose, global); repeat for more");
+  cmd->add_option("--grid", args->grid, "Three poses: dyads from an N x N grid of circle points");
+  cmd->add_option("--samples", args->samples, "Four poses: lines through the pole the dyads are picked on (default 18)");
+  cmd->add_option("--curves", args->curves, "Four poses: write the Burmester curves to this CSV file");
+  cmd->add_option("--crank-turn", args->crank_turn, "Two poses: the crank's turn between them [deg] (default 90)");
+  cmd->add_option("--require", args->require, "crank: keep only four-bars whose input turns fully");
+  cmd->add_option("--top", args->top, "Print (and write) only the best N");
+  cmd->add_option("-o,--dir", args->dir, "Write each four-bar as a mechanism file into this directory");
+  cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout");
+  cmd->add_option("--threads", args->threads, "Threads for the re-analyses (default: one per core)");
+  cmd->callback([args] { Run(*args); });
+}
+
+}  // namespace koppel::cli

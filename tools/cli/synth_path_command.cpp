@@ -1,0 +1,150 @@
+// koppel synth path: path generation from an atlas (path_synthesis.hpp).
+#include "commands.hpp"
+#include "common.hpp"
+
+#include "atlas_file.hpp"
+#include "koppel/catalog/mechanism_writer.hpp"
+#include "koppel/core/angles.hpp"
+#include "koppel/synthesis/path_synthesis.hpp"
+
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <cmath>
+
+namespace koppel::cli {
+namespace {
+
+struct Args {
+  std::string points, atlas, top = "10", candidates, dir, out, threads;
+  bool open = false;
+};
+
+// POINTS.csv: the header `x,y`, then one point a line. Every bad line is reported.
+std::vector<Eigen::Vector2d> ReadPoints(const std::string& path) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec || size > 16 * 1024 * 1024) {
+    Complain(path + (ec ? ": cannot read the file" : ": larger than 16 MB: not a list of points"));
+    throw Exit{kExitBadInput};
+  }
+  std::ifstream in(path);
+  std::string line;
+  std::vector<Eigen::Vector2d> points;
+  std::vector<std::string> problems;
+  int number = 0;
+  auto trim = [](std::string s) {
+    while (!s.empty() && (s.back() == '\r' || s.back() == ' ')) s.pop_back();
+    while (!s.empty() && s.front() == ' ') s.erase(s.begin());
+    return s;
+  };
+  if (!std::getline(in, line) || trim(line) != "x,y") problems.push_back(fmt::format("{}:1: expected the header x,y", path));
+  number = 1;
+  while (std::getline(in, line)) {
+    ++number;
+    line = trim(line);
+    if (line.empty()) continue;
+    const auto comma = line.find(',');
+    try {
+      std::size_t ux = 0, uy = 0;
+      if (comma == std::string::npos) throw std::invalid_argument("no comma");
+      const std::string xs = trim(line.substr(0, comma)), ys = trim(line.substr(comma + 1));
+      const double x = std::stod(xs, &ux), y = std::stod(ys, &uy);
+      if (ux != xs.size() || uy != ys.size() || !std::isfinite(x) || !std::isfinite(y)) throw std::invalid_argument("not a number");
+      points.emplace_back(x, y);
+    } catch (const std::exception&) {
+      problems.push_back(fmt::format("{}:{}: expected two finite numbers x,y, found '{}'", path, number, line));
+    }
+    if (problems.size() > 20) break;
+  }
+  if (!problems.empty()) {
+    for (const std::string& p : problems) std::cerr << p << "\n";
+    throw Exit{kExitBadInput};
+  }
+  return points;
+}
+
+int Whole(const std::string& flag, const std::string& text, int lo, int hi) {
+  const double v = ParseNumberFlag(flag, text);
+  if (v != std::floor(v) || v < lo || v > hi) {
+    Complain(fmt::format("{} must be a whole number from {} to {}", flag, lo, hi));
+    throw Exit{kExitBadInput};
+  }
+  return static_cast<int>(v);
+}
+
+void Run(const Args& args) {
+  PathRequest request;
+  request.points = ReadPoints(args.points);
+  request.open = args.open;
+  request.top = Whole("--top", args.top, 1, 1000);
+  if (!args.candidates.empty()) request.candidates = Whole("--candidates", args.candidates, 1, 10000);
+  if (!args.threads.empty()) request.threads = Whole("--threads", args.threads, 0, 1024);
+  if (std::string why; !request.IsValid(&why)) {
+    Complain(args.points + ": " + why);
+    throw Exit{kExitBadInput};
+  }
+  const AtlasIndex atlas(ReadAtlasFile(args.atlas));
+  const PathResult result = SynthesisePath(atlas, request);
+  if (!result.ok()) {
+    Complain(args.points + ": " + result.message);
+    throw Exit{result.status == PathStatus::kInvalidRequest ? kExitBadInput : kExitFailed};
+  }
+  Table t;
+  t.columns = {"rank", "error", "A0_x", "A0_y", "B0_x", "B0_y", "crank", "coupler", "rocker", "frame", "K_along", "K_left"};
+  std::string csv;
+  for (size_t i = 0; i < t.columns.size(); ++i) csv += t.columns[i] + ",";
+  csv += "grashof\n";
+  if (!args.dir.empty()) std::filesystem::create_directories(args.dir);
+  for (size_t i = 0; i < result.linkages.size(); ++i) {
+    const PathLinkage& l = result.linkages[i];
+    for (double v : {static_cast<double>(i + 1), l.error, l.geometry.a0.x(), l.geometry.a0.y(), l.geometry.b0.x(), l.geometry.b0.y(), l.crank, l.coupler,
+                     l.rocker, l.frame, l.coupler_point.x(), l.coupler_point.y()})
+      csv += FormatNumber(v) + ",";
+    csv += std::string(ToString(l.grashof)) + "\n";
+    if (!args.dir.empty()) {
+      Mechanism m = l.mechanism;
+      m.name = fmt::format("path-{}", i + 1);
+      const std::string comment = fmt::format(
+          "Linkage {} of koppel synth path {} --atlas {}: its coupler point P passes the points with an RMS distance of {:.6g}\n"
+          "(atlas curve {} of seed {}, polished by the fit through this mechanism: {}). Grashof type {}.",
+          i + 1, args.points, args.atlas, l.error, l.source.index, l.source.seed, l.fit.substr(0, 200), ToString(l.grashof));
+      const double from = RadToDeg(m.hint.input);
+      WriteOutput((std::filesystem::path(args.dir) / (m.name + ".yaml")).string(), WriteMechanismYaml(m, comment, {from, from + 360, 1}));
+    }
+  }
+  WriteOutput(args.out, csv);
+  std::cerr << fmt::format("koppel synth path: {} points, {} atlas curves; best RMS distance {:.3g}\n", request.points.size(), atlas.entries().size(),
+                           result.linkages.front().error);
+}
+
+}  // namespace
+
+void AddPathSubcommand(CLI::App& synth) {
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = synth.add_subcommand(
+      "path",
+      "Path generation from an atlas (koppel atlas build): four-bars whose coupler point passes the points of POINTS.csv\n"
+      "(header x,y; in order along the path, closed unless --open). The nearest atlas curves by their normalised Fourier\n"
+      "descriptors (position, rotation, scale, start and sense free; mirror images too) are laid onto the points,\n"
+      "pre-polished in closed form, and the best --top are polished by the least-squares fit through the real mechanism\n"
+      "with each point's crank angle free. One CSV row per linkage, best first: rank, error (the RMS distance of the\n"
+      "points from the polished coupler curve, in the points' unit), the pivots, crank A0A, coupler AB, rocker B0B,\n"
+      "frame A0B0, the coupler point K in the coupler's frame (along A -> B, and left of it), the Grashof type.\n"
+      "--open matches an open stretch against the arcs of rocker-driven four-bars. -o DIR writes each as a mechanism file.\n"
+      "Example: koppel synth path points.csv --atlas atlas.bin --top 5 -o linkages");
+  cmd->add_option("points", args->points, "POINTS.csv (header x,y)")->required();
+  cmd->add_option("--atlas", args->atlas, "The atlas file")->required();
+  cmd->add_option("--top", args->top, "Linkages to return (default 10)");
+  cmd->add_option("--candidates", args->candidates, "Atlas curves pre-polished (default max(100, 10 top))");
+  cmd->add_flag("--open", args->open, "The points are an open stretch, not a closed path");
+  cmd->add_option("-o,--dir", args->dir, "Write each linkage as a mechanism file into this directory");
+  cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout");
+  cmd->add_option("--threads", args->threads, "Threads (default: one per core)");
+  cmd->callback([args] { Run(*args); });
+}
+
+}  // namespace koppel::cli

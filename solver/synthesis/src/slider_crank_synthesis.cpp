@@ -108,7 +108,7 @@ SliderCrankDesign Prove(const SliderCrankRequest& r, const Geometry& g) {
   const double phi_a = std::atan2(x_a, -y);
   const double mu_closed_form = ClosedFormMuMin(g);
   const CrankReanalysis check = ReanalyseCrank(SliderCrankMechanism(d), 0, 1, phi_a + (2 * kPi - r.phi0) / 2);
-  if (!check.ok) return Failed(r, DesignStatus::kReanalysisFailed, "re-analysis: " + check.message);
+  if (!check.ok()) return Failed(r, DesignStatus::kReanalysisFailed, "re-analysis: " + check.message);
   d.reanalysed_phi0 = check.phi0;
   d.reanalysed_stroke = check.turn;
   d.mu_min = check.mu_min;
@@ -167,9 +167,9 @@ SliderCrankDesign BestSliderCrank(const SliderCrankRequest& r) {
     if (!g) return std::nullopt;
     return ClosedFormMuMin(*g);
   };
-  const GridMaximum best = MaximiseOnGrid(score, 0, 1, kSearchSamples, 1e-13);
-  if (!best.found) return Failed(r, DesignStatus::kNoDesign, "no offset gives a slider-crank: " + Ranges(r));
-  const std::optional<Geometry> g = FromOffset(r, best.x * e_max);
+  const std::optional<GridMaximum> best = MaximiseOnGrid(score, 0, 1, kSearchSamples, 1e-13);
+  if (!best) return Failed(r, DesignStatus::kNoDesign, "no offset gives a slider-crank: " + Ranges(r));
+  const std::optional<Geometry> g = FromOffset(r, best->x * e_max);
   if (!g || Degenerate(*g, r.stroke))
     return Failed(r, DesignStatus::kBoundaryOptimum, "mu_min grows towards the end of the offset range: " + Ranges(r));
   return Prove(r, *g);

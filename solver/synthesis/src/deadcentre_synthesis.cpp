@@ -6,6 +6,7 @@
 #include "maximise.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/build.hpp"
 
 #include <fmt/core.h>
 
@@ -293,26 +294,22 @@ CrankRockerDesign BestCrankRocker(const CrankRockerRequest& r) {
 Mechanism CrankRockerMechanism(const CrankRockerDesign& d) {
   Mechanism m;
   m.name = "crank-rocker";
-  m.links = {{"frame", true, {{"A0", {0, 0}}, {"B0", {d.l4, 0}}}},
-             {"crank", false, {{"A0", {0, 0}}, {"A", {d.l1, 0}}}},
-             {"coupler", false, {{"A", {0, 0}}, {"B", {d.l2, 0}}}},
-             {"rocker", false, {{"B0", {0, 0}}, {"B", {d.l3, 0}}}}};
-  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3), PinJoint(m, "B0", 0, 3)};
-  m.drive.joint = 0;
-  Output psi;
-  psi.name = "psi";
-  psi.kind = OutputKind::kLinkAngle;
-  psi.link = 3;
-  Output mu;
-  mu.name = "mu";
-  mu.kind = OutputKind::kTransmissionAngle;
-  mu.link = 2;
-  mu.joint = 2;
-  m.outputs = {psi, mu};
+  AddLink(m, "frame", {{"A0", {0, 0}}, {"B0", {d.l4, 0}}}, true);
+  AddLink(m, "crank", {{"A0", {0, 0}}, {"A", {d.l1, 0}}});
+  AddLink(m, "coupler", {{"A", {0, 0}}, {"B", {d.l2, 0}}});
+  AddLink(m, "rocker", {{"B0", {0, 0}}, {"B", {d.l3, 0}}});
+  Revolute(m, "A0", "frame", "crank");
+  Revolute(m, "A", "crank", "coupler");
+  Revolute(m, "B", "coupler", "rocker");
+  Revolute(m, "B0", "frame", "rocker");
+  SetDrive(m, "A0");
+  LinkAngleOutput(m, "psi", "rocker");
+  TransmissionOutput(m, "mu", "coupler", "B");
   // assembled in the extended dead centre: B_a on the ray at phi_a
-  m.hint.input = d.phi_a;
+  HintInput(m, d.phi_a);
   const Eigen::Vector2d ba = (d.l1 + d.l2) * Eigen::Vector2d(std::cos(d.phi_a), std::sin(d.phi_a));
-  m.hint.points = {{{2, 1}, ba}, {{3, 1}, ba}};
+  HintPoint(m, "coupler", "B", ba);
+  HintPoint(m, "rocker", "B", ba);
   return m;
 }
 

@@ -1,6 +1,7 @@
 #include "koppel/synthesis/function_synthesis.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/build.hpp"
 #include "koppel/solver/sweep.hpp"
 #include "koppel/synthesis/fit.hpp"
 #include "koppel/synthesis/four_bar_design.hpp"
@@ -32,24 +33,22 @@ std::optional<Mechanism> FourBarAt(const Dimensions& dim, double d, double phi, 
   if (!b) return std::nullopt;
   Mechanism m;
   m.name = "function-generator";
-  m.links = {{"frame", true, {{"A0", a0}, {"B0", b0}}},
-             {"crank", false, {{"A0", {0, 0}}, {"A", {dim.a, 0}}}},
-             {"coupler", false, {{"A", {0, 0}}, {"B", {dim.b, 0}}}},
-             {"rocker", false, {{"B0", {0, 0}}, {"B", {dim.third, 0}}}}};
-  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3), PinJoint(m, "B0", 0, 3)};
-  m.drive.joint = 0;
-  Output psi;
-  psi.name = "psi";
-  psi.kind = OutputKind::kLinkAngle;
-  psi.link = 3;
-  Output mu;
-  mu.name = "mu";
-  mu.kind = OutputKind::kTransmissionAngle;
-  mu.link = 2;
-  mu.joint = 2;
-  m.outputs = {psi, mu};
-  m.hint.input = phi;
-  m.hint.points = {{{1, 1}, a}, {{2, 0}, a}, {{2, 1}, *b}, {{3, 1}, *b}};
+  AddLink(m, "frame", {{"A0", a0}, {"B0", b0}}, true);
+  AddLink(m, "crank", {{"A0", {0, 0}}, {"A", {dim.a, 0}}});
+  AddLink(m, "coupler", {{"A", {0, 0}}, {"B", {dim.b, 0}}});
+  AddLink(m, "rocker", {{"B0", {0, 0}}, {"B", {dim.third, 0}}});
+  Revolute(m, "A0", "frame", "crank");
+  Revolute(m, "A", "crank", "coupler");
+  Revolute(m, "B", "coupler", "rocker");
+  Revolute(m, "B0", "frame", "rocker");
+  SetDrive(m, "A0");
+  LinkAngleOutput(m, "psi", "rocker");
+  TransmissionOutput(m, "mu", "coupler", "B");
+  HintInput(m, phi);
+  HintPoint(m, "crank", "A", a);
+  HintPoint(m, "coupler", "A", a);
+  HintPoint(m, "coupler", "B", *b);
+  HintPoint(m, "rocker", "B", *b);
   return m;
 }
 
@@ -62,32 +61,22 @@ std::optional<Mechanism> SliderCrankAt(const Dimensions& dim, double phi, int br
   const Eigen::Vector2d b(a.x() + branch * std::sqrt(h2), e);
   Mechanism m;
   m.name = "function-generator";
-  m.links = {{"frame", true, {{"A0", {0, 0}}, {"F", {0, e}}}},
-             {"crank", false, {{"A0", {0, 0}}, {"A", {dim.a, 0}}}},
-             {"coupler", false, {{"A", {0, 0}}, {"B", {std::abs(dim.b), 0}}}},
-             {"slider", false, {{"B", {0, 0}}}}};
-  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3)};
-  Joint slide;
-  slide.name = "S";
-  slide.type = JointType::kPrismatic;
-  slide.link_a = 0;
-  slide.point_a = 1;
-  slide.link_b = 3;
-  slide.point_b = 0;
-  m.joints.push_back(slide);
-  m.drive.joint = 0;
-  Output s;
-  s.name = "s";
-  s.kind = OutputKind::kJoint;
-  s.joint = 3;
-  Output mu;
-  mu.name = "mu";
-  mu.kind = OutputKind::kTransmissionAngle;
-  mu.link = 2;
-  mu.joint = 2;
-  m.outputs = {s, mu};
-  m.hint.input = phi;
-  m.hint.points = {{{1, 1}, a}, {{2, 0}, a}, {{2, 1}, b}, {{3, 0}, b}};
+  AddLink(m, "frame", {{"A0", {0, 0}}, {"F", {0, e}}}, true);
+  AddLink(m, "crank", {{"A0", {0, 0}}, {"A", {dim.a, 0}}});
+  AddLink(m, "coupler", {{"A", {0, 0}}, {"B", {std::abs(dim.b), 0}}});
+  AddLink(m, "slider", {{"B", {0, 0}}});
+  Revolute(m, "A0", "frame", "crank");
+  Revolute(m, "A", "crank", "coupler");
+  Revolute(m, "B", "coupler", "slider");
+  Prismatic(m, "S", "frame", "F", "slider", "B", Eigen::Vector2d::UnitX());
+  SetDrive(m, "A0");
+  JointOutput(m, "s", "S");
+  TransmissionOutput(m, "mu", "coupler", "B");
+  HintInput(m, phi);
+  HintPoint(m, "crank", "A", a);
+  HintPoint(m, "coupler", "A", a);
+  HintPoint(m, "coupler", "B", b);
+  HintPoint(m, "slider", "B", b);
   return m;
 }
 

@@ -7,6 +7,7 @@
 #include "maximise.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/build.hpp"
 
 #include <fmt/core.h>
 
@@ -178,32 +179,19 @@ SliderCrankDesign BestSliderCrank(const SliderCrankRequest& r) {
 Mechanism SliderCrankMechanism(const SliderCrankDesign& d) {
   Mechanism m;
   m.name = "slider-crank";
-  m.links = {{"frame", true, {{"A0", {0, -d.e}}, {"F", {0, 0}}}},
-             {"crank", false, {{"A0", {0, 0}}, {"A", {0, -d.l1}}}},
-             {"coupler", false, {{"A", {0, 0}}, {"B", {d.l2, 0}}}},
-             {"slider", false, {{"B", {0, 0}}}}};
-  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3)};
-  Joint s;
-  s.name = "S";
-  s.type = JointType::kPrismatic;
-  s.link_a = 0;
-  s.link_b = 3;
-  s.point_a = 1;
-  s.point_b = 0;
-  m.joints.push_back(s);
-  m.drive.joint = 0;
-  Output out;
-  out.name = "s";
-  out.kind = OutputKind::kJoint;
-  out.joint = 3;
-  Output mu;
-  mu.name = "mu";
-  mu.kind = OutputKind::kTransmissionAngle;
-  mu.link = 2;
-  mu.joint = 2;
-  m.outputs = {out, mu};
-  m.hint.input = 0;
-  m.hint.points = {{{3, 0}, {std::sqrt(std::max(d.l2 * d.l2 - std::pow(d.e + d.l1, 2), 0.0)), 0.0}}};
+  AddLink(m, "frame", {{"A0", {0, -d.e}}, {"F", {0, 0}}}, true);
+  AddLink(m, "crank", {{"A0", {0, 0}}, {"A", {0, -d.l1}}});
+  AddLink(m, "coupler", {{"A", {0, 0}}, {"B", {d.l2, 0}}});
+  AddLink(m, "slider", {{"B", {0, 0}}});
+  Revolute(m, "A0", "frame", "crank");
+  Revolute(m, "A", "crank", "coupler");
+  Revolute(m, "B", "coupler", "slider");
+  Prismatic(m, "S", "frame", "F", "slider", "B", Eigen::Vector2d::UnitX());
+  SetDrive(m, "A0");
+  JointOutput(m, "s", "S");
+  TransmissionOutput(m, "mu", "coupler", "B");
+  HintInput(m, 0);
+  HintPoint(m, "slider", "B", {std::sqrt(std::max(d.l2 * d.l2 - std::pow(d.e + d.l1, 2), 0.0)), 0.0});
   return m;
 }
 

@@ -2,11 +2,11 @@
 // sense, its arc LE, the design at a given beta or lambda, and the one with the largest mu_min.
 #include "koppel/synthesis/deadcentre_synthesis.hpp"
 
+#include "bar_linkages.hpp"
 #include "design_proof.hpp"
 #include "maximise.hpp"
 
 #include "koppel/core/angles.hpp"
-#include "koppel/core/build.hpp"
 
 #include <fmt/core.h>
 
@@ -292,19 +292,7 @@ CrankRockerDesign BestCrankRocker(const CrankRockerRequest& r) {
 }
 
 Mechanism CrankRockerMechanism(const CrankRockerDesign& d) {
-  Mechanism m;
-  m.name = "crank-rocker";
-  AddLink(m, "frame", {{"A0", {0, 0}}, {"B0", {d.l4, 0}}}, true);
-  AddLink(m, "crank", {{"A0", {0, 0}}, {"A", {d.l1, 0}}});
-  AddLink(m, "coupler", {{"A", {0, 0}}, {"B", {d.l2, 0}}});
-  AddLink(m, "rocker", {{"B0", {0, 0}}, {"B", {d.l3, 0}}});
-  Revolute(m, "A0", "frame", "crank");
-  Revolute(m, "A", "crank", "coupler");
-  Revolute(m, "B", "coupler", "rocker");
-  Revolute(m, "B0", "frame", "rocker");
-  SetDrive(m, "A0");
-  LinkAngleOutput(m, "psi", "rocker");
-  TransmissionOutput(m, "mu", "coupler", "B");
+  Mechanism m = BarFourBar("crank-rocker", {0, 0}, {d.l4, 0}, d.l1, d.l2, d.l3);
   // assembled in the extended dead centre: B_a on the ray at phi_a
   HintInput(m, d.phi_a);
   const Eigen::Vector2d ba = (d.l1 + d.l2) * Eigen::Vector2d(std::cos(d.phi_a), std::sin(d.phi_a));

@@ -1,7 +1,8 @@
 #include "koppel/synthesis/function_synthesis.hpp"
 
+#include "bar_linkages.hpp"
+
 #include "koppel/core/angles.hpp"
-#include "koppel/core/build.hpp"
 #include "koppel/solver/sweep.hpp"
 #include "koppel/synthesis/fit.hpp"
 #include "koppel/synthesis/four_bar_design.hpp"
@@ -31,19 +32,7 @@ std::optional<Mechanism> FourBarAt(const Dimensions& dim, double d, double phi, 
   const Eigen::Vector2d a0(0, 0), b0(d, 0), a = dim.a * Eigen::Vector2d(std::cos(phi), std::sin(phi));
   const std::optional<Eigen::Vector2d> b = FourBarJointB(a, b0, dim.b, dim.third, branch);
   if (!b) return std::nullopt;
-  Mechanism m;
-  m.name = "function-generator";
-  AddLink(m, "frame", {{"A0", a0}, {"B0", b0}}, true);
-  AddLink(m, "crank", {{"A0", {0, 0}}, {"A", {dim.a, 0}}});
-  AddLink(m, "coupler", {{"A", {0, 0}}, {"B", {dim.b, 0}}});
-  AddLink(m, "rocker", {{"B0", {0, 0}}, {"B", {dim.third, 0}}});
-  Revolute(m, "A0", "frame", "crank");
-  Revolute(m, "A", "crank", "coupler");
-  Revolute(m, "B", "coupler", "rocker");
-  Revolute(m, "B0", "frame", "rocker");
-  SetDrive(m, "A0");
-  LinkAngleOutput(m, "psi", "rocker");
-  TransmissionOutput(m, "mu", "coupler", "B");
+  Mechanism m = BarFourBar("function-generator", a0, b0, dim.a, dim.b, dim.third);
   HintInput(m, phi);
   HintPoint(m, "crank", "A", a);
   HintPoint(m, "coupler", "A", a);
@@ -59,19 +48,7 @@ std::optional<Mechanism> SliderCrankAt(const Dimensions& dim, double phi, int br
   const double h2 = dim.b * dim.b - std::pow(e - a.y(), 2);
   if (!(h2 >= 0)) return std::nullopt;
   const Eigen::Vector2d b(a.x() + branch * std::sqrt(h2), e);
-  Mechanism m;
-  m.name = "function-generator";
-  AddLink(m, "frame", {{"A0", {0, 0}}, {"F", {0, e}}}, true);
-  AddLink(m, "crank", {{"A0", {0, 0}}, {"A", {dim.a, 0}}});
-  AddLink(m, "coupler", {{"A", {0, 0}}, {"B", {std::abs(dim.b), 0}}});
-  AddLink(m, "slider", {{"B", {0, 0}}});
-  Revolute(m, "A0", "frame", "crank");
-  Revolute(m, "A", "crank", "coupler");
-  Revolute(m, "B", "coupler", "slider");
-  Prismatic(m, "S", "frame", "F", "slider", "B", Eigen::Vector2d::UnitX());
-  SetDrive(m, "A0");
-  JointOutput(m, "s", "S");
-  TransmissionOutput(m, "mu", "coupler", "B");
+  Mechanism m = BarSliderCrank("function-generator", {0, 0}, {0, e}, {dim.a, 0}, std::abs(dim.b));
   HintInput(m, phi);
   HintPoint(m, "crank", "A", a);
   HintPoint(m, "coupler", "A", a);

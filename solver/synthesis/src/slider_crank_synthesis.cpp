@@ -3,11 +3,11 @@
 // largest mu_min.
 #include "koppel/synthesis/deadcentre_synthesis.hpp"
 
+#include "bar_linkages.hpp"
 #include "design_proof.hpp"
 #include "maximise.hpp"
 
 #include "koppel/core/angles.hpp"
-#include "koppel/core/build.hpp"
 
 #include <fmt/core.h>
 
@@ -177,19 +177,7 @@ SliderCrankDesign BestSliderCrank(const SliderCrankRequest& r) {
 }
 
 Mechanism SliderCrankMechanism(const SliderCrankDesign& d) {
-  Mechanism m;
-  m.name = "slider-crank";
-  AddLink(m, "frame", {{"A0", {0, -d.e}}, {"F", {0, 0}}}, true);
-  AddLink(m, "crank", {{"A0", {0, 0}}, {"A", {0, -d.l1}}});
-  AddLink(m, "coupler", {{"A", {0, 0}}, {"B", {d.l2, 0}}});
-  AddLink(m, "slider", {{"B", {0, 0}}});
-  Revolute(m, "A0", "frame", "crank");
-  Revolute(m, "A", "crank", "coupler");
-  Revolute(m, "B", "coupler", "slider");
-  Prismatic(m, "S", "frame", "F", "slider", "B", Eigen::Vector2d::UnitX());
-  SetDrive(m, "A0");
-  JointOutput(m, "s", "S");
-  TransmissionOutput(m, "mu", "coupler", "B");
+  Mechanism m = BarSliderCrank("slider-crank", {0, -d.e}, {0, 0}, {0, -d.l1}, d.l2);
   HintInput(m, 0);
   HintPoint(m, "slider", "B", {std::sqrt(std::max(d.l2 * d.l2 - std::pow(d.e + d.l1, 2), 0.0)), 0.0});
   return m;

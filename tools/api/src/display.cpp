@@ -1,0 +1,93 @@
+#include "display.hpp"
+
+#include "koppel/core/angles.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace koppel::api_detail {
+namespace {
+
+// The unit of the k-th derivative of an output (the CLI's words).
+std::string DerivativeUnit(bool output_is_angle, bool input_is_angle, int k) {
+  if (k == 0) return output_is_angle ? "deg" : "length";
+  std::string unit = output_is_angle ? "rad/" : "length/";
+  unit += input_is_angle ? "rad" : "length";
+  if (k > 1) unit += "^" + std::to_string(k);
+  return unit;
+}
+
+}  // namespace
+
+Layout SweepLayout(const Mechanism& m, int order) {
+  Layout t;
+  auto add = [&t](std::string name, std::string unit, int k, bool angle) {
+    t.columns.push_back(std::move(name));
+    t.units.push_back(std::move(unit));
+    t.order_of_column.push_back(k);
+    t.angle_value.push_back(angle);
+  };
+  add(m.drive.input_name, m.InputIsAngle() ? "deg" : "length", -1, false);
+  for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
+    const Output& out = m.outputs[o];
+    const bool angle = m.OutputIsAngle(o);
+    for (int c = 0; c < out.Components(); ++c) {
+      const std::string base = out.Components() == 2 ? out.name + (c == 0 ? "_x" : "_y") : out.name;
+      for (int k = 0; k <= order; ++k)
+        add(k == 0 ? base : base + "_d" + std::to_string(k), DerivativeUnit(angle, m.InputIsAngle(), k), k, k == 0 && angle);
+    }
+  }
+  add("singular", "1", -1, false);
+  return t;
+}
+
+void DisplayRow(const Mechanism& m, const Layout& layout, double input, const double* outputs, int valid_order, bool singular,
+                double* row) {
+  const size_t width = layout.columns.size();
+  row[0] = InputShown(m, input);
+  for (size_t c = 1; c + 1 < width; ++c) {
+    const double v = outputs[c - 1];
+    row[c] = layout.order_of_column[c] > valid_order ? std::numeric_limits<double>::quiet_NaN()
+             : layout.angle_value[c]                 ? RadToDeg(v)
+                                                     : v;
+  }
+  row[width - 1] = singular ? 1.0 : 0.0;
+}
+
+double InputShown(const Mechanism& m, double input) { return m.InputIsAngle() ? RadToDeg(input) : input; }
+double InputInternal(const Mechanism& m, double input) { return m.InputIsAngle() ? DegToRad(input) : input; }
+
+std::vector<SingularPosition> Shown(const Mechanism& m, const std::vector<SingularPoint>& points) {
+  std::vector<SingularPosition> shown;
+  for (const SingularPoint& p : points) {
+    SingularPosition s;
+    s.kind = ToString(p.kind);
+    s.input = InputShown(m, p.input);
+    s.rcond = p.rcond;
+    for (int j : p.joints) s.joints.push_back(m.joints[j].name);
+    s.action = ToString(p.action);
+    shown.push_back(std::move(s));
+  }
+  return shown;
+}
+
+std::vector<InputGap> Shown(const Mechanism& m, const std::vector<InputInterval>& gaps) {
+  std::vector<InputGap> shown;
+  for (const InputInterval& g : gaps) shown.push_back({InputShown(m, g.from), InputShown(m, g.to)});
+  return shown;
+}
+
+BranchPointAction Internal(AtBranchPoint action) {
+  switch (action) {
+    case AtBranchPoint::kStop: return BranchPointAction::kStop;
+    case AtBranchPoint::kSwitch: return BranchPointAction::kSwitch;
+    case AtBranchPoint::kContinue: break;
+  }
+  return BranchPointAction::kContinue;
+}
+
+void BadInput(const std::string& file, const std::string& field, const std::string& message) {
+  throw InputError({Diagnostic{file, 0, 0, field, message}});
+}
+
+}  // namespace koppel::api_detail

@@ -37,10 +37,9 @@ MechanismFile LoadMechanism(const std::string& path, const std::vector<std::stri
 
 double ParseNumberFlag(const std::string& flag, const std::string& text) {
   ParameterSet empty;
-  std::string error;
-  const std::optional<double> value = empty.Evaluate(text, &error);
+  const Expected<double> value = empty.Evaluate(text);
   if (!value) {
-    Complain(flag + ": " + error);
+    Complain(flag + ": " + value.error());
     throw Exit{kExitBadInput};
   }
   return *value;

@@ -51,7 +51,7 @@ ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesO
   };
   if (!options.IsValid(&why)) return fail(why, true);
   LoadModel model;
-  if (!model.Prepare(m, loads, &why)) return fail(why, true);
+  if (const Outcome prepared = model.Prepare(m, loads); !prepared) return fail(prepared.error(), true);
   SweepOptions sweep_options = options.sweep;
   sweep_options.order = 0;  // the table of outputs is not needed: poses are
   const SweepResult sweep = Sweep(m, sweep_options);
@@ -91,8 +91,8 @@ ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesO
     state.speed = speed;
     state.time = speed != 0.0 ? (row.input - options.sweep.from) / speed : 0.0;
     AppliedLoads applied;
-    if (!model.Evaluate(pose, state, &applied, &why)) {
-      skip(why);
+    if (const Outcome evaluated = model.Evaluate(pose, state, &applied); !evaluated) {
+      skip(evaluated.error());
       continue;
     }
     if (options.speed) applied.Add(InertiaLoads(pose, loads.masses, state));

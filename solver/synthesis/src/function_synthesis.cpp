@@ -1,5 +1,7 @@
 #include "koppel/synthesis/function_synthesis.hpp"
 
+#include "bar_linkages.hpp"
+
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
 #include "koppel/synthesis/fit.hpp"
@@ -30,26 +32,12 @@ std::optional<Mechanism> FourBarAt(const Dimensions& dim, double d, double phi, 
   const Eigen::Vector2d a0(0, 0), b0(d, 0), a = dim.a * Eigen::Vector2d(std::cos(phi), std::sin(phi));
   const std::optional<Eigen::Vector2d> b = FourBarJointB(a, b0, dim.b, dim.third, branch);
   if (!b) return std::nullopt;
-  Mechanism m;
-  m.name = "function-generator";
-  m.links = {{"frame", true, {{"A0", a0}, {"B0", b0}}},
-             {"crank", false, {{"A0", {0, 0}}, {"A", {dim.a, 0}}}},
-             {"coupler", false, {{"A", {0, 0}}, {"B", {dim.b, 0}}}},
-             {"rocker", false, {{"B0", {0, 0}}, {"B", {dim.third, 0}}}}};
-  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3), PinJoint(m, "B0", 0, 3)};
-  m.drive.joint = 0;
-  Output psi;
-  psi.name = "psi";
-  psi.kind = OutputKind::kLinkAngle;
-  psi.link = 3;
-  Output mu;
-  mu.name = "mu";
-  mu.kind = OutputKind::kTransmissionAngle;
-  mu.link = 2;
-  mu.joint = 2;
-  m.outputs = {psi, mu};
-  m.hint.input = phi;
-  m.hint.points = {{{1, 1}, a}, {{2, 0}, a}, {{2, 1}, *b}, {{3, 1}, *b}};
+  Mechanism m = BarFourBar("function-generator", a0, b0, dim.a, dim.b, dim.third);
+  HintInput(m, phi);
+  HintPoint(m, "crank", "A", a);
+  HintPoint(m, "coupler", "A", a);
+  HintPoint(m, "coupler", "B", *b);
+  HintPoint(m, "rocker", "B", *b);
   return m;
 }
 
@@ -60,34 +48,12 @@ std::optional<Mechanism> SliderCrankAt(const Dimensions& dim, double phi, int br
   const double h2 = dim.b * dim.b - std::pow(e - a.y(), 2);
   if (!(h2 >= 0)) return std::nullopt;
   const Eigen::Vector2d b(a.x() + branch * std::sqrt(h2), e);
-  Mechanism m;
-  m.name = "function-generator";
-  m.links = {{"frame", true, {{"A0", {0, 0}}, {"F", {0, e}}}},
-             {"crank", false, {{"A0", {0, 0}}, {"A", {dim.a, 0}}}},
-             {"coupler", false, {{"A", {0, 0}}, {"B", {std::abs(dim.b), 0}}}},
-             {"slider", false, {{"B", {0, 0}}}}};
-  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3)};
-  Joint slide;
-  slide.name = "S";
-  slide.type = JointType::kPrismatic;
-  slide.link_a = 0;
-  slide.point_a = 1;
-  slide.link_b = 3;
-  slide.point_b = 0;
-  m.joints.push_back(slide);
-  m.drive.joint = 0;
-  Output s;
-  s.name = "s";
-  s.kind = OutputKind::kJoint;
-  s.joint = 3;
-  Output mu;
-  mu.name = "mu";
-  mu.kind = OutputKind::kTransmissionAngle;
-  mu.link = 2;
-  mu.joint = 2;
-  m.outputs = {s, mu};
-  m.hint.input = phi;
-  m.hint.points = {{{1, 1}, a}, {{2, 0}, a}, {{2, 1}, b}, {{3, 0}, b}};
+  Mechanism m = BarSliderCrank("function-generator", {0, 0}, {0, e}, {dim.a, 0}, std::abs(dim.b));
+  HintInput(m, phi);
+  HintPoint(m, "crank", "A", a);
+  HintPoint(m, "coupler", "A", a);
+  HintPoint(m, "coupler", "B", b);
+  HintPoint(m, "slider", "B", b);
   return m;
 }
 

@@ -26,6 +26,12 @@ version=$("$prefix/bin/koppel" --version)
 echo "$version"
 (cd "$work" && "$prefix/bin/koppel" catalog find --links 4 --prismatic 1) > "$work/find.txt" || fail "koppel catalog find"
 grep -q slider-crank-offset "$work/find.txt" || fail "the installed koppel does not find its catalog"
+installed_catalog() {  # PREFIX: the installed koppel reads its entries from PREFIX/share/koppel/catalog
+  (cd "$work" && "$1/bin/koppel" catalog show slider-crank-offset) > "$work/show.txt" || fail "koppel catalog show"
+  grep -q "^file: *$1/share/koppel/catalog/slider-crank-offset.yaml" "$work/show.txt" ||
+    fail "the koppel installed in $1 does not read the catalog installed with it"
+}
+installed_catalog "$prefix"
 
 # installed headers: every one included at once, the include closure listed by the preprocessor
 headers=$(cd "$prefix/include" && find koppel -name '*.hpp' | sort)
@@ -40,7 +46,9 @@ consumer() {  # NAME: configure, build and run tests/packaging/NAME against the 
 }
 
 consumer cpp
-"$work/cpp/stroke" || fail "tests/packaging/cpp"
+"$work/cpp/stroke" > "$work/cpp.out" || { cat "$work/cpp.out"; fail "tests/packaging/cpp"; }
+cat "$work/cpp.out"
+grep -q "catalog $prefix/share/koppel/catalog" "$work/cpp.out" || fail "the library does not find the catalog installed with it"
 
 consumer analysis_only
 "$work/analysis_only/analysis_only" || fail "tests/packaging/analysis_only"
@@ -75,10 +83,13 @@ echo "README C++ example:" && cat "$work/readme_cpp.out"
 
 if [ -n "$python_dir" ]; then
   export PYTHONPATH="$prefix/$python_dir"
-  (cd "$work" && "$python" "$source/tests/packaging/python/stroke.py") || fail "tests/packaging/python/stroke.py"
+  (cd "$work" && KOPPEL_PREFIX="$prefix" "$python" "$source/tests/packaging/python/stroke.py") || fail "tests/packaging/python/stroke.py"
   readme_block python > "$work/readme_example.py"
   [ -s "$work/readme_example.py" ] || fail "README.md has no Python example in 'Using koppel as a library'"
   (cd "$source" && "$python" "$work/readme_example.py") > "$work/readme_python.out" || fail "README's Python example"
   echo "README Python example:" && cat "$work/readme_python.out"
 fi
+# an installed tree moved elsewhere still finds its libraries and its catalog
+mv "$prefix" "$work/moved" && installed_catalog "$work/moved"
+"$work/moved/bin/koppel" --version > /dev/null || fail "the moved koppel does not start"
 echo "packaging: all passed"

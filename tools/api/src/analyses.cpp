@@ -91,13 +91,13 @@ SweepTable Model::Sweep(double from, double to, double step, int order, AtBranch
   const Mechanism& m = mechanism();
   const SweepOptions options = Options(*this, from, to, step, order, action);
   const SweepResult result = koppel::Sweep(m, options);
-  const Layout layout = SweepLayout(m, order);
+  const SweepColumns layout = SweepLayout(m, order);
   SweepTable t;
   t.status = FromSweep(result.status);
   t.message = result.message;
   t.notes = result.notes;
   t.order = order;
-  t.columns = layout.columns;
+  t.columns = layout.names;
   t.units = layout.units;
   t.rows = static_cast<int>(result.inputs.size());
   t.values.resize(static_cast<size_t>(t.rows) * t.columns.size());

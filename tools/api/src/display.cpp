@@ -6,44 +6,10 @@
 #include <limits>
 
 namespace koppel::api_detail {
-namespace {
 
-// The unit of the k-th derivative of an output (the CLI's words).
-std::string DerivativeUnit(bool output_is_angle, bool input_is_angle, int k) {
-  if (k == 0) return output_is_angle ? "deg" : "length";
-  std::string unit = output_is_angle ? "rad/" : "length/";
-  unit += input_is_angle ? "rad" : "length";
-  if (k > 1) unit += "^" + std::to_string(k);
-  return unit;
-}
-
-}  // namespace
-
-Layout SweepLayout(const Mechanism& m, int order) {
-  Layout t;
-  auto add = [&t](std::string name, std::string unit, int k, bool angle) {
-    t.columns.push_back(std::move(name));
-    t.units.push_back(std::move(unit));
-    t.order_of_column.push_back(k);
-    t.angle_value.push_back(angle);
-  };
-  add(m.drive.input_name, m.InputIsAngle() ? "deg" : "length", -1, false);
-  for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
-    const Output& out = m.outputs[o];
-    const bool angle = m.OutputIsAngle(o);
-    for (int c = 0; c < out.Components(); ++c) {
-      const std::string base = out.Components() == 2 ? out.name + (c == 0 ? "_x" : "_y") : out.name;
-      for (int k = 0; k <= order; ++k)
-        add(k == 0 ? base : base + "_d" + std::to_string(k), DerivativeUnit(angle, m.InputIsAngle(), k), k, k == 0 && angle);
-    }
-  }
-  add("singular", "1", -1, false);
-  return t;
-}
-
-void DisplayRow(const Mechanism& m, const Layout& layout, double input, const double* outputs, int valid_order, bool singular,
+void DisplayRow(const Mechanism& m, const SweepColumns& layout, double input, const double* outputs, int valid_order, bool singular,
                 double* row) {
-  const size_t width = layout.columns.size();
+  const size_t width = layout.names.size();
   row[0] = InputShown(m, input);
   for (size_t c = 1; c + 1 < width; ++c) {
     const double v = outputs[c - 1];

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "koppel/api/model.hpp"
+#include "koppel/api/sweep_layout.hpp"
 #include "koppel/solver/singular.hpp"
 #include "koppel/solver/sweep.hpp"
 
@@ -10,20 +11,10 @@
 
 namespace koppel::api_detail {
 
-// The sweep layout of `koppel analyze` for `mechanism` up to `order`: names, units, the
-// derivative order of each column (-1 for the input and the flag) and whether a column holds an
-// angle's value (shown in degrees).
-struct Layout {
-  std::vector<std::string> columns, units;
-  std::vector<int> order_of_column;
-  std::vector<bool> angle_value;
-};
-Layout SweepLayout(const Mechanism& mechanism, int order);
-
 // One row in the API's units from the solver's: the input, `width` outputs laid out by
 // PositionSolver::OutputDerivatives, the valid order and the singular flag. Orders above
 // `valid_order` become NaN.
-void DisplayRow(const Mechanism& mechanism, const Layout& layout, double input, const double* outputs, int valid_order,
+void DisplayRow(const Mechanism& mechanism, const SweepColumns& layout, double input, const double* outputs, int valid_order,
                 bool singular, double* row);
 
 double InputShown(const Mechanism& mechanism, double input);     // deg for an R drive

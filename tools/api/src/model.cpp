@@ -67,12 +67,12 @@ void Model::Impl::StartWalk(const Assembly& assembly, AtBranchPoint action) {
 
 PoseResult Model::Impl::Pose(int order) {
   const Mechanism& m = file.mechanism;
-  const Layout layout = SweepLayout(m, order);
+  const SweepColumns layout = SweepLayout(m, order);
   PoseResult r;
   r.status = AnalysisStatus::kComplete;
   r.input = InputShown(m, walk->input());
-  r.columns = layout.columns;
-  r.values.resize(layout.columns.size());
+  r.columns = layout.names;
+  r.values.resize(layout.names.size());
   // the Taylor series of q to at least 2nd order: OutputDerivatives reads the angles' rates
   const Eigen::MatrixXd& series = walk->Series(std::max(order, 2));
   std::vector<double> outputs(solver->OutputWidth(order));

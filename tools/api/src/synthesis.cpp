@@ -27,7 +27,7 @@ struct Figures {
 };
 
 template <class Result>
-Design Outcome(const Result& result, Figures figures, const Mechanism& mechanism) {
+Design Finished(const Result& result, Figures figures, const Mechanism& mechanism) {
   Design d;
   d.status = result.status;
   d.message = result.message;
@@ -88,8 +88,8 @@ Design SynthesiseCrankRocker(const CrankRockerSpec& spec) {
     f.Angle("reanalysed_phi0", d.reanalysed_phi0);
     f.Angle("reanalysed_psi0", std::abs(d.reanalysed_psi));
   }
-  if (!d.ok()) return Outcome(d, f, Mechanism{});
-  return Outcome(d, f, spec.clockwise ? MirrorMechanism(CrankRockerMechanism(d)) : CrankRockerMechanism(d));
+  if (!d.ok()) return Finished(d, f, Mechanism{});
+  return Finished(d, f, spec.clockwise ? MirrorMechanism(CrankRockerMechanism(d)) : CrankRockerMechanism(d));
 }
 
 Design SynthesiseSliderCrank(const SliderCrankSpec& spec) {
@@ -115,9 +115,9 @@ Design SynthesiseSliderCrank(const SliderCrankSpec& spec) {
     f.Angle("beta_max", d.beta_max);
     f.Angle("reanalysed_phi0", d.reanalysed_phi0);
     f.Add("reanalysed_stroke", d.reanalysed_stroke, "length");
-    return Outcome(d, f, SliderCrankMechanism(d));
+    return Finished(d, f, SliderCrankMechanism(d));
   }
-  return Outcome(d, f, Mechanism{});
+  return Finished(d, f, Mechanism{});
 }
 
 Design SynthesiseMzc(const MzcSpec& spec) {
@@ -131,7 +131,7 @@ Design SynthesiseMzc(const MzcSpec& spec) {
   const MzcDesign d = MzcFromLambda(lambda, spec.diameter);
   if (d.status == DesignStatus::kInvalidRequest) BadInput("synthesis request", "lambda/D", d.message);
   Figures f;
-  if (!d.ok()) return Outcome(d, f, Mechanism{});
+  if (!d.ok()) return Finished(d, f, Mechanism{});
   const Mechanism m = MzcMechanism(d);
   f.Add("lambda", d.lambda, "1");
   f.Add("D", d.D, "length");
@@ -144,7 +144,7 @@ Design SynthesiseMzc(const MzcSpec& spec) {
   f.Add("k", d.k, "length");
   // point 2 of link 2: K on the coupler (MzcMechanism), as `koppel synth mzc` counts it
   f.Add("contact_points", TangentContactOrder(m, {2, 2}, m.hint.input, 1e-9), "1");
-  return Outcome(d, f, m);
+  return Finished(d, f, m);
 }
 
 Design SynthesiseFunction(const FunctionSpec& spec) {

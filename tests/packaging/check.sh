@@ -61,6 +61,12 @@ readelf -d "$work/analysis_only/analysis_only" | grep NEEDED > "$work/needed.txt
 ldd "$work/analysis_only/analysis_only" > "$work/ldd.txt"
 if grep -Ei 'ceres|glog|yaml' "$work/needed.txt" "$work/ldd.txt"; then fail "analysis_only links Ceres, glog or yaml-cpp"; fi
 grep -q libkoppel_analysis "$work/needed.txt" || fail "analysis_only does not link koppel's analysis library"
+# Debian's Ceres is a static library: it lives inside libkoppel_synthesis, which must not be loaded,
+# and no library that is loaded may define a symbol of Ceres
+if grep -E 'libkoppel_(synthesis|catalog|api)' "$work/ldd.txt"; then fail "analysis_only loads synthesis or the catalog"; fi
+for library in $(awk '/libkoppel_/ {print $3}' "$work/ldd.txt"); do
+  if nm -DC --defined-only "$library" | grep -m1 'ceres::'; then fail "$library holds Ceres"; fi
+done
 echo "analysis_only: $(wc -l < "$work/ldd.txt") libraries loaded, none of Ceres, glog, yaml-cpp"
 
 # README.md's examples, as written

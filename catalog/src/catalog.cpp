@@ -52,11 +52,12 @@ int CountOf(const std::map<std::string, int>& m, const std::string& key) {
 
 }  // namespace
 
+namespace {
+
 // The catalog installed with this library (cmake --install): KOPPEL_INSTALLED_CATALOG relative to
 // the folder of the file that holds this code (libkoppel_catalog.so, or a program linked
 // statically), so that an installed koppel, the Python module and any program built against the
 // installed tree find it wherever the tree was installed or moved to. Empty in a build tree.
-namespace {
 std::string InstalledCatalogDirectory() {
   namespace fs = std::filesystem;
   Dl_info info{};
@@ -67,6 +68,7 @@ std::string InstalledCatalogDirectory() {
   const fs::path catalog = here / KOPPEL_INSTALLED_CATALOG;
   return fs::is_directory(catalog, ec) ? catalog.lexically_normal().string() : std::string();
 }
+
 }  // namespace
 
 std::string DefaultCatalogDirectory() {

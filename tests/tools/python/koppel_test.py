@@ -1,6 +1,7 @@
 """The Python module (tools/python): its numbers against closed forms and against the CLI's own
 output for the same request, its errors with file and line. Run by ctest (python_module) with
 PYTHONPATH set to the package in the build tree and KOPPEL_EXECUTABLE to the CLI."""
+import ast
 import csv
 import io
 import math
@@ -119,6 +120,36 @@ class MechanismTest(unittest.TestCase):
         self.assertLess(f.figures["error_at_precision"], 1e-7)
         psi = f.mechanism.move_to(45)["psi"]
         self.assertAlmostEqual(math.remainder(psi - (105 + 90 * math.log10(5.5)), 360), 0, delta=1e-6)
+
+    def test_stubs_name_what_the_module_has(self):
+        # every class, function and member of the compiled module is in _koppel.pyi and back
+        from koppel import _koppel
+        with open(os.path.join(os.path.dirname(koppel.__file__), "_koppel.pyi")) as f:
+            tree = ast.parse(f.read())
+        stubbed = {}
+        for node in tree.body:
+            if isinstance(node, ast.ClassDef):
+                members = set()
+                for item in node.body:
+                    if isinstance(item, ast.FunctionDef):
+                        members.add(item.name)
+                    elif isinstance(item, ast.AnnAssign):
+                        members.add(item.target.id)
+                stubbed[node.name] = members
+            elif isinstance(node, ast.FunctionDef):
+                stubbed[node.name] = None
+        compiled = {name for name in dir(_koppel) if not name.startswith("__")}
+        self.assertEqual(set(stubbed), compiled)
+        for name, members in stubbed.items():
+            if members is None or name == "InputError":
+                continue
+            public = {m for m in dir(getattr(_koppel, name)) if not m.startswith("_")} | (
+                {"__getitem__", "__len__"} & set(dir(getattr(_koppel, name))))
+            self.assertEqual(members - {"__getitem__", "__len__"}, public - {"__getitem__", "__len__"}, name)
+        for name in ("catalog", "synth"):
+            for function in getattr(koppel, name).__dict__.values():
+                if callable(function) and getattr(function, "__module__", "").startswith("koppel."):
+                    self.assertTrue(function.__doc__, f"{name}.{function.__name__} has no docstring")
 
 
 if __name__ == "__main__":

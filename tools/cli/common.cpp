@@ -1,6 +1,7 @@
 #include "common.hpp"
 
 #include "koppel/core/expression.hpp"
+#include "koppel/core/version.hpp"
 #include "koppel/solver/assembly.hpp"
 
 #include <fmt/core.h>
@@ -70,7 +71,7 @@ std::string JsonText(nlohmann::json j) {
   return j.dump(1) + "\n";
 }
 
-const char* Version() { return KOPPEL_VERSION; }
+const char* Version() { return kVersion; }  // koppel/core/version.hpp
 
 std::string FormatNumber(double value) {
   if (!std::isfinite(value)) throw std::logic_error("koppel: refusing to print a non-finite number");

@@ -24,5 +24,6 @@ void AddDrawCommand(CLI::App& app);
 void AddViewCommand(CLI::App& app);
 void AddForcesCommand(CLI::App& app);    // forces_command.cpp
 void AddSimulateCommand(CLI::App& app);  // simulate_command.cpp
+void AddBenchCommand(CLI::App& app);     // bench_command.cpp, benchmarks in tools/bench
 
 }  // namespace koppel::cli

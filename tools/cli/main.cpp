@@ -45,6 +45,7 @@ int Run(int argc, char** argv) {
   koppel::cli::AddForcesCommand(app);
   koppel::cli::AddSimulateCommand(app);
   koppel::cli::AddAtlasCommand(app);
+  koppel::cli::AddBenchCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,57 @@
+// `koppel analyze` of 360 000 steps to a CSV file, run in this process through the command
+// itself (the file read, the sweep, the formatting and the atomic write): seed 000's
+// slider-crank from the catalog, 0 to 360 deg in steps of 0.001 deg, against its 1 s budget.
+#include "bench.hpp"
+#include "commands.hpp"
+#include "common.hpp"
+#include "koppel/catalog/catalog.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+
+namespace koppel::bench {
+namespace {
+
+void TimeAnalyze(benchmark::State& state) {
+  char folder[] = "/tmp/koppel-bench-XXXXXX";
+  if (!mkdtemp(folder)) {
+    state.SkipWithError("cannot make a temporary folder");
+    return;
+  }
+  const std::string out = std::string(folder) + "/analyze.csv";
+  const std::string file = DefaultCatalogDirectory() + "/slider-crank-offset.yaml";
+  for (auto _ : state) {
+    CLI::App app;
+    cli::AddAnalyzeCommand(app);
+    std::vector<std::string> args = {"analyze", file, "--from", "0", "--to", "360", "--step", "0.001", "-o", out};
+    std::reverse(args.begin(), args.end());  // CLI11 takes them last first
+    try {
+      app.parse(args);
+    } catch (const cli::Exit& e) {
+      state.SkipWithError(("koppel analyze exited with " + std::to_string(e.code)).c_str());
+      break;
+    } catch (const std::exception& e) {
+      state.SkipWithError(e.what());
+      break;
+    }
+  }
+  std::error_code ignored;
+  if (std::filesystem::file_size(out, ignored) < 360000 * 10) state.SkipWithError("the CSV file is too short");
+  std::filesystem::remove_all(folder, ignored);
+}
+
+}  // namespace
+
+std::vector<Case> AnalyzeCases() {
+  Case c;
+  c.name = "analyze-360000";
+  c.per = Per::kRun;
+  c.budget_ns = 1e9;
+  c.run = TimeAnalyze;
+  return {c};
+}
+
+}  // namespace koppel::bench

@@ -1,0 +1,121 @@
+// Synthesis as the commands run it, each against its time budget (issue 16): one dead-centre
+// synthesis with the mu_min optimisation (synth deadcentre crank-rocker --phi0 164 --psi0 60),
+// the 30 x 30 crank-rocker chart on every core (synth chart --phi0 150:208:2 --psi0 20:78:2), and
+// a path fit with 32 starts (five precision points of seed 003's coupler point, synth fit).
+#include "bench.hpp"
+
+#include "koppel/catalog/catalog.hpp"
+#include "koppel/catalog/fit_problem.hpp"
+#include "koppel/core/angles.hpp"
+#include "koppel/synthesis/deadcentre_synthesis.hpp"
+
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+#include <unistd.h>
+
+namespace koppel::bench {
+namespace {
+
+void TimeDeadCentre(benchmark::State& state) {
+  CrankRockerRequest request;
+  request.phi0 = DegToRad(164);
+  request.psi0 = DegToRad(60);
+  for (auto _ : state) {
+    const CrankRockerDesign design = BestCrankRocker(request);
+    if (!design.ok()) {
+      state.SkipWithError(design.message.c_str());
+      return;
+    }
+    benchmark::DoNotOptimize(design.mu_min);
+  }
+}
+
+void TimeChart(benchmark::State& state) {
+  std::vector<CrankRockerRequest> requests;
+  for (int i = 0; i < 30; ++i) {
+    for (int j = 0; j < 30; ++j) {
+      CrankRockerRequest r;
+      r.phi0 = DegToRad(150 + 2 * i);
+      r.psi0 = DegToRad(20 + 2 * j);
+      requests.push_back(r);
+    }
+  }
+  std::vector<CrankRockerDesign> designs(requests.size());
+  for (auto _ : state) {
+    std::atomic<size_t> next{0};
+    auto work = [&] {
+      for (size_t i = next++; i < requests.size(); i = next++) designs[i] = BestCrankRocker(requests[i]);
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+  }
+  int ok = 0;
+  for (const CrankRockerDesign& d : designs) ok += d.ok();
+  if (ok == 0) state.SkipWithError("no design in the chart");
+}
+
+// The problem file of tests/data/fit-mzc-precision-points.yaml with 32 starts, next to nothing:
+// the mechanism is the catalog's entry, named by its absolute path.
+const char* kFitProblem = R"(mechanism: {CATALOG}/mzc-crank-rocker.yaml
+parameters:
+  l3: {start: 4.0, lower: 3.5, upper: 5}
+  k: {start: 7.5, lower: 6, upper: 9}
+starts: 32
+targets:
+  - {point: K, input: 0, at: [1.65016198276, 8.30793198339]}
+  - {point: K, input: 72, at: [3.8001497422, 8.51785482083]}
+  - {point: K, input: 144, at: [2.73804645682, 8.12852694775]}
+  - {point: K, input: 216, at: [0.817414850996, 7.5852902947]}
+  - {point: K, input: 288, at: [-0.291263043332, 7.36062853072]}
+)";
+
+void TimeFit(benchmark::State& state) {
+  std::string text = kFitProblem;
+  text.replace(text.find("{CATALOG}"), 9, DefaultCatalogDirectory());
+  char folder[] = "/tmp/koppel-bench-XXXXXX";
+  if (!mkdtemp(folder)) {
+    state.SkipWithError("cannot make a temporary folder");
+    return;
+  }
+  const std::filesystem::path path = std::filesystem::path(folder) / "fit.yaml";
+  std::ofstream(path) << text;
+  FitProblem problem;
+  try {
+    problem = ReadFitProblem(path.string());
+  } catch (const std::exception& e) {
+    std::filesystem::remove_all(folder);
+    state.SkipWithError((std::string("the fit problem: ") + e.what()).c_str());
+    return;
+  }
+  std::filesystem::remove_all(folder);
+  for (auto _ : state) {
+    const FitReport report = Fit(problem.builder, problem.parameters, problem.targets, problem.options);
+    if (report.status != FitStatus::kConverged) {
+      state.SkipWithError(("the fit did not converge: " + report.message).c_str());
+      return;
+    }
+  }
+}
+
+Case RunCase(std::string name, double budget_ms, void (*run)(benchmark::State&)) {
+  Case c;
+  c.name = std::move(name);
+  c.per = Per::kRun;
+  c.budget_ns = budget_ms * 1e6;
+  c.run = run;
+  return c;
+}
+
+}  // namespace
+
+std::vector<Case> SynthesisCases() {
+  return {RunCase("deadcentre-synthesis", 5, TimeDeadCentre), RunCase("chart-30x30", 2000, TimeChart), RunCase("fit-32-starts", 1000, TimeFit)};
+}
+
+}  // namespace koppel::bench

@@ -1,0 +1,208 @@
+// koppel bench: the benchmarks of tools/bench (Google Benchmark) in this process, each with its
+// baseline measured in the same run, so that the ratios hold on any machine and under any load.
+#include "commands.hpp"
+#include "common.hpp"
+
+#include "bench.hpp"
+
+#include <fmt/core.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <regex>
+#include <set>
+#include <thread>
+
+namespace koppel::cli {
+namespace {
+
+struct BenchArgs {
+  std::string filter;
+  std::string format = "table";
+  double min_time = 0.5;
+};
+
+struct Measured {
+  double ns = 0.0;  // per step (Per::kStep) or per run
+  std::string error;
+  bool ran = false;
+};
+
+// Collects every run; one line per benchmark on stderr as it finishes.
+class Collector : public benchmark::BenchmarkReporter {
+ public:
+  bool ReportContext(const Context&) override { return true; }
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const Run& r : runs) {
+      if (r.run_type != Run::RT_Iteration) continue;
+      Measured& m = measured_[r.run_name.function_name];
+      m.ran = true;
+      if (r.error_occurred) {
+        m.error = r.error_message;
+      } else if (r.iterations > 0) {
+        m.ns = r.real_accumulated_time / static_cast<double>(r.iterations) * 1e9;
+      }
+      std::cerr << fmt::format("koppel bench: {} done\n", r.run_name.function_name);
+    }
+  }
+  std::map<std::string, Measured>& measured() { return measured_; }
+
+ private:
+  std::map<std::string, Measured> measured_;
+};
+
+struct Row {
+  std::string name, per, baseline_name, note;
+  double ns = 0.0;
+  double baseline_ns = 0.0;  // 0: none
+  double ratio = 0.0;        // 0: none
+  bool measured = false;
+};
+
+std::string Number(double v, int digits) { return fmt::format("{:.{}g}", v, digits); }
+
+// 3 significant digits in ns, us, ms or s, for the terminal
+std::string Duration(double ns) {
+  const char* units[] = {"ns", "us", "ms", "s"};
+  int u = 0;
+  for (; u < 3 && ns >= 1000.0; ++u) ns /= 1000.0;
+  return fmt::format("{:.3g} {}", ns, units[u]);
+}
+
+void RunBench(const BenchArgs& args) {
+  if (args.format != "table" && args.format != "csv" && args.format != "json") {
+    Complain("--format must be table, csv or json, found '" + args.format + "'");
+    throw Exit{kExitBadInput};
+  }
+  if (!(args.min_time > 0.0 && args.min_time <= 60.0)) {
+    Complain("--min-time must lie in (0, 60] seconds");
+    throw Exit{kExitBadInput};
+  }
+  std::regex filter;
+  try {
+    filter = std::regex(args.filter.empty() ? "." : args.filter, std::regex::extended);
+  } catch (const std::regex_error& e) {
+    Complain("--filter: not a regular expression: '" + args.filter + "' (" + e.what() + ")");
+    throw Exit{kExitBadInput};
+  }
+  std::vector<bench::Case> cases = bench::AllCases();
+  // the cases asked for, and the baselines they need
+  std::set<std::string> wanted;
+  for (const bench::Case& c : cases) {
+    if (!std::regex_search(c.name, filter)) continue;
+    wanted.insert(c.name);
+    if (!c.baseline.empty()) wanted.insert(c.baseline);
+  }
+  if (wanted.empty()) {
+    std::string names;
+    for (const bench::Case& c : cases) names += (names.empty() ? "" : ", ") + c.name;
+    Complain("--filter '" + args.filter + "' matches no benchmark; there are: " + names);
+    throw Exit{kExitBadInput};
+  }
+  int argc = 1;
+  char program[] = "koppel";
+  char* argv[] = {program, nullptr};
+  benchmark::Initialize(&argc, argv);
+  for (const bench::Case& c : cases) {
+    if (!wanted.count(c.name) || c.skipped) continue;
+    benchmark::RegisterBenchmark(c.name.c_str(), c.run)->MinTime(args.min_time)->UseRealTime();
+  }
+  double load[1] = {0.0};
+  const bool have_load = getloadavg(load, 1) == 1;
+  Collector collector;
+  benchmark::RunSpecifiedBenchmarks(&collector);
+  benchmark::ClearRegisteredBenchmarks();
+  benchmark::Shutdown();
+
+  std::vector<Row> rows;
+  bool failed = false;
+  auto per_unit = [](const bench::Case& c, double ns) { return c.per == bench::Per::kStep ? ns / c.steps_per_iteration : ns; };
+  std::map<std::string, double> ns_of;
+  for (const bench::Case& c : cases) {
+    const Measured& m = collector.measured()[c.name];
+    if (m.ran && m.error.empty()) ns_of[c.name] = per_unit(c, m.ns);
+  }
+  for (const bench::Case& c : cases) {
+    if (!wanted.count(c.name)) continue;
+    Row row;
+    row.name = c.name;
+    row.per = c.per == bench::Per::kStep ? "step" : "run";
+    row.note = c.note;
+    const Measured& m = collector.measured()[c.name];
+    if (!c.skipped && !m.error.empty()) {
+      row.note = "failed: " + m.error;
+      failed = true;
+    }
+    if (ns_of.count(c.name)) {
+      row.measured = true;
+      row.ns = ns_of[c.name];
+      if (!c.baseline.empty() && ns_of.count(c.baseline)) {
+        row.baseline_name = c.baseline_factor == 1.0 ? c.baseline : fmt::format("{} x {}", c.baseline, Number(c.baseline_factor, 6));
+        row.baseline_ns = ns_of[c.baseline] * c.baseline_factor;
+      } else if (c.budget_ns > 0.0) {
+        row.baseline_name = "budget";
+        row.baseline_ns = c.budget_ns;
+      } else if (!c.baseline.empty()) {
+        row.baseline_name = c.baseline + " (not measured)";
+      }
+      if (row.baseline_ns > 0.0) row.ratio = row.ns / row.baseline_ns;
+    }
+    rows.push_back(row);
+  }
+
+  const unsigned cores = std::thread::hardware_concurrency();
+  if (args.format == "json") {
+    nlohmann::json list = nlohmann::json::array();
+    for (const Row& r : rows) {
+      nlohmann::json j = {{"name", r.name}, {"per", r.per}};
+      j["ns_per_step"] = r.measured ? nlohmann::json(r.ns) : nlohmann::json(nullptr);
+      j["baseline"] = r.baseline_ns > 0.0 ? nlohmann::json(r.baseline_ns) : nlohmann::json(nullptr);
+      j["ratio"] = r.ratio > 0.0 ? nlohmann::json(r.ratio) : nlohmann::json(nullptr);
+      j["baseline_name"] = r.baseline_name;
+      if (!r.note.empty()) j["note"] = r.note;
+      list.push_back(j);
+    }
+    nlohmann::json out = {{"benchmarks", list}, {"cores", cores}};
+    if (have_load) out["load_average"] = load[0];
+    std::cout << JsonText(out);
+  } else if (args.format == "csv") {
+    std::string text = "name,per,ns_per_step,baseline,ratio,baseline_name,note\n";
+    for (const Row& r : rows) {
+      text += fmt::format("{},{},{},{},{},{},\"{}\"\n", r.name, r.per, r.measured ? Number(r.ns, 6) : "",
+                          r.baseline_ns > 0 ? Number(r.baseline_ns, 6) : "", r.ratio > 0 ? Number(r.ratio, 4) : "", r.baseline_name,
+                          r.note);
+    }
+    std::cout << text;
+  } else {
+    std::cout << fmt::format("{:<24} {:>14} {:>14} {:>8}  {}\n", "name", "time", "baseline", "ratio", "baseline is");
+    for (const Row& r : rows) {
+      auto time = [&](double ns) { return Duration(ns) + "/" + r.per; };
+      std::cout << fmt::format("{:<24} {:>14} {:>14} {:>8}  {}{}\n", r.name, r.measured ? time(r.ns) : "-",
+                               r.baseline_ns > 0 ? time(r.baseline_ns) : "-", r.ratio > 0 ? Number(r.ratio, 3) : "-", r.baseline_name,
+                               r.note.empty() ? "" : (r.baseline_name.empty() ? "" : "; ") + r.note);
+    }
+    std::cout << fmt::format("({} cores, load average {} at the start)\n", cores, have_load ? Number(load[0], 3) : "unknown");
+  }
+  if (failed) throw Exit{kExitFailed};
+}
+
+}  // namespace
+
+void AddBenchCommand(CLI::App& app) {
+  auto args = std::make_shared<BenchArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench",
+      "Time koppel's solver and commands (Google Benchmark), each against a baseline measured in the same run:\n"
+      "walk steps (positions, 1st and 2nd order of every output) against hand-written closed forms doing the\n"
+      "same work, chains of N four-bar loops against the 4-loop chain per loop, the four-bar's positions\n"
+      "against SolveSpace's libslvs, and synthesis, charts, fits and analyze against their time budgets.\n"
+      "ratio = time / baseline. Times are wall-clock: on a loaded machine compare the ratios.\n"
+      "Example: koppel bench --filter 'fourbar|chain' --format json");
+  cmd->add_option("--filter", args->filter, "Run the benchmarks whose name matches this regular expression (and their baselines)");
+  cmd->add_option("--format", args->format, "table (default), csv or json");
+  cmd->add_option("--min-time", args->min_time, "Seconds each benchmark runs at least (default 0.5)");
+  cmd->callback([args] { RunBench(*args); });
+}
+
+}  // namespace koppel::cli

@@ -110,6 +110,7 @@ const char* ToString(FunctionStatus status) {
     case FunctionStatus::kOk: return "ok";
     case FunctionStatus::kNotDrivable: return "not drivable over the input range";
     case FunctionStatus::kNoMechanism: return "no mechanism";
+    case FunctionStatus::kMissesPoints: return "misses the precision points";
     case FunctionStatus::kInvalidRequest: return "invalid request";
   }
   return "?";
@@ -248,6 +249,14 @@ FunctionDesign MeasureError(const FunctionRequest& r, const FunctionMap& map, co
     if (!p.complete()) continue;  // reported through the error curve's status below
     design.error_at_precision = std::max(design.error_at_precision, std::abs(difference(p.outputs(0, 0), out[i])));
   }
+  // three points are solved exactly: a solver's mechanism that misses one runs on another
+  // assembly branch than the equations assumed, and its error curve is not the design's
+  const double exact = 1e-6 * std::max(1.0, std::abs(r.output_to - r.output_from));
+  if (phi.size() == 3 && !(design.error_at_precision <= exact))
+    return Refused(design, FunctionStatus::kMissesPoints,
+                   fmt::format("the mechanism misses a precision point by {:.3g}: it assembles on another branch than the "
+                               "equations' solution (try other input or output ranges)",
+                               four_bar ? RadToDeg(design.error_at_precision) : design.error_at_precision));
   if (!s.complete())
     return Refused(design, FunctionStatus::kNotDrivable, "the mechanism does not run through the whole input range on its branch: " + s.message);
   design.status = FunctionStatus::kOk;

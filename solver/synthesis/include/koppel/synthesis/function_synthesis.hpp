@@ -47,6 +47,7 @@ enum class FunctionStatus {
   kOk,               // designed, drivable over the whole input range, error curve complete
   kNotDrivable,      // designed, but the mechanism does not run through the whole input range
   kNoMechanism,      // the precision points give no real mechanism (a link of zero or imaginary length)
+  kMissesPoints,     // exact design (3 points), but the solver's mechanism misses a precision point (another branch)
   kInvalidRequest,
 };
 const char* ToString(FunctionStatus status);

@@ -48,7 +48,8 @@ TEST_CASE("synth chart's rows without a design are gaps; one rocker sense per pl
     csv += phi == 170 ? "170,40,same,none,,,,,,,,\n" : std::to_string(phi) + ",40,same,ok,30,20,1,2,3,4,50,10\n";
   const plot::PlotResult r = plot::ChartPlot(csv, "chart.csv");
   REQUIRE(r.status == plot::PlotStatus::kComplete);
-  const auto curves = test::Find(test::Find(test::ParseSvg(r.svg), "g", "panel")[0], "path", "curve");
+  const auto doc = test::ParseSvg(r.svg);  // the nodes below point into it: keep it alive
+  const auto curves = test::Find(test::Find(doc, "g", "panel")[0], "path", "curve");
   REQUIRE(curves.size() == 1);
   CHECK(test::Subpaths(curves[0]).size() == 2);  // 170 has no design: 160..165 and 175..180
   const plot::PlotResult both = plot::ChartPlot(csv + "160,40,opposite,ok,30,20,1,2,3,4,50,10\n", "chart.csv");

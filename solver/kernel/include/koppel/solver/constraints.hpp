@@ -65,6 +65,32 @@ class ConstraintSystem {
   void Jacobian(const double* q, Eigen::Ref<Eigen::MatrixXd> jacobian) const;
   double InputColumn() const { return mechanism_.InputIsAngle() ? -length_scale_ : -1.0; }
 
+  // The entries of dF/dq that can be non-zero, fixed by the joints (the same at every pose):
+  // entry e sits at (pattern_rows()[e], pattern_cols()[e]), no two at one place.
+  const std::vector<int>& pattern_rows() const { return pattern_rows_; }
+  const std::vector<int>& pattern_cols() const { return pattern_cols_; }
+  int TrigSize() const { return 2 * static_cast<int>(mechanism_.links.size()); }
+
+  // The Newton loop's evaluation: F(q, input) into `residual` and dF/dq's entries in pattern
+  // order into `jacobian_values`, in one pass with cos and sin of each link angle computed once
+  // (into `trig`, TrigSize() numbers: cos, sin per link; 1, 0 for the frame). The same equations
+  // as Residuals and Jacobian (constraints_test checks both).
+  void Evaluate(const double* q, double input, double* residual, double* jacobian_values, double* trig) const;
+
+  // The Taylor coefficients of q(input) order by order, each from J q_k = -[F]_k, without
+  // evaluating the residuals in series arithmetic: `q_series` holds q's coefficients column by
+  // column (NumCoordinates() rows), `trig_series` those of each link's cos and sin (TrigSize()
+  // rows; column 0 is `trig` of Evaluate at the pose). For k = 1, 2, ...:
+  //   TrigSeriesPartial(k): coefficient k of cos and sin with theta's coefficient k taken as zero
+  //     (the recurrences s' = c theta', c' = -s theta');
+  //   SeriesResidual(k): coefficient k of F(q(t), input + t) with q's coefficient k taken as zero,
+  //     from q's columns 0..k-1 and the trig columns 0..k;
+  //   (the caller solves for q's column k), TrigSeriesComplete(k): adds theta_k's part.
+  // The same numbers as Residuals on Taylor<N> (constraints_test), with no heap allocation.
+  void TrigSeriesPartial(int k, const double* q_series, double* trig_series) const;
+  void SeriesResidual(int k, const double* q_series, const double* trig_series, double* residual) const;
+  void TrigSeriesComplete(int k, const double* q_series, double* trig_series) const;
+
   // Value of one output component (0 = x, 1 = y for points), in radians / lengths, offset applied.
   template <class T> T Output(int output, int component, const T* q) const;
 
@@ -75,7 +101,26 @@ class ConstraintSystem {
  private:
   template <class T> T JointValue(int joint, const T* q) const;
 
+  // A joint as the hot loops read it: coordinate indices (-1 for the frame) and local geometry.
+  struct JointRecord {
+    bool revolute = true;
+    int link_a = 0, link_b = 0;
+    int ia = -1, ib = -1;
+    Eigen::Vector2d pa = Eigen::Vector2d::Zero(), pb = Eigen::Vector2d::Zero();
+    Eigen::Vector2d axis = Eigen::Vector2d::UnitX();  // P: the slide direction on link a
+    double angle = 0.0;
+  };
+  // Rows of joint k (and of the drive) with their Jacobian entries, emitted in one fixed order.
+  template <class Sink> void EvaluateRows(const double* q, double input, const double* trig, double* residual, Sink&& sink) const;
+  // The series coefficient k of w(theta_a) . (p_b - p_a), w fixed in link a (a P joint's normal
+  // or a P drive's axis), with q's coefficient k taken as zero.
+  double LineSeries(int k, const JointRecord& j, const Eigen::Vector2d& w_local, const double* q_series,
+                    const double* trig_series) const;
+
   const Mechanism& mechanism_;
+  std::vector<JointRecord> records_;
+  JointRecord drive_;
+  std::vector<int> pattern_rows_, pattern_cols_;
   std::vector<int> coordinate_;
   std::vector<TransmissionGeometry> transmission_;  // per output; default-constructed if unused
   std::vector<std::string> problems_;

@@ -119,7 +119,8 @@ template <int N> double Value(const Taylor<N>& x) { return x.c[0]; }
 
 // Folds the value into [-pi, pi] by a whole number of turns; higher coefficients are untouched
 // because a constant shift does not change derivatives.
-inline double WrapAngle(double x) { return std::remainder(x, 2.0 * kPi); }
+// (Inside [-pi, pi] remainder returns x itself, so the shortcut gives the same numbers.)
+inline double WrapAngle(double x) { return std::abs(x) <= kPi ? x : std::remainder(x, 2.0 * kPi); }
 template <int N>
 Taylor<N> WrapAngle(Taylor<N> x) {
   x.c[0] = WrapAngle(x.c[0]);

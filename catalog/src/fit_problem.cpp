@@ -2,11 +2,13 @@
 
 #include "koppel/core/angles.hpp"
 #include "input_file.hpp"
+#include "mechanism_node.hpp"
 #include "yaml_reader.hpp"
 
 #include <fmt/core.h>
 
 #include <filesystem>
+#include <memory>
 
 namespace koppel {
 namespace {
@@ -157,11 +159,14 @@ FitProblem ReadFitProblem(const std::string& path) {
   // the builder: the mechanism file again with the free parameters as overrides
   const std::string mechanism_path = problem.mechanism_path;
   const std::vector<FitParameter> free = problem.parameters;
-  problem.builder = [mechanism_path, mechanism_text, free](const std::vector<double>& values) -> Expected<Mechanism> {
+  // Parsed once; every call reads its own deep copy (the reader may add nodes to a tree it looks
+  // into, and the builder runs on several threads at once).
+  const auto parsed = std::make_shared<const YAML::Node>(ParseYamlText(mechanism_text, mechanism_path));
+  problem.builder = [mechanism_path, parsed, free](const std::vector<double>& values) -> Expected<Mechanism> {
     Overrides overrides;
     for (size_t j = 0; j < free.size(); ++j) overrides.emplace_back(free[j].name, fmt::format("{:.17g}", values[j]));
     try {
-      return ParseMechanismText(mechanism_text, mechanism_path, overrides).mechanism;
+      return ParseMechanismNode(YAML::Clone(*parsed), mechanism_path, overrides).mechanism;
     } catch (const InputError& e) {
       return Expected<Mechanism>::Error(e.what());
     }

@@ -33,22 +33,32 @@ template <int S>
 int FactorizeBlock(double* a, int* piv, int s) {
   if constexpr (S > 0) s = S;
   int swaps = 0;
+#pragma GCC unroll 8
   for (int c = 0; c < s; ++c) {
     int p = c;
+    double largest = std::abs(a[c * s + c]);
+#pragma GCC unroll 8
     for (int r = c + 1; r < s; ++r) {
-      if (std::abs(a[c * s + r]) > std::abs(a[c * s + p])) p = r;
+      if (std::abs(a[c * s + r]) > largest) {
+        largest = std::abs(a[c * s + r]);
+        p = r;
+      }
     }
     piv[c] = p;
     if (p != c) {
+#pragma GCC unroll 8
       for (int cc = 0; cc < s; ++cc) std::swap(a[cc * s + c], a[cc * s + p]);
       ++swaps;
     }
     const double pivot = a[c * s + c];
     if (pivot == 0.0) continue;  // kept as a zero pivot: the caller sees a singular matrix
     const double inverse = 1.0 / pivot;
+#pragma GCC unroll 8
     for (int r = c + 1; r < s; ++r) a[c * s + r] *= inverse;
+#pragma GCC unroll 8
     for (int cc = c + 1; cc < s; ++cc) {
       const double u = a[cc * s + c];
+#pragma GCC unroll 8
       for (int r = c + 1; r < s; ++r) a[cc * s + r] -= a[c * s + r] * u;
     }
   }
@@ -59,14 +69,19 @@ int FactorizeBlock(double* a, int* piv, int s) {
 template <int S>
 void SolveBlock(const double* a, const int* piv, int s, double* v) {
   if constexpr (S > 0) s = S;
+#pragma GCC unroll 8
   for (int c = 0; c < s; ++c) {
     if (piv[c] != c) std::swap(v[c], v[piv[c]]);
   }
+#pragma GCC unroll 8
   for (int c = 0; c < s; ++c) {
+#pragma GCC unroll 8
     for (int r = c + 1; r < s; ++r) v[r] -= a[c * s + r] * v[c];
   }
+#pragma GCC unroll 8
   for (int c = s - 1; c >= 0; --c) {
     v[c] /= a[c * s + c];
+#pragma GCC unroll 8
     for (int r = 0; r < c; ++r) v[r] -= a[c * s + r] * v[c];
   }
 }

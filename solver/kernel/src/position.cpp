@@ -13,12 +13,6 @@ Eigen::Vector2d Rotate(double theta, const Eigen::Vector2d& v) {
   return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
 }
 
-double Factorial(int k) {
-  double f = 1.0;
-  for (int i = 2; i <= k; ++i) f *= i;
-  return f;
-}
-
 // Guesses tried for links whose angle the hint leaves open.
 constexpr int kAssemblyAttempts = 12;
 // Levenberg–Marquardt budget for assembly from a rough guess: generous, it runs once.
@@ -66,6 +60,8 @@ PositionSolver::PositionSolver(const Mechanism& mechanism, NewtonOptions options
   q8_.resize(n);
   r2_.resize(m);
   r8_.resize(m);
+  trig2_.resize(system_.TrigSize());
+  trig8_.resize(system_.TrigSize());
 }
 
 void PositionSolver::Evaluate(const Eigen::VectorXd& q, double input) {
@@ -439,15 +435,30 @@ int PositionSolver::OutputWidth(int order) const {
 template <int N>
 void PositionSolver::OutputDerivativesImpl(const Eigen::MatrixXd& coefficients, int order, double* out) const {
   std::vector<Taylor<N>>& qs = CoordinateSeries<N>();
+  std::vector<Taylor<N>>& trig = TrigSeries<N>();
   for (int i = 0; i < NumCoordinates(); ++i) {
     qs[i] = Taylor<N>();
     for (int j = 0; j <= order; ++j) qs[i].c[j] = coefficients(i, j);
   }
+  // cos and sin of each link angle once, not once per point an output looks at
+  for (int l = 0; l < static_cast<int>(mechanism_.links.size()); ++l) {
+    const int i = system_.CoordinateOf(l);
+    if (i < 0) {
+      trig[2 * l] = Taylor<N>(1.0);
+      trig[2 * l + 1] = Taylor<N>(0.0);
+    } else {
+      SinCos(qs[i + 2], trig[2 * l + 1], trig[2 * l]);
+    }
+  }
   int column = 0;
   for (int o = 0; o < static_cast<int>(mechanism_.outputs.size()); ++o) {
     for (int comp = 0; comp < mechanism_.outputs[o].Components(); ++comp) {
-      const Taylor<N> y = system_.Output(o, comp, qs.data());
-      for (int k = 0; k <= order; ++k) out[column++] = y.c[k] * Factorial(k);
+      const Taylor<N> y = system_.Output(o, comp, qs.data(), trig.data());
+      double factorial = 1.0;
+      for (int k = 0; k <= order; ++k) {
+        if (k > 1) factorial *= k;
+        out[column++] = y.c[k] * factorial;
+      }
     }
   }
 }

@@ -92,14 +92,17 @@ class ConstraintSystem {
   void TrigSeriesComplete(int k, const double* q_series, double* trig_series) const;
 
   // Value of one output component (0 = x, 1 = y for points), in radians / lengths, offset applied.
-  template <class T> T Output(int output, int component, const T* q) const;
+  // `trig`, when given, holds cos and sin of every link angle at q (TrigSize() numbers, as
+  // Evaluate lays them out), computed once for many outputs.
+  template <class T> T Output(int output, int component, const T* q, const T* trig = nullptr) const;
 
   // Global position of a link point.
-  template <class T> void GlobalPoint(const PointRef& ref, const T* q, T* xy) const;
+  template <class T> void GlobalPoint(const PointRef& ref, const T* q, T* xy, const T* trig = nullptr) const;
   template <class T> T LinkAngle(int link, const T* q) const;
 
  private:
-  template <class T> T JointValue(int joint, const T* q) const;
+  template <class T> T JointValue(int joint, const T* q, const T* trig = nullptr) const;
+  template <class T> void LinkSinCos(int link, const T* q, const T* trig, T& s, T& c) const;
 
   // A joint as the hot loops read it: coordinate indices (-1 for the frame) and local geometry.
   struct JointRecord {
@@ -138,7 +141,17 @@ T ConstraintSystem::LinkAngle(int link, const T* q) const {
 }
 
 template <class T>
-void ConstraintSystem::GlobalPoint(const PointRef& ref, const T* q, T* xy) const {
+void ConstraintSystem::LinkSinCos(int link, const T* q, const T* trig, T& s, T& c) const {
+  if (trig) {
+    c = trig[2 * link];
+    s = trig[2 * link + 1];
+  } else {
+    SinCos(LinkAngle(link, q), s, c);
+  }
+}
+
+template <class T>
+void ConstraintSystem::GlobalPoint(const PointRef& ref, const T* q, T* xy, const T* trig) const {
   const Eigen::Vector2d& p = mechanism_.links[ref.link].points[ref.point].local;
   const int i = coordinate_[ref.link];
   if (i < 0) {
@@ -147,19 +160,19 @@ void ConstraintSystem::GlobalPoint(const PointRef& ref, const T* q, T* xy) const
     return;
   }
   T s, c;
-  SinCos(q[i + 2], s, c);
+  LinkSinCos(ref.link, q, trig, s, c);
   xy[0] = q[i] + c * p.x() - s * p.y();
   xy[1] = q[i + 1] + s * p.x() + c * p.y();
 }
 
 template <class T>
-T ConstraintSystem::JointValue(int joint, const T* q) const {
+T ConstraintSystem::JointValue(int joint, const T* q, const T* trig) const {
   const Joint& j = mechanism_.joints[joint];
   if (j.type == JointType::kRevolute) return LinkAngle(j.link_b, q) - LinkAngle(j.link_a, q);
   T pa[2], pb[2], s, c;
-  GlobalPoint({j.link_a, j.point_a}, q, pa);
-  GlobalPoint({j.link_b, j.point_b}, q, pb);
-  SinCos(LinkAngle(j.link_a, q), s, c);
+  GlobalPoint({j.link_a, j.point_a}, q, pa, trig);
+  GlobalPoint({j.link_b, j.point_b}, q, pb, trig);
+  LinkSinCos(j.link_a, q, trig, s, c);
   const T ux = c * j.axis.x() - s * j.axis.y();
   const T uy = s * j.axis.x() + c * j.axis.y();
   return ux * (pb[0] - pa[0]) + uy * (pb[1] - pa[1]);
@@ -198,24 +211,24 @@ template <class T> T Abs(const T& x) { return Value(x) < 0.0 ? -x : x; }
 }  // namespace detail
 
 template <class T>
-T ConstraintSystem::Output(int output, int component, const T* q) const {
+T ConstraintSystem::Output(int output, int component, const T* q, const T* trig) const {
   const koppel::Output& o = mechanism_.outputs[output];
   switch (o.kind) {
     case OutputKind::kJoint:
-      return mechanism_.joints[o.joint].type == JointType::kRevolute ? JointValue(o.joint, q) - o.offset
-                                                                      : JointValue(o.joint, q);
+      return mechanism_.joints[o.joint].type == JointType::kRevolute ? JointValue(o.joint, q, trig) - o.offset
+                                                                      : JointValue(o.joint, q, trig);
     case OutputKind::kLinkAngle:
       return LinkAngle(o.link, q) - o.offset;
     case OutputKind::kPoint: {
       T xy[2];
-      GlobalPoint(o.p, q, xy);
+      GlobalPoint(o.p, q, xy, trig);
       return xy[component];
     }
     case OutputKind::kDistance:
     case OutputKind::kDirection: {
       T p[2], r[2];
-      GlobalPoint(o.p, q, p);
-      GlobalPoint(o.q, q, r);
+      GlobalPoint(o.p, q, p, trig);
+      GlobalPoint(o.q, q, r, trig);
       const T dx = r[0] - p[0], dy = r[1] - p[1];
       using std::atan2;
       using std::sqrt;
@@ -225,19 +238,19 @@ T ConstraintSystem::Output(int output, int component, const T* q) const {
     case OutputKind::kTransmissionAngle: {
       const TransmissionGeometry& g = transmission_[output];
       T a[2], b[2];
-      GlobalPoint(g.coupler_from, q, a);
-      GlobalPoint(g.coupler_to, q, b);
+      GlobalPoint(g.coupler_from, q, a, trig);
+      GlobalPoint(g.coupler_to, q, b, trig);
       const T cx = b[0] - a[0], cy = b[1] - a[1];
       T vx, vy;  // direction of motion of the output joint point
       if (g.slide_joint >= 0) {
         const Joint& j = mechanism_.joints[g.slide_joint];
         T s, c;
-        SinCos(LinkAngle(j.link_a, q), s, c);
+        LinkSinCos(j.link_a, q, trig, s, c);
         vx = c * j.axis.x() - s * j.axis.y();
         vy = s * j.axis.x() + c * j.axis.y();
       } else {
         T o_xy[2];
-        GlobalPoint(g.pivot, q, o_xy);
+        GlobalPoint(g.pivot, q, o_xy, trig);
         vx = -(b[1] - o_xy[1]);
         vy = b[0] - o_xy[0];
       }

@@ -149,14 +149,17 @@ class PositionSolver {
   double scaled_determinant_ = 0.0;
   Eigen::VectorXd column_scale_;  // 1 for x, y columns; 1/L for theta columns
   // Taylor workspaces, allocated once.
-  mutable std::vector<Taylor<2>> q2_, r2_;
-  mutable std::vector<Taylor<kMaxOrder>> q8_, r8_;
+  mutable std::vector<Taylor<2>> q2_, r2_, trig2_;
+  mutable std::vector<Taylor<kMaxOrder>> q8_, r8_, trig8_;
   Eigen::VectorXd q_try_;
   template <int N> std::vector<Taylor<N>>& CoordinateSeries() const {
     if constexpr (N == 2) return q2_; else return q8_;
   }
   template <int N> std::vector<Taylor<N>>& ResidualSeries() const {
     if constexpr (N == 2) return r2_; else return r8_;
+  }
+  template <int N> std::vector<Taylor<N>>& TrigSeries() const {
+    if constexpr (N == 2) return trig2_; else return trig8_;
   }
   template <int N> void OutputDerivativesImpl(const Eigen::MatrixXd& q_coefficients, int order, double* out) const;
 };

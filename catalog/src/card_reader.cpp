@@ -178,9 +178,10 @@ class CardReader {
       r_.Error(node, path, "expected a formula");
       return false;
     }
-    std::string error;
-    if (!names.Evaluate(node.Scalar(), &error) && error.find("does not parse") != std::string::npos) {
-      r_.Error(node, path, error);
+    // only the syntax is checked here: a value that is not finite yet may be one at check time
+    const Expected<double> value = names.Evaluate(node.Scalar());
+    if (!value && value.error().find("does not parse") != std::string::npos) {
+      r_.Error(node, path, value.error());
       return false;
     }
     return true;

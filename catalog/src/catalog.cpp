@@ -8,8 +8,13 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include <dlfcn.h>
+
 #ifndef KOPPEL_CATALOG_DIR
 #define KOPPEL_CATALOG_DIR "catalog/entries"
+#endif
+#ifndef KOPPEL_INSTALLED_CATALOG
+#define KOPPEL_INSTALLED_CATALOG "../share/koppel/catalog"
 #endif
 
 namespace koppel {
@@ -47,8 +52,28 @@ int CountOf(const std::map<std::string, int>& m, const std::string& key) {
 
 }  // namespace
 
+namespace {
+
+// The catalog installed with this library (cmake --install): KOPPEL_INSTALLED_CATALOG relative to
+// the folder of the file that holds this code (libkoppel_catalog.so, or a program linked
+// statically), so that an installed koppel, the Python module and any program built against the
+// installed tree find it wherever the tree was installed or moved to. Empty in a build tree.
+std::string InstalledCatalogDirectory() {
+  namespace fs = std::filesystem;
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<const void*>(&InstalledCatalogDirectory), &info) == 0 || !info.dli_fname) return {};
+  std::error_code ec;
+  const fs::path here = fs::canonical(fs::path(info.dli_fname), ec).parent_path();
+  if (ec) return {};
+  const fs::path catalog = here / KOPPEL_INSTALLED_CATALOG;
+  return fs::is_directory(catalog, ec) ? catalog.lexically_normal().string() : std::string();
+}
+
+}  // namespace
+
 std::string DefaultCatalogDirectory() {
   if (const char* env = std::getenv("KOPPEL_CATALOG"); env && *env) return env;
+  if (std::string installed = InstalledCatalogDirectory(); !installed.empty()) return installed;
   return KOPPEL_CATALOG_DIR;
 }
 

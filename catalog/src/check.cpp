@@ -51,12 +51,11 @@ void RunEquations(const MechanismFile& file, const CatalogCard& card, const std:
     results[i].detail = e.note;
   }
   for (size_t s = 0; s < sweep.inputs.size(); ++s) {
-    std::string error;
     // `phi` is the document's input: radians for an R drive, length for a P drive
     ParameterSet sample = file.parameters;
     sample.DefineValue("phi", sweep.inputs[s]);
     for (const auto& [name, formula] : card.where) {
-      if (!sample.Define(name, formula, &error)) Fail(file.path, 0, "catalog.where." + name, error);
+      if (const Expected<double> v = sample.Define(name, formula); !v) Fail(file.path, 0, "catalog.where." + name, v.error());
     }
     for (size_t i = 0; i < card.equations.size(); ++i) {
       const EquationCheck& e = card.equations[i];
@@ -65,8 +64,8 @@ void RunEquations(const MechanismFile& file, const CatalogCard& card, const std:
         ++skipped[i];
         continue;
       }
-      const std::optional<double> expected = sample.Evaluate(e.formula, &error);
-      if (!expected) Fail(file.path, e.line, "catalog.equations", "equation '" + e.name + "': " + error);
+      const Expected<double> expected = sample.Evaluate(e.formula);
+      if (!expected) Fail(file.path, e.line, "catalog.equations", "equation '" + e.name + "': " + expected.error());
       // an angle is compared wrap-aware: a closed form in atan2 may differ by whole turns
       const double difference = sweep.outputs(s, columns[i]) - *expected;
       const double deviation = std::abs(angle[i] ? AngleDifference(difference, 0.0) : difference);

@@ -31,9 +31,8 @@ bool FigureContext::Has(const FigureCheck& f, const char* argument) const { retu
 double FigureContext::Number(const FigureCheck& f, const char* argument) const {
   const auto it = f.args.find(argument);
   if (it == f.args.end()) Fail(f, std::string("missing argument '") + argument + "'");
-  std::string error;
-  const std::optional<double> v = file_.parameters.Evaluate(it->second, &error);
-  if (!v) Fail(f, std::string(argument) + ": " + error);
+  const Expected<double> v = file_.parameters.Evaluate(it->second);
+  if (!v) Fail(f, std::string(argument) + ": " + v.error());
   return *v;
 }
 
@@ -110,9 +109,8 @@ CheckOutcome EvaluateFigure(FigureContext& context, const FigureCheck& f, const 
   out.kind = CheckKind::kFigure;
   out.tolerance = f.tolerance;
   out.detail = f.note;
-  std::string error;
-  const std::optional<double> expected = context.file().parameters.Evaluate(f.expected, &error);
-  if (!expected) context.Fail(f, "expected value: " + error);
+  const Expected<double> expected = context.file().parameters.Evaluate(f.expected);
+  if (!expected) context.Fail(f, "expected value: " + expected.error());
 
   const FigureValue result = QuantityInfo(f.quantity).evaluate(context, f);
   if (!result.value) {

@@ -137,10 +137,8 @@ class LoadsReader {
     if (!node.IsDefined() || node.IsNull()) return std::nullopt;
     const std::optional<std::string> text = r_.Text(node, Child(path, "magnitude"));
     if (!text) return std::nullopt;
-    CompiledFormula formula;
-    std::string error;
-    if (!formula.Compile(*text, loads_.parameters, LoadVariables(m_), &error)) {
-      r_.Error(node, Child(path, "magnitude"), owner + ": " + error);
+    if (const Expected<CompiledFormula> f = CompiledFormula::Compile(*text, loads_.parameters, LoadVariables(m_)); !f) {
+      r_.Error(node, Child(path, "magnitude"), owner + ": " + f.error());
       return std::nullopt;
     }
     return text;

@@ -78,10 +78,9 @@ class MechanismReader {
             used[i] = true;
           }
         }
-        std::string error;
-        if (!out_.parameters.Define(e.key, *formula, &error)) {
+        if (const Expected<double> v = out_.parameters.Define(e.key, *formula); !v) {
           // an override's error belongs to the command line; the file's to its line
-          r_.Error(e.value, path, error);
+          r_.Error(e.value, path, v.error());
         }
       }
     }

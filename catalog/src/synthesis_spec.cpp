@@ -133,8 +133,7 @@ FunctionSpec ReadFunctionSpec(const std::string& path) {
   q.function = [formula](double x, double* y) {
     ParameterSet p;
     p.DefineValue("x", x);
-    std::string error;
-    const std::optional<double> v = p.Evaluate(formula, &error);
+    const Expected<double> v = p.Evaluate(formula);
     if (!v) return false;
     *y = *v;
     return true;
@@ -145,9 +144,8 @@ FunctionSpec ReadFunctionSpec(const std::string& path) {
     for (double x : xs) {
       ParameterSet p;
       p.DefineValue("x", x);
-      std::string error;
-      if (!p.Evaluate(formula, &error)) {
-        r.Error(function, "function", fmt::format("cannot evaluate at x = {}: {}", x, error));
+      if (const Expected<double> v = p.Evaluate(formula); !v) {
+        r.Error(function, "function", fmt::format("cannot evaluate at x = {}: {}", x, v.error()));
         break;
       }
     }

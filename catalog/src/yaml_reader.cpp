@@ -134,10 +134,12 @@ std::optional<double> YamlReader::Number(const YAML::Node& node, const std::stri
     Error(node, path, "expected a number or formula, found " + NodeKind(node));
     return std::nullopt;
   }
-  std::string error;
-  const std::optional<double> value = parameters.Evaluate(node.Scalar(), &error);
-  if (!value) Error(node, path, error);
-  return value;
+  const Expected<double> value = parameters.Evaluate(node.Scalar());
+  if (!value) {
+    Error(node, path, value.error());
+    return std::nullopt;
+  }
+  return *value;
 }
 
 std::optional<int> YamlReader::Count(const YAML::Node& node, const std::string& path) {

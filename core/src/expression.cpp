@@ -66,34 +66,26 @@ double* ParameterSet::BindName(const char* name, void* data) {
 
 long long ParameterSet::ParameterReads() { return parameter_reads.load(std::memory_order_relaxed); }
 
-std::optional<double> ParameterSet::Evaluate(const std::string& formula, std::string* error) const {
+Expected<double> ParameterSet::Evaluate(const std::string& formula) const {
   if (formula.size() > kMaxFormulaLength) {
-    if (error)
-      *error = "formula of " + std::to_string(formula.size()) + " characters is longer than the limit of " +
-               std::to_string(kMaxFormulaLength) + " (kMaxFormulaLength)";
-    return std::nullopt;
+    return Expected<double>::Error("formula of " + std::to_string(formula.size()) +
+                                   " characters is longer than the limit of " + std::to_string(kMaxFormulaLength) +
+                                   " (kMaxFormulaLength)");
   }
   mu::Parser& parser = SharedParser();
   // muparser only reads through the bound addresses
   parser.SetVarFactory(BindName, const_cast<ParameterSet*>(this));
-  std::optional<double> result;
+  Expected<double> result = Expected<double>::Error("formula '" + formula + "' does not give a finite number");
   try {
     parser.SetExpr(formula);
     const double value = parser.Eval();
-    if (std::isfinite(value)) {
-      result = value;
-    } else if (error) {
-      *error = "formula '" + formula + "' does not give a finite number";
-    }
+    if (std::isfinite(value)) result = value;
   } catch (const UnknownName& unknown) {
-    if (error) *error = "formula '" + formula + "' does not parse: unknown name '" + unknown.name + "'";
+    result = Expected<double>::Error("formula '" + formula + "' does not parse: unknown name '" + unknown.name + "'");
   } catch (const mu::Parser::exception_type& e) {
-    if (error) {
-      std::string msg = e.GetMsg();
-      if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && !e.GetToken().empty())
-        msg = "unknown name '" + e.GetToken() + "'";
-      *error = "formula '" + formula + "' does not parse: " + msg;
-    }
+    std::string msg = e.GetMsg();
+    if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && !e.GetToken().empty()) msg = "unknown name '" + e.GetToken() + "'";
+    result = Expected<double>::Error("formula '" + formula + "' does not parse: " + msg);
   }
   // the bound addresses belong to this set: never leave them in the shared parser
   parser.ClearVar();
@@ -110,11 +102,10 @@ void ParameterSet::DefineValue(const std::string& name, double value) {
   }
 }
 
-bool ParameterSet::Define(const std::string& name, const std::string& formula, std::string* error) {
-  const std::optional<double> value = Evaluate(formula, error);
-  if (!value) return false;
-  DefineValue(name, *value);
-  return true;
+Expected<double> ParameterSet::Define(const std::string& name, const std::string& formula) {
+  Expected<double> value = Evaluate(formula);
+  if (value) DefineValue(name, *value);
+  return value;
 }
 
 }  // namespace koppel

@@ -23,8 +23,8 @@ CompiledFormula::~CompiledFormula() = default;
 CompiledFormula::CompiledFormula(CompiledFormula&&) noexcept = default;
 CompiledFormula& CompiledFormula::operator=(CompiledFormula&&) noexcept = default;
 
-bool CompiledFormula::Compile(const std::string& formula, const ParameterSet& parameters, const std::vector<std::string>& variables,
-                              std::string* error) {
+Expected<CompiledFormula> CompiledFormula::Compile(const std::string& formula, const ParameterSet& parameters,
+                                                   const std::vector<std::string>& variables) {
   auto impl = std::make_unique<Impl>();
   impl->constants.reserve(parameters.Values().size());
   impl->variables.assign(variables.size(), 0.0);
@@ -42,16 +42,14 @@ bool CompiledFormula::Compile(const std::string& formula, const ParameterSet& pa
     impl->parser.SetExpr(formula);
     impl->parser.Eval();  // parses now, so that an unknown name is a compile error
   } catch (const mu::Parser::exception_type& e) {
-    if (error) {
-      std::string message = e.GetMsg();
-      if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && !e.GetToken().empty()) message = "unknown name '" + e.GetToken() + "'";
-      *error = "formula '" + formula + "' does not parse: " + message;
-    }
-    return false;
+    std::string message = e.GetMsg();
+    if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && !e.GetToken().empty()) message = "unknown name '" + e.GetToken() + "'";
+    return Expected<CompiledFormula>::Error("formula '" + formula + "' does not parse: " + message);
   }
-  impl_ = std::move(impl);
-  text_ = formula;
-  return true;
+  CompiledFormula compiled;
+  compiled.impl_ = std::move(impl);
+  compiled.text_ = formula;
+  return compiled;
 }
 
 double CompiledFormula::Evaluate(const double* values) const {

@@ -56,7 +56,7 @@ catalog:
   return buffer + figures;
 }
 
-const CheckOutcome& Outcome(const EntryReport& r, const std::string& name) {
+const CheckOutcome& FindOutcome(const EntryReport& r, const std::string& name) {
   for (const CheckOutcome& c : r.checks) {
     if (c.name == name) return c;
   }
@@ -102,21 +102,21 @@ TEST_CASE("crank-rocker figures: swing, dead centres and which joints turn fully
   // rocker angle at the extended (A0B = l2 + l1) and folded (A0B = l2 - l1) dead centres: the
   // angle at B0 in triangle A0 B0 B, B above the frame: psi = 180 deg - angle(A0 B0 B)
   const double psi_a = kPi - LawOfCosines(l3, l4, l2 + l1), psi_i = kPi - LawOfCosines(l3, l4, l2 - l1);
-  CHECK_THAT(Outcome(r, "swing").value, WithinAbs(RadToDeg(std::abs(psi_a - psi_i)), 1e-8));
+  CHECK_THAT(FindOutcome(r, "swing").value, WithinAbs(RadToDeg(std::abs(psi_a - psi_i)), 1e-8));
   // crank angle: angle at A0 in the same triangles; folded: A points away from B
   const double phi_a = LawOfCosines(l2 + l1, l4, l3), phi_i = LawOfCosines(l2 - l1, l4, l3) + kPi;
-  CHECK_THAT(Outcome(r, "phi_a").value, WithinAbs(RadToDeg(phi_a), 1e-8));
-  CHECK_THAT(Outcome(r, "span").value, WithinAbs(RadToDeg(std::fmod(phi_a - phi_i + 4 * kPi, 2 * kPi)), 1e-8));
+  CHECK_THAT(FindOutcome(r, "phi_a").value, WithinAbs(RadToDeg(phi_a), 1e-8));
+  CHECK_THAT(FindOutcome(r, "span").value, WithinAbs(RadToDeg(std::fmod(phi_a - phi_i + 4 * kPi, 2 * kPi)), 1e-8));
   for (const char* name : {"crank turns", "A turns", "B oscillates", "B0 oscillates", "rocker turns"}) {
     INFO(name);
-    CHECK(Outcome(r, name).passed());
+    CHECK(FindOutcome(r, name).passed());
   }
   // a crank has no limit position: not computed, which fails the entry
-  CHECK(Outcome(r, "no limit").status == CheckStatus::kNotComputed);
+  CHECK(FindOutcome(r, "no limit").status == CheckStatus::kNotComputed);
   CHECK_FALSE(r.passed());
   // the crank pin's circular arc over 0..90 deg against its tangent at 45 deg: the sagitta
   // l1 (1 - cos 45 deg)
-  CHECK_THAT(Outcome(r, "arc band").value, WithinAbs(l1 * (1 - std::cos(kPi / 4)), 1e-6));
+  CHECK_THAT(FindOutcome(r, "arc band").value, WithinAbs(l1 * (1 - std::cos(kPi / 4)), 1e-6));
 }
 
 TEST_CASE("non-Grashof four-bar: the input's limit positions where coupler and rocker line up", "[catalog][figures]") {
@@ -132,10 +132,10 @@ TEST_CASE("non-Grashof four-bar: the input's limit positions where coupler and r
   const EntryReport r = CheckEntry(dir.Write("f.yaml", text));
   // extended coupler and rocker: B0A = l2 + l3, angle at A0 in triangle A0 B0 A
   const double limit = RadToDeg(LawOfCosines(l1, l4, l2 + l3));
-  CHECK_THAT(Outcome(r, "high").value, WithinAbs(limit, 1e-5));
-  CHECK_THAT(Outcome(r, "low").value, WithinAbs(-limit, 1e-5));
-  CHECK(Outcome(r, "input oscillates").passed());
-  CHECK(Outcome(r, "B0 oscillates").passed());
+  CHECK_THAT(FindOutcome(r, "high").value, WithinAbs(limit, 1e-5));
+  CHECK_THAT(FindOutcome(r, "low").value, WithinAbs(-limit, 1e-5));
+  CHECK(FindOutcome(r, "input oscillates").passed());
+  CHECK(FindOutcome(r, "B0 oscillates").passed());
 }
 
 TEST_CASE("double crank: the output turns once per turn, its speed ratio from the velocity pole", "[catalog][figures]") {
@@ -148,19 +148,19 @@ TEST_CASE("double crank: the output turns once per turn, its speed ratio from th
 )";
   test::TempDir dir;
   const EntryReport r = CheckEntry(dir.Write("f.yaml", FourBar(l1, l2, l3, l4, 0, figures)));
-  CHECK(Outcome(r, "output turns").passed());
-  CHECK(Outcome(r, "B0 turns").passed());
-  CHECK(Outcome(r, "B oscillates").passed());
+  CHECK(FindOutcome(r, "output turns").passed());
+  CHECK(FindOutcome(r, "B0 turns").passed());
+  CHECK(FindOutcome(r, "B oscillates").passed());
   // at phi = 0 the crank pin A lies on the frame line, so it is the pole P13 of the coupler:
   // psi' = P13A0 / P13B0 = l1 / (l1 - l4)
-  CHECK_THAT(Outcome(r, "ratio at 0").value, WithinAbs(l1 / (l1 - l4), 1e-9));
+  CHECK_THAT(FindOutcome(r, "ratio at 0").value, WithinAbs(l1 / (l1 - l4), 1e-9));
 }
 
 TEST_CASE("a figure outside its tolerance fails and says both values", "[catalog][figures]") {
   const std::string figures = "    - {name: swing, quantity: stroke, output: psi, expected: 10, unit: deg, tolerance: 0.1}\n";
   test::TempDir dir;
   const EntryReport r = CheckEntry(dir.Write("f.yaml", FourBar(1, 3, 2.5, 3, 0, figures)));
-  const CheckOutcome& swing = Outcome(r, "swing");
+  const CheckOutcome& swing = FindOutcome(r, "swing");
   CHECK(swing.status == CheckStatus::kFailed);
   CHECK_THAT(swing.detail, Catch::Contains("document 10, koppel "));
   CHECK(swing.Ratio() > 1);

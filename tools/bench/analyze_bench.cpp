@@ -4,6 +4,7 @@
 #include "bench.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "koppel/catalog/catalog.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -21,7 +22,7 @@ void TimeAnalyze(benchmark::State& state) {
     return;
   }
   const std::string out = std::string(folder) + "/analyze.csv";
-  const std::string file = std::string(KOPPEL_CATALOG_DIR) + "/slider-crank-offset.yaml";
+  const std::string file = DefaultCatalogDirectory() + "/slider-crank-offset.yaml";
   for (auto _ : state) {
     CLI::App app;
     cli::AddAnalyzeCommand(app);

@@ -4,6 +4,7 @@
 // a path fit with 32 starts (five precision points of seed 003's coupler point, synth fit).
 #include "bench.hpp"
 
+#include "koppel/catalog/catalog.hpp"
 #include "koppel/catalog/fit_problem.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/synthesis/deadcentre_synthesis.hpp"
@@ -76,7 +77,7 @@ targets:
 
 void TimeFit(benchmark::State& state) {
   std::string text = kFitProblem;
-  text.replace(text.find("{CATALOG}"), 9, KOPPEL_CATALOG_DIR);
+  text.replace(text.find("{CATALOG}"), 9, DefaultCatalogDirectory());
   char folder[] = "/tmp/koppel-bench-XXXXXX";
   if (!mkdtemp(folder)) {
     state.SkipWithError("cannot make a temporary folder");

@@ -3,6 +3,7 @@
 #include "common.hpp"
 #include "sweep_report.hpp"
 
+#include "koppel/api/sweep_layout.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
 
@@ -20,54 +21,13 @@ struct AnalyzeArgs {
   int order = 2;
 };
 
-// Unit of the k-th derivative of an output, for JSON and for the reader of a table.
-std::string DerivativeUnit(bool output_is_angle, bool input_is_angle, int k) {
-  const std::string value = output_is_angle ? "rad" : "length";
-  if (k == 0) return output_is_angle ? "deg" : "length";
-  const std::string per = input_is_angle ? "rad" : "length";
-  return value + "/" + per + (k > 1 ? "^" + std::to_string(k) : "");
-}
-
-// The table of a sweep: the input, every output's derivatives 0..order, and the singular flag.
-// A transfer function that cannot be computed at a row (above the row's valid order) is empty
-// in CSV and null in JSON, never a number.
-struct SweepTable {
-  std::vector<std::string> columns, units;
-  std::vector<int> order_of_column;  // derivative order of each column (-1: input, flag)
-  std::vector<bool> angle_value;     // a column of angle values: printed in degrees
-};
-
-SweepTable Layout(const Mechanism& m, int order) {
-  SweepTable t;
-  const bool angle_input = m.InputIsAngle();
-  t.columns.push_back(m.drive.input_name);
-  t.units.push_back(angle_input ? "deg" : "length");
-  t.order_of_column.push_back(-1);
-  t.angle_value.push_back(false);
-  for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
-    const Output& out = m.outputs[o];
-    const bool angle = m.OutputIsAngle(o);
-    for (int c = 0; c < out.Components(); ++c) {
-      const std::string base = out.Components() == 2 ? out.name + (c == 0 ? "_x" : "_y") : out.name;
-      for (int k = 0; k <= order; ++k) {
-        t.columns.push_back(k == 0 ? base : base + "_d" + std::to_string(k));
-        t.units.push_back(DerivativeUnit(angle, angle_input, k));
-        t.order_of_column.push_back(k);
-        t.angle_value.push_back(k == 0 && angle);
-      }
-    }
-  }
-  t.columns.push_back("singular");
-  t.units.push_back("1");
-  t.order_of_column.push_back(-1);
-  t.angle_value.push_back(false);
-  return t;
-}
-
-std::string ToCsv(const Mechanism& m, const SweepTable& t, const SweepResult& r) {
+// The table of a sweep (koppel/api/sweep_layout.hpp): the input, every output's derivatives
+// 0..order, and the singular flag. A transfer function that cannot be computed at a row (above
+// the row's valid order) is empty in CSV and null in JSON, never a number.
+std::string ToCsv(const Mechanism& m, const SweepColumns& t, const SweepResult& r) {
   std::string out;
   out.reserve(r.inputs.size() * (r.outputs.cols() + 2) * 16);  // about 16 characters a number
-  for (size_t c = 0; c < t.columns.size(); ++c) out += (c ? "," : "") + t.columns[c];
+  for (size_t c = 0; c < t.names.size(); ++c) out += (c ? "," : "") + t.names[c];
   out += "\n";
   for (size_t i = 0; i < r.inputs.size(); ++i) {
     AppendNumber(out, m.InputIsAngle() ? RadToDeg(r.inputs[i]) : r.inputs[i]);
@@ -81,7 +41,7 @@ std::string ToCsv(const Mechanism& m, const SweepTable& t, const SweepResult& r)
   return out;
 }
 
-nlohmann::json ToJson(const Mechanism& m, const SweepTable& t, const SweepResult& r) {
+nlohmann::json ToJson(const Mechanism& m, const SweepColumns& t, const SweepResult& r) {
   nlohmann::json rows = nlohmann::json::array();
   for (size_t i = 0; i < r.inputs.size(); ++i) {
     nlohmann::json row = nlohmann::json::array();
@@ -98,7 +58,7 @@ nlohmann::json ToJson(const Mechanism& m, const SweepTable& t, const SweepResult
     row.push_back(static_cast<int>(r.singular[i]));
     rows.push_back(row);
   }
-  return {{"columns", t.columns}, {"units", t.units}, {"rows", rows}};
+  return {{"columns", t.names}, {"units", t.units}, {"rows", rows}};
 }
 
 void RunAnalyze(const AnalyzeArgs& args) {
@@ -125,7 +85,7 @@ void RunAnalyze(const AnalyzeArgs& args) {
     throw Exit{kExitBadInput};
   }
   const SweepResult result = Sweep(m, options);
-  const SweepTable table = Layout(m, options.order);
+  const SweepColumns table = SweepLayout(m, options.order);
 
   if (args.format == "csv") {
     WriteOutput(args.out, ToCsv(m, table, result));

@@ -79,14 +79,13 @@ void Merge(const Args& args) {
   }
   std::vector<std::vector<AtlasEntry>> parts;
   for (const std::string& path : args.inputs) parts.push_back(ReadAtlasFile(path));
-  std::vector<AtlasEntry> merged;
-  std::string error;
-  if (!MergeAtlases(std::move(parts), &merged, &error)) {
-    Complain("atlas merge: " + error);
+  const Expected<std::vector<AtlasEntry>> merged = MergeAtlases(std::move(parts));
+  if (!merged) {
+    Complain("atlas merge: " + merged.error());
     throw Exit{kExitBadInput};
   }
-  WriteOutput(args.out, SerialiseAtlas(merged));
-  if (!args.quiet) std::cerr << fmt::format("koppel atlas merge: {} curves from {} atlases\n", merged.size(), args.inputs.size());
+  WriteOutput(args.out, SerialiseAtlas(*merged));
+  if (!args.quiet) std::cerr << fmt::format("koppel atlas merge: {} curves from {} atlases\n", merged->size(), args.inputs.size());
 }
 
 }  // namespace

@@ -26,13 +26,12 @@ std::vector<AtlasEntry> ReadAtlasFile(const std::string& path) {
     Complain(path + ": cannot read the atlas");
     throw Exit{kExitBadInput};
   }
-  std::vector<AtlasEntry> entries;
-  std::string error;
-  if (!ParseAtlas(bytes, &entries, &error)) {
-    Complain(path + ": " + error);
+  Expected<std::vector<AtlasEntry>> entries = ParseAtlas(bytes);
+  if (!entries) {
+    Complain(path + ": " + entries.error());
     throw Exit{kExitBadInput};
   }
-  return entries;
+  return std::move(*entries);
 }
 
 }  // namespace koppel::cli

@@ -44,11 +44,12 @@ std::string Scheme(const CatalogEntry& e, std::vector<std::string>* problems) {
   if (!run.complete) problems->push_back("scheme: " + run.message);
   if (run.size() == 0) return "";
   plot::SchemeScene scene;
-  std::string why;
-  if (!plot::PoseAt(m, run, m.hint.input, &scene.q, &why)) {
-    problems->push_back("scheme: " + why);
+  const Expected<Eigen::VectorXd> pose = plot::PoseAt(m, run, m.hint.input);
+  if (!pose) {
+    problems->push_back("scheme: " + pose.error());
     return "";
   }
+  scene.q = *pose;
   for (int i = 0; i < run.size(); ++i) scene.extent.push_back(run.poses.row(i).transpose());
   scene.caption = e.file.id;
   return plot::DrawScheme(m, scene);

@@ -1,6 +1,7 @@
 #include "common.hpp"
 
 #include "koppel/core/expression.hpp"
+#include "koppel/core/version.hpp"
 #include "koppel/solver/assembly.hpp"
 
 #include <fmt/core.h>
@@ -37,10 +38,9 @@ MechanismFile LoadMechanism(const std::string& path, const std::vector<std::stri
 
 double ParseNumberFlag(const std::string& flag, const std::string& text) {
   ParameterSet empty;
-  std::string error;
-  const std::optional<double> value = empty.Evaluate(text, &error);
+  const Expected<double> value = empty.Evaluate(text);
   if (!value) {
-    Complain(flag + ": " + error);
+    Complain(flag + ": " + value.error());
     throw Exit{kExitBadInput};
   }
   return *value;
@@ -72,7 +72,7 @@ std::string JsonText(nlohmann::json j) {
   return j.dump(1) + "\n";
 }
 
-const char* Version() { return KOPPEL_VERSION; }
+const char* Version() { return kVersion; }  // koppel/core/version.hpp
 
 std::string FormatNumber(double value) {
   std::string text;

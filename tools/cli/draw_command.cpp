@@ -50,11 +50,12 @@ void Run(const Args& args) {
   const std::string input_name = m.drive.input_name == "phi" ? "φ" : m.drive.input_name, unit = angle ? "°" : "";
   plot::SchemeScene scene;
   const double at = args.at.empty() ? m.hint.input : in(ParseNumberFlag("--at", args.at));
-  std::string why;
-  if (!plot::PoseAt(m, run, at, &scene.q, &why)) {
-    Complain(args.file + ": cannot reach " + input_name + " = " + fmt::format("{:g}", shown(at)) + ": " + why);
+  const Expected<Eigen::VectorXd> pose = plot::PoseAt(m, run, at);
+  if (!pose) {
+    Complain(args.file + ": cannot reach " + input_name + " = " + fmt::format("{:g}", shown(at)) + ": " + pose.error());
     throw Exit{kExitFailed};
   }
+  scene.q = *pose;
   scene.caption = fmt::format("{}: {} = {:.2f}{}", m.name, input_name, shown(at), unit);
   for (int i = 0; i < run.size(); ++i) scene.extent.push_back(run.poses.row(i).transpose());
   if (!args.trace.empty()) {
@@ -75,10 +76,12 @@ void Run(const Args& args) {
     for (const DeadCentre& d : dead.points) {
       plot::OverlayPose overlay;
       overlay.suffix = d.kind == DeadCentreKind::kExtended ? "a" : d.kind == DeadCentreKind::kFolded ? "i" : std::to_string(++unnamed);
-      if (!plot::PoseAt(m, run, d.input, &overlay.q, &why)) {
-        problems.push_back("dead centre at " + fmt::format("{:g}", shown(d.input)) + ": " + why);
+      const Expected<Eigen::VectorXd> dead_pose = plot::PoseAt(m, run, d.input);
+      if (!dead_pose) {
+        problems.push_back("dead centre at " + fmt::format("{:g}", shown(d.input)) + ": " + dead_pose.error());
         continue;
       }
+      overlay.q = *dead_pose;
       list += fmt::format("{}{}_{} = {:.2f}{}", list.empty() ? "" : ", ", input_name, overlay.suffix, shown(d.input), unit);
       scene.overlays.push_back(std::move(overlay));
     }

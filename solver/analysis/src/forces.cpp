@@ -39,6 +39,51 @@ std::string ForcesResult::Brief() const {
   return brief;
 }
 
+namespace {
+
+// What every pose of a force analysis shares.
+struct ForcesContext {
+  const Loads& loads;
+  const LoadModel& model;
+  PositionSolver& solver;
+  const ForcesOptions& options;
+  bool indeterminate;
+};
+
+// The forces of one computed sample into `row` (its input and pose set); the error says why a
+// sample has none. row.virtual_work tells whether the virtual-work drive torque was reached.
+Outcome ForcesAt(const ForcesContext& c, Eigen::MatrixXd& series, ForcesRow& row) {
+  if (row.singular)
+    return Outcome::Error("the pose is singular: at a limit point the drive torque to hold the loads is unbounded, at a branch "
+                          "point the reactions are not determined");
+  const SolveReport solved = c.solver.Correct(row.input, row.q);
+  if (!solved.ok() || !c.solver.Series(2, series)) return Outcome::Error("the pose does not solve again: " + solved.message);
+  const PoseMotion pose(c.solver.system(), series, c.loads.metres_per_unit);
+  MotionState state;
+  state.input = row.input;
+  state.speed = c.options.speed.value_or(0.0);
+  state.time = state.speed != 0.0 ? (row.input - c.options.sweep.from) / state.speed : 0.0;
+  AppliedLoads applied;
+  if (Outcome evaluated = c.model.Evaluate(pose, state, &applied); !evaluated) return evaluated;
+  if (c.options.speed) applied.Add(InertiaLoads(pose, c.loads.masses, state));
+  const ReducedInertia inertia = ReduceInertia(pose, c.loads.masses);
+  row.reduced_inertia = inertia.value;
+  row.reduced_inertia_derivative = inertia.derivative;
+  row.drive_virtual_work = VirtualWorkDrive(applied);
+  row.load_scale = LoadScale(pose, applied);
+  row.virtual_work = true;
+  if (c.indeterminate) return Outcome::Error("the joint reactions are statically indeterminate (redundant joints)");
+  Reactions reactions;
+  if (!JointReactions(c.solver, row.q, GeneralizedForces(pose, applied), c.loads.metres_per_unit, &reactions))
+    return Outcome::Error("the multipliers could not be solved for at this pose");
+  row.drive = reactions.drive;
+  row.joints = std::move(reactions.joints);
+  row.computed = true;
+  return Done();
+}
+
+}  // namespace
+
 ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesOptions& options) {
   ForcesResult result;
   result.kinetostatic = options.speed.has_value();
@@ -51,7 +96,7 @@ ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesO
   };
   if (!options.IsValid(&why)) return fail(why, true);
   LoadModel model;
-  if (!model.Prepare(m, loads, &why)) return fail(why, true);
+  if (const Outcome prepared = model.Prepare(m, loads); !prepared) return fail(prepared.error(), true);
   SweepOptions sweep_options = options.sweep;
   sweep_options.order = 0;  // the table of outputs is not needed: poses are
   const SweepResult sweep = Sweep(m, sweep_options);
@@ -61,7 +106,7 @@ ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesO
 
   PositionSolver solver(m);
   result.indeterminate = solver.system().NumEquations() != solver.NumCoordinates();
-  const double speed = options.speed.value_or(0.0);
+  const ForcesContext context{loads, model, solver, options, result.indeterminate};
   Eigen::MatrixXd series;
   int missing = 0;
   for (size_t i = 0; i < sweep.inputs.size(); ++i) {
@@ -69,53 +114,12 @@ ForcesResult AnalyseForces(const Mechanism& m, const Loads& loads, const ForcesO
     row.input = sweep.inputs[i];
     row.singular = sweep.singular[i] != 0;
     row.q = sweep.poses.row(i).transpose();
-    auto skip = [&](std::string problem) {
-      row.problem = std::move(problem);
+    if (const Outcome done = ForcesAt(context, series, row); !done) {
+      row.problem = done.error();
       ++missing;
-      result.rows.push_back(row);
-    };
-    if (row.singular) {
-      skip("the pose is singular: at a limit point the drive torque to hold the loads is unbounded, at a branch point the "
-           "reactions are not determined");
-      continue;
-    }
-    Eigen::VectorXd& q = row.q;
-    const SolveReport solved = solver.Correct(row.input, q);
-    if (!solved.ok() || !solver.Series(2, series)) {
-      skip("the pose does not solve again: " + solved.message);
-      continue;
-    }
-    const PoseMotion pose(solver.system(), series, loads.metres_per_unit);
-    MotionState state;
-    state.input = row.input;
-    state.speed = speed;
-    state.time = speed != 0.0 ? (row.input - options.sweep.from) / speed : 0.0;
-    AppliedLoads applied;
-    if (!model.Evaluate(pose, state, &applied, &why)) {
-      skip(why);
-      continue;
-    }
-    if (options.speed) applied.Add(InertiaLoads(pose, loads.masses, state));
-    const ReducedInertia inertia = ReduceInertia(pose, loads.masses);
-    row.reduced_inertia = inertia.value;
-    row.reduced_inertia_derivative = inertia.derivative;
-    row.drive_virtual_work = VirtualWorkDrive(applied);
-    row.load_scale = LoadScale(pose, applied);
-    row.virtual_work = true;
-    if (result.indeterminate) {
-      skip("the joint reactions are statically indeterminate (redundant joints)");
-      continue;
-    }
-    Reactions reactions;
-    if (!JointReactions(solver, q, GeneralizedForces(pose, applied), loads.metres_per_unit, &reactions)) {
-      skip("the multipliers could not be solved for at this pose");
-      continue;
-    }
-    row.drive = reactions.drive;
-    row.joints = std::move(reactions.joints);
-    row.computed = true;
-    if (row.load_scale > 0.0)
+    } else if (row.load_scale > 0.0) {
       result.worst_disagreement = std::max(result.worst_disagreement, std::abs(row.drive - row.drive_virtual_work) / row.load_scale);
+    }
     result.rows.push_back(std::move(row));
   }
 

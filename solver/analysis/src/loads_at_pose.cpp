@@ -61,33 +61,27 @@ void AppliedLoads::Add(const AppliedLoads& other) {
   torques.insert(torques.end(), other.torques.begin(), other.torques.end());
 }
 
-bool LoadModel::Prepare(const Mechanism& mechanism, const Loads& loads, std::string* error) {
+Outcome LoadModel::Prepare(const Mechanism& mechanism, const Loads& loads) {
   mechanism_ = &mechanism;
   loads_ = &loads;
-  if (const std::vector<std::string> problems = CheckLoads(mechanism, loads); !problems.empty()) {
-    if (error) *error = problems.front();
-    return false;
-  }
+  if (const std::vector<std::string> problems = CheckLoads(mechanism, loads); !problems.empty())
+    return Outcome::Error(problems.front());
   const std::vector<std::string> variables = LoadVariables(mechanism);
-  auto compile = [&](const std::string& what, const std::string& formula, std::vector<CompiledFormula>& into) {
-    CompiledFormula f;
-    std::string why;
-    if (!f.Compile(formula, loads.parameters, variables, &why)) {
-      if (error) *error = what + ": " + why;
-      return false;
-    }
-    into.push_back(std::move(f));
-    return true;
+  auto compile = [&](const std::string& what, const std::string& formula, std::vector<CompiledFormula>& into) -> Outcome {
+    Expected<CompiledFormula> f = CompiledFormula::Compile(formula, loads.parameters, variables);
+    if (!f) return Outcome::Error(what + ": " + f.error());
+    into.push_back(std::move(*f));
+    return Done();
   };
   force_magnitudes_.clear();
   torque_magnitudes_.clear();
   for (const PointForce& f : loads.forces) {
-    if (!compile("force '" + f.name + "'", f.magnitude, force_magnitudes_)) return false;
+    if (Outcome done = compile("force '" + f.name + "'", f.magnitude, force_magnitudes_); !done) return done;
   }
   for (const LinkTorque& t : loads.torques) {
-    if (!compile("torque '" + t.name + "'", t.magnitude, torque_magnitudes_)) return false;
+    if (Outcome done = compile("torque '" + t.name + "'", t.magnitude, torque_magnitudes_); !done) return done;
   }
-  return true;
+  return Done();
 }
 
 std::vector<double> LoadModel::Variables(const PoseMotion& pose, const MotionState& state) const {
@@ -100,7 +94,7 @@ std::vector<double> LoadModel::Variables(const PoseMotion& pose, const MotionSta
   return values;
 }
 
-bool LoadModel::Evaluate(const PoseMotion& pose, const MotionState& state, AppliedLoads* out, std::string* error) const {
+Outcome LoadModel::Evaluate(const PoseMotion& pose, const MotionState& state, AppliedLoads* out) const {
   const Loads& loads = *loads_;
   const Mechanism& m = *mechanism_;
   out->forces.clear();
@@ -113,24 +107,23 @@ bool LoadModel::Evaluate(const PoseMotion& pose, const MotionState& state, Appli
   }
   const std::vector<double> variables = (loads.forces.empty() && loads.torques.empty()) ? std::vector<double>{}
                                                                                          : Variables(pose, state);
-  auto magnitude = [&](const CompiledFormula& f, const std::string& what, double* value) {
-    *value = f.Evaluate(variables.data());
-    if (std::isfinite(*value)) return true;
-    if (error) *error = what + ": formula '" + f.text() + "' has no finite value here";
-    return false;
+  auto magnitude = [&](const CompiledFormula& f, const std::string& what) -> Expected<double> {
+    const double value = f.Evaluate(variables.data());
+    if (std::isfinite(value)) return value;
+    return Expected<double>::Error(what + ": formula '" + f.text() + "' has no finite value here");
   };
   for (size_t k = 0; k < loads.forces.size(); ++k) {
     const PointForce& f = loads.forces[k];
-    double value = 0.0;
-    if (!magnitude(force_magnitudes_[k], "force '" + f.name + "'", &value)) return false;
+    const Expected<double> value = magnitude(force_magnitudes_[k], "force '" + f.name + "'");
+    if (!value) return Outcome::Error(value.error());
     const double turn = m.links[f.direction_link].is_frame ? 0.0 : pose.Angle(f.direction_link).theta;
-    out->forces.push_back({f.point.link, pose.Point(f.point), value * Rotate(turn, f.direction)});
+    out->forces.push_back({f.point.link, pose.Point(f.point), *value * Rotate(turn, f.direction)});
   }
   for (size_t k = 0; k < loads.torques.size(); ++k) {
     const LinkTorque& t = loads.torques[k];
-    double value = 0.0;
-    if (!magnitude(torque_magnitudes_[k], "torque '" + t.name + "'", &value)) return false;
-    out->torques.push_back({t.link, pose.Angle(t.link), value});
+    const Expected<double> value = magnitude(torque_magnitudes_[k], "torque '" + t.name + "'");
+    if (!value) return Outcome::Error(value.error());
+    out->torques.push_back({t.link, pose.Angle(t.link), *value});
   }
   // springs and dampers: the tension pulls `from` towards `to` and `to` towards `from`
   const double speed = state.speed * pose.metres_per_input();
@@ -138,17 +131,15 @@ bool LoadModel::Evaluate(const PoseMotion& pose, const MotionState& state, Appli
     const PointMotion a = pose.Point(s.from), b = pose.Point(s.to);
     const Eigen::Vector2d d = b.p - a.p;
     const double r = d.norm();
-    if (!(r > 0.0)) {
-      if (error) *error = "spring '" + s.name + "': its two points coincide, so its line of action is undefined";
-      return false;
-    }
+    if (!(r > 0.0))
+      return Outcome::Error("spring '" + s.name + "': its two points coincide, so its line of action is undefined");
     const Eigen::Vector2d u = d / r;
     const double rate = u.dot(b.d1 - a.d1) * speed;  // dr/dt
     const double tension = s.stiffness * (r - s.free_length * pose.metres_per_unit()) + s.damping * rate;
     out->forces.push_back({s.from.link, a, tension * u});
     out->forces.push_back({s.to.link, b, -tension * u});
   }
-  return true;
+  return Done();
 }
 
 double LoadModel::PotentialEnergy(const PoseMotion& pose) const {

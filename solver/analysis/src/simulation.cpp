@@ -61,8 +61,8 @@ class Dynamics {
     state.speed = speed;
     state.time = t;
     AppliedLoads applied;
-    std::string why;
-    if (!model_.Evaluate(pose, state, &applied, &why)) throw Stop{why + " " + Where(m_, t, input)};
+    if (const Outcome evaluated = model_.Evaluate(pose, state, &applied); !evaluated)
+      throw Stop{evaluated.error() + " " + Where(m_, t, input)};
     Point p;
     p.drive = DriveTorque(pose, state);
     const ReducedInertia inertia = ReduceInertia(pose, loads_.masses);
@@ -130,19 +130,15 @@ class Dynamics {
   long evaluations_ = 0;
 };
 
-bool CheckDriveLaw(const DriveLaw& drive, std::string* why) {
-  if (drive.kind != DriveLaw::Kind::kMotor) return true;
-  if (drive.speeds.size() < 2 || drive.speeds.size() != drive.torques.size()) {
-    *why = "a motor curve needs at least two points (speed, torque)";
-    return false;
-  }
+Outcome CheckDriveLaw(const DriveLaw& drive) {
+  if (drive.kind != DriveLaw::Kind::kMotor) return Done();
+  if (drive.speeds.size() < 2 || drive.speeds.size() != drive.torques.size())
+    return Outcome::Error("a motor curve needs at least two points (speed, torque)");
   for (size_t k = 0; k < drive.speeds.size(); ++k) {
-    if (!std::isfinite(drive.speeds[k]) || !std::isfinite(drive.torques[k]) || (k > 0 && !(drive.speeds[k] > drive.speeds[k - 1]))) {
-      *why = "the motor curve's speeds must be finite and strictly ascending, its torques finite";
-      return false;
-    }
+    if (!std::isfinite(drive.speeds[k]) || !std::isfinite(drive.torques[k]) || (k > 0 && !(drive.speeds[k] > drive.speeds[k - 1])))
+      return Outcome::Error("the motor curve's speeds must be finite and strictly ascending, its torques finite");
   }
-  return true;
+  return Done();
 }
 
 }  // namespace
@@ -180,10 +176,14 @@ SimulationResult Simulate(const Mechanism& m, const Loads& loads, const DriveLaw
   std::string why;
   if (!options.IsValid(&why)) return fail(why, true);
   LoadModel model;
+  if (const Outcome prepared = model.Prepare(m, loads); !prepared) return fail(prepared.error(), true);
+  if (const Outcome checked = CheckDriveLaw(drive); !checked) return fail(checked.error(), true);
   CompiledFormula formula;
-  if (!model.Prepare(m, loads, &why) || !CheckDriveLaw(drive, &why) ||
-      (drive.kind == DriveLaw::Kind::kFormula && !formula.Compile(drive.formula, loads.parameters, LoadVariables(m), &why)))
-    return fail(why, true);
+  if (drive.kind == DriveLaw::Kind::kFormula) {
+    Expected<CompiledFormula> compiled = CompiledFormula::Compile(drive.formula, loads.parameters, LoadVariables(m));
+    if (!compiled) return fail(compiled.error(), true);
+    formula = std::move(*compiled);
+  }
   if (!loads.HasMass()) return fail("no link has a mass or a moment of inertia: the motion is not determined", true);
 
   PositionSolver solver(m);

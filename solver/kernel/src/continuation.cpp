@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 namespace koppel {
 namespace {
@@ -205,7 +207,8 @@ SolveReport Continuation::Start(double input, const Eigen::VectorXd& q) {
 }
 
 const Eigen::MatrixXd& Continuation::Series(int order) {
-  order = std::clamp(order, 0, kMaxOrder);
+  if (order < 0 || order > kMaxOrder)
+    throw std::out_of_range("Continuation::Series: order " + std::to_string(order) + " outside 0.." + std::to_string(kMaxOrder));
   if (from_window_) {
     // orders up to 3 from the interpolant; higher ones through J^-1 where the pose is regular
     if (order <= kWindowOrder || series_order_ >= order) return series_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 namespace koppel {
@@ -39,8 +40,16 @@ JacobianCheckResult CheckJacobian(const ConstraintSystem& system, const double* 
       result.max_abs_error = std::max(result.max_abs_error, error);
     }
   }
-  result.ok = result.max_rel_error <= tolerance;
+  result.status = result.max_rel_error <= tolerance ? JacobianCheckStatus::kAgrees : JacobianCheckStatus::kDisagrees;
   return result;
+}
+
+std::string JacobianCheckResult::Brief() const {
+  if (status == JacobianCheckStatus::kNotRun) return "not run";
+  char text[160];
+  std::snprintf(text, sizeof text, "%s: relative error %.1e at equation %d, coordinate %d",
+                ok() ? "agrees" : "disagrees", max_rel_error, worst_row, worst_col);
+  return text;
 }
 
 JacobianCheckResult CheckJacobian(const ConstraintSystem& system, const double* q, double input, double tolerance) {

@@ -262,25 +262,24 @@ std::string SerialiseAtlas(const std::vector<AtlasEntry>& entries) {
   return out;
 }
 
-bool ParseAtlas(const std::string& bytes, std::vector<AtlasEntry>* entries, std::string* error) {
+Expected<std::vector<AtlasEntry>> ParseAtlas(const std::string& bytes) {
+  using Result = Expected<std::vector<AtlasEntry>>;
   if (bytes.size() < kHeaderBytes || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) {
-    *error = "not a koppel atlas (no KOPPEL-ATLAS header)";
-    return false;
+    return Result::Error("not a koppel atlas (no KOPPEL-ATLAS header)");
   }
   const char* p = bytes.data() + sizeof kMagic;
   const auto version = Get<std::uint32_t>(p), features = Get<std::uint32_t>(p);
   const auto count = Get<std::uint64_t>(p);
   if (version != kFormatVersion || features != kAtlasFeatures) {
-    *error = fmt::format("atlas format {} with {} features; this koppel reads format {} with {}", version, features, kFormatVersion, kAtlasFeatures);
-    return false;
+    return Result::Error(fmt::format("atlas format {} with {} features; this koppel reads format {} with {}", version, features,
+                                     kFormatVersion, kAtlasFeatures));
   }
   if (count > kMaxAtlasCurves || bytes.size() != AtlasFileSize(count)) {
-    *error = fmt::format("the header promises {} curves ({} bytes) but the file has {} bytes (truncated or not an atlas)", count,
-                         count > kMaxAtlasCurves ? 0 : AtlasFileSize(count), bytes.size());
-    return false;
+    return Result::Error(fmt::format("the header promises {} curves ({} bytes) but the file has {} bytes (truncated or not an atlas)",
+                                     count, count > kMaxAtlasCurves ? 0 : AtlasFileSize(count), bytes.size()));
   }
-  entries->resize(count);
-  for (AtlasEntry& e : *entries) {
+  std::vector<AtlasEntry> entries(count);
+  for (AtlasEntry& e : entries) {
     e.seed = Get<std::uint64_t>(p);
     e.index = Get<std::uint64_t>(p);
     e.crank = Get<double>(p);
@@ -296,31 +295,26 @@ bool ParseAtlas(const std::string& bytes, std::vector<AtlasEntry>* entries, std:
     bool finite = std::isfinite(e.crank) && std::isfinite(e.coupler) && std::isfinite(e.rocker) && std::isfinite(e.p) && std::isfinite(e.q);
     for (float v : e.descriptor) finite = finite && std::isfinite(v);
     if (!finite || !(e.crank > 0 && e.coupler > 0 && e.rocker > 0) || std::abs(e.branch) != 1 || std::abs(e.side) != 1 || e.closed > 1) {
-      *error = fmt::format("entry {} (seed {}, index {}) is malformed", &e - entries->data(), e.seed, e.index);
-      return false;
+      return Result::Error(fmt::format("entry {} (seed {}, index {}) is malformed", &e - entries.data(), e.seed, e.index));
     }
   }
-  return true;
+  return entries;
 }
 
-bool MergeAtlases(std::vector<std::vector<AtlasEntry>> parts, std::vector<AtlasEntry>* merged, std::string* error) {
+Expected<std::vector<AtlasEntry>> MergeAtlases(std::vector<std::vector<AtlasEntry>> parts) {
+  using Result = Expected<std::vector<AtlasEntry>>;
   std::uint64_t total = 0;
   for (const auto& part : parts) total += part.size();
-  if (total > kMaxAtlasCurves) {
-    *error = fmt::format("{} curves together: more than {}", total, kMaxAtlasCurves);
-    return false;
+  if (total > kMaxAtlasCurves) return Result::Error(fmt::format("{} curves together: more than {}", total, kMaxAtlasCurves));
+  std::vector<AtlasEntry> merged;
+  merged.reserve(total);
+  for (auto& part : parts) merged.insert(merged.end(), part.begin(), part.end());
+  std::sort(merged.begin(), merged.end(), [](const AtlasEntry& a, const AtlasEntry& b) { return a.seed != b.seed ? a.seed < b.seed : a.index < b.index; });
+  for (size_t i = 1; i < merged.size(); ++i) {
+    if (merged[i].seed == merged[i - 1].seed && merged[i].index == merged[i - 1].index)
+      return Result::Error(fmt::format("curve {} of seed {} appears twice (a shard given twice?)", merged[i].index, merged[i].seed));
   }
-  merged->clear();
-  merged->reserve(total);
-  for (auto& part : parts) merged->insert(merged->end(), part.begin(), part.end());
-  std::sort(merged->begin(), merged->end(), [](const AtlasEntry& a, const AtlasEntry& b) { return a.seed != b.seed ? a.seed < b.seed : a.index < b.index; });
-  for (size_t i = 1; i < merged->size(); ++i) {
-    if ((*merged)[i].seed == (*merged)[i - 1].seed && (*merged)[i].index == (*merged)[i - 1].index) {
-      *error = fmt::format("curve {} of seed {} appears twice (a shard given twice?)", (*merged)[i].index, (*merged)[i].seed);
-      return false;
-    }
-  }
-  return true;
+  return merged;
 }
 
 }  // namespace koppel

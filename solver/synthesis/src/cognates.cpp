@@ -1,6 +1,7 @@
 #include "koppel/synthesis/cognates.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/build.hpp"
 
 #include "koppel/solver/position.hpp"
 #include "koppel/solver/sweep.hpp"
@@ -16,15 +17,12 @@ using Complex = std::complex<double>;
 Eigen::Vector2d V(Complex z) { return {z.real(), z.imag()}; }
 
 // A binary link with its body frame at `from`, x along `from -> to`, and extra points.
-Link LinkAlong(const std::string& name, const std::string& from_name, Complex from, const std::string& to_name, Complex to,
-               const std::vector<std::pair<std::string, Complex>>& extra = {}) {
+void AddLinkAlong(Mechanism& m, const std::string& name, const std::string& from_name, Complex from, const std::string& to_name,
+                  Complex to, const std::vector<std::pair<std::string, Complex>>& extra = {}) {
   const Complex axis = (to - from) / std::abs(to - from);
-  Link link;
-  link.name = name;
-  link.points.push_back({from_name, Eigen::Vector2d::Zero()});
-  link.points.push_back({to_name, Eigen::Vector2d(std::abs(to - from), 0.0)});
-  for (const auto& [n, z] : extra) link.points.push_back({n, V((z - from) / axis)});
-  return link;
+  PointList points = {{from_name, Eigen::Vector2d::Zero()}, {to_name, Eigen::Vector2d(std::abs(to - from), 0.0)}};
+  for (const auto& [n, z] : extra) points.push_back({n, V((z - from) / axis)});
+  AddLink(m, name, points);
 }
 
 // Frame, crank, coupler (with K), rocker, pinned in a loop; drive at the crank's frame pivot.
@@ -32,30 +30,25 @@ Mechanism BuildFourBar(const std::string& name, const std::string& p0, Complex z
                        const std::string& p2, Complex z2, const std::string& p3, Complex z3, Complex k, double input) {
   Mechanism m;
   m.name = name;
-  Link frame;
-  frame.name = "frame";
-  frame.is_frame = true;
-  frame.points = {{p0, V(z0)}, {p3, V(z3)}};
-  m.links = {frame, LinkAlong("crank", p0, z0, p1, z1), LinkAlong("coupler", p1, z1, p2, z2, {{"K", k}}),
-             LinkAlong("rocker", p3, z3, p2, z2)};
-  m.joints = {PinJoint(m, p0, 0, 1), PinJoint(m, p1, 1, 2), PinJoint(m, p2, 2, 3), PinJoint(m, p3, 0, 3)};
-  m.drive.joint = 0;
+  AddLink(m, "frame", {{p0, V(z0)}, {p3, V(z3)}}, true);
+  AddLinkAlong(m, "crank", p0, z0, p1, z1);
+  AddLinkAlong(m, "coupler", p1, z1, p2, z2, {{"K", k}});
+  AddLinkAlong(m, "rocker", p3, z3, p2, z2);
+  Revolute(m, p0, "frame", "crank");
+  Revolute(m, p1, "crank", "coupler");
+  Revolute(m, p2, "coupler", "rocker");
+  Revolute(m, p3, "frame", "rocker");
   // joint angle = crank direction; the input reads `input` at this pose
-  m.drive.zero = std::arg(z1 - z0) - input;
-  m.drive.input_name = "phi";
-  Output out;
-  out.name = "K";
-  out.kind = OutputKind::kPoint;
-  out.p = {2, 2};
-  m.outputs = {out};
-  m.hint.input = input;
-  for (int l = 1; l <= 3; ++l) {
-    for (int p = 0; p < static_cast<int>(m.links[l].points.size()); ++p) {
-      const std::string& pn = m.links[l].points[p].name;
-      const Complex z = pn == p1 ? z1 : pn == p2 ? z2 : pn == "K" ? k : (pn == p0 ? z0 : z3);
-      m.hint.points.push_back({{l, p}, V(z)});
-    }
-  }
+  SetDrive(m, p0, std::arg(z1 - z0) - input);
+  PointOutput(m, "K", "coupler", "K");
+  HintInput(m, input);
+  HintPoint(m, "crank", p0, V(z0));
+  HintPoint(m, "crank", p1, V(z1));
+  HintPoint(m, "coupler", p1, V(z1));
+  HintPoint(m, "coupler", p2, V(z2));
+  HintPoint(m, "coupler", "K", V(k));
+  HintPoint(m, "rocker", p3, V(z3));
+  HintPoint(m, "rocker", p2, V(z2));
   return m;
 }
 

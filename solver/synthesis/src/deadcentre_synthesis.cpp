@@ -2,6 +2,7 @@
 // sense, its arc LE, the design at a given beta or lambda, and the one with the largest mu_min.
 #include "koppel/synthesis/deadcentre_synthesis.hpp"
 
+#include "bar_linkages.hpp"
 #include "design_proof.hpp"
 #include "maximise.hpp"
 
@@ -133,9 +134,9 @@ bool ArcAround(const CrankRockerRequest& r, double x, double* beta_l, double* be
   // walk the grid outwards from x to the first inadmissible samples
   double lo = std::clamp(x, 0.0, kLambdaDecades), hi = lo;
   if (!score(lo)) {
-    const GridMaximum any = MaximiseOnGrid(score, 0, kLambdaDecades, kSearchSamples, h);
-    if (!any.found) return false;
-    lo = hi = any.x;
+    const std::optional<GridMaximum> any = MaximiseOnGrid(score, 0, kLambdaDecades, kSearchSamples, h);
+    if (!any) return false;
+    lo = hi = any->x;
   }
   while (lo - h >= 0 && score(lo - h)) lo -= h;
   while (hi + h <= kLambdaDecades && score(hi + h)) hi += h;
@@ -174,7 +175,7 @@ CrankRockerDesign Prove(const CrankRockerRequest& r, const Geometry& g) {
   const double closed_form_mu = ClosedFormMuMin(g, r.frame_length);
   // the turn starts half-way round the arc from the extended to the folded dead centre
   const CrankReanalysis check = ReanalyseCrank(CrankRockerMechanism(d), 0, 1, d.phi_a + (2 * kPi - r.phi0) / 2);
-  if (!check.ok) return Failed(r, DesignStatus::kReanalysisFailed, "re-analysis: " + check.message);
+  if (!check.ok()) return Failed(r, DesignStatus::kReanalysisFailed, "re-analysis: " + check.message);
   d.reanalysed_phi0 = check.phi0;
   d.reanalysed_psi = check.turn;
   d.mu_min = check.mu_min;
@@ -265,12 +266,13 @@ CrankRockerDesign CrankRockerFromLambda(const CrankRockerRequest& r, double lamb
 CrankRockerDesign BestCrankRocker(const CrankRockerRequest& r) {
   std::string why;
   if (!r.IsValid(&why)) return Failed(r, DesignStatus::kInvalidRequest, why);
-  const GridMaximum best = MaximiseOnGrid(MuMinScore(r), 0, kLambdaDecades, kSearchSamples, 1e-13);
-  if (!best.found) return Failed(r, DesignStatus::kNoDesign, "no crank-rocker has " + Describe(r));
+  const std::optional<GridMaximum> found = MaximiseOnGrid(MuMinScore(r), 0, kLambdaDecades, kSearchSamples, 1e-13);
+  if (!found) return Failed(r, DesignStatus::kNoDesign, "no crank-rocker has " + Describe(r));
   // Where the admissible stretch ends because a link vanishes (rather than at mu = 0), mu_min
   // may still grow towards that end: when the end is as good as the maximum, there is no best
   // crank-rocker, only a degenerate limit (phi0 = 180 deg: crank and rocker shrink to nothing).
   const DesignScore score = MuMinScore(r);
+  const GridMaximum& best = *found;
   for (const auto& [inside, outside] : {std::pair{best.run_first, best.before_run}, std::pair{best.run_last, best.after_run}}) {
     if (inside == outside) continue;
     const Geometry beyond = FromLambda(r, std::exp(-outside));
@@ -290,28 +292,12 @@ CrankRockerDesign BestCrankRocker(const CrankRockerRequest& r) {
 }
 
 Mechanism CrankRockerMechanism(const CrankRockerDesign& d) {
-  Mechanism m;
-  m.name = "crank-rocker";
-  m.links = {{"frame", true, {{"A0", {0, 0}}, {"B0", {d.l4, 0}}}},
-             {"crank", false, {{"A0", {0, 0}}, {"A", {d.l1, 0}}}},
-             {"coupler", false, {{"A", {0, 0}}, {"B", {d.l2, 0}}}},
-             {"rocker", false, {{"B0", {0, 0}}, {"B", {d.l3, 0}}}}};
-  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3), PinJoint(m, "B0", 0, 3)};
-  m.drive.joint = 0;
-  Output psi;
-  psi.name = "psi";
-  psi.kind = OutputKind::kLinkAngle;
-  psi.link = 3;
-  Output mu;
-  mu.name = "mu";
-  mu.kind = OutputKind::kTransmissionAngle;
-  mu.link = 2;
-  mu.joint = 2;
-  m.outputs = {psi, mu};
+  Mechanism m = BarFourBar("crank-rocker", {0, 0}, {d.l4, 0}, d.l1, d.l2, d.l3);
   // assembled in the extended dead centre: B_a on the ray at phi_a
-  m.hint.input = d.phi_a;
+  HintInput(m, d.phi_a);
   const Eigen::Vector2d ba = (d.l1 + d.l2) * Eigen::Vector2d(std::cos(d.phi_a), std::sin(d.phi_a));
-  m.hint.points = {{{2, 1}, ba}, {{3, 1}, ba}};
+  HintPoint(m, "coupler", "B", ba);
+  HintPoint(m, "rocker", "B", ba);
   return m;
 }
 

@@ -23,18 +23,22 @@ SweepOptions FullTurn(double from) {
 
 double Mod2Pi(double a) { return std::fmod(std::fmod(a, 2 * kPi) + 2 * kPi, 2 * kPi); }
 
+CrankReanalysis Failed(CrankReanalysis& r, std::string message) {
+  r.status = AnalysisStatus::kFailed;
+  r.message = std::move(message);
+  return r;
+}
+
 }  // namespace
 
 CrankReanalysis ReanalyseCrank(const Mechanism& m, int stroke_output, int mu_output, double quiet_input) {
   CrankReanalysis r;
   const DeadCentreReport dc = FindDeadCentres(m, stroke_output, 0, FullTurn(quiet_input));
   if (!dc.sweep.complete()) {
-    r.message = "the solver cannot drive the crank through a full turn: " + dc.sweep.message;
-    return r;
+    return Failed(r, "the solver cannot drive the crank through a full turn: " + dc.sweep.message);
   }
   if (!dc.classified || dc.points.size() != 2) {
-    r.message = "the solver finds " + std::to_string(dc.points.size()) + " dead centres, not one extended and one folded";
-    return r;
+    return Failed(r, "the solver finds " + std::to_string(dc.points.size()) + " dead centres, not one extended and one folded");
   }
   r.phi0 = Mod2Pi(dc.phi_a - dc.phi_i);
   r.turn = m.OutputIsAngle(stroke_output) ? AngleDifference(dc.s_a, dc.s_i) : dc.s_a - dc.s_i;
@@ -42,8 +46,7 @@ CrankReanalysis ReanalyseCrank(const Mechanism& m, int stroke_output, int mu_out
   // for them starts a radian away from the crank-along-the-frame positions where they sit
   const DeadCentreReport mu = FindDeadCentres(m, mu_output, 0, FullTurn(1.0));
   if (!mu.sweep.complete()) {
-    r.message = "the solver cannot drive the crank through a full turn: " + mu.sweep.message;
-    return r;
+    return Failed(r, "the solver cannot drive the crank through a full turn: " + mu.sweep.message);
   }
   r.mu_min = std::numeric_limits<double>::infinity();
   for (const DeadCentre& p : mu.points) {
@@ -53,10 +56,9 @@ CrankReanalysis ReanalyseCrank(const Mechanism& m, int stroke_output, int mu_out
     }
   }
   if (!std::isfinite(r.mu_min)) {
-    r.message = "the solver finds no smallest transmission angle over the turn";
-    return r;
+    return Failed(r, "the solver finds no smallest transmission angle over the turn");
   }
-  r.ok = true;
+  r.status = AnalysisStatus::kComplete;
   return r;
 }
 

@@ -2,6 +2,7 @@
 // dead-centre design passes before it is returned (deadcentre_synthesis.hpp).
 #pragma once
 
+#include "koppel/analysis/status.hpp"
 #include "koppel/core/mechanism.hpp"
 
 #include <string>
@@ -9,13 +10,14 @@
 namespace koppel {
 
 struct CrankReanalysis {
-  bool ok = false;
-  std::string message;   // why not, when !ok
+  AnalysisStatus status = AnalysisStatus::kNotRun;  // complete or failed: there is no partial proof
+  std::string message;   // why not, when failed
   double phi0 = 0;       // crank angle from the folded to the extended dead centre, counter-clockwise
   double turn = 0;       // output change from the folded to the extended dead centre (angles wrapped
                          // to (-pi, pi]: > 0 counter-clockwise)
   double mu_min = 0;     // smallest transmission angle over a full turn
   double mu_min_at = 0;  // input where it occurs, in [-pi, pi]
+  bool ok() const { return status == AnalysisStatus::kComplete; }
 };
 
 // Drives the crank through a full turn with the solver and finds the extended and folded dead

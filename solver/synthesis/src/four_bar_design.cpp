@@ -1,5 +1,7 @@
 #include "koppel/synthesis/four_bar_design.hpp"
 
+#include "koppel/core/build.hpp"
+
 #include <cmath>
 
 namespace koppel {
@@ -16,12 +18,9 @@ Eigen::Vector2d Local(const Eigen::Vector2d& global, const Eigen::Vector2d& orig
 }
 
 // A binary link with its body x axis along from -> to.
-Link Bar(const std::string& name, const std::string& from_name, const Eigen::Vector2d& from, const std::string& to_name,
-         const Eigen::Vector2d& to) {
-  Link link;
-  link.name = name;
-  link.points = {{from_name, Eigen::Vector2d::Zero()}, {to_name, Eigen::Vector2d((to - from).norm(), 0.0)}};
-  return link;
+void AddBar(Mechanism& m, const std::string& name, const std::string& from_name, const Eigen::Vector2d& from,
+            const std::string& to_name, const Eigen::Vector2d& to) {
+  AddLink(m, name, {{from_name, Eigen::Vector2d::Zero()}, {to_name, Eigen::Vector2d((to - from).norm(), 0.0)}});
 }
 
 }  // namespace
@@ -29,44 +28,30 @@ Link Bar(const std::string& name, const std::string& from_name, const Eigen::Vec
 Mechanism DesignedFourBar(const FourBarGeometry& g, const std::string& name) {
   Mechanism m;
   m.name = name;
-  Link frame;
-  frame.name = "frame";
-  frame.is_frame = true;
-  frame.points = {{"A0", g.a0}, {"B0", g.b0}};
-  Link coupler;
-  coupler.name = "coupler";
-  coupler.points = {{"A", Local(g.a, g.plane_origin, g.plane_angle)},
-                    {"B", Local(g.b, g.plane_origin, g.plane_angle)},
-                    {"P", Eigen::Vector2d::Zero()}};
-  m.links = {frame, Bar("crank", "A0", g.a0, "A", g.a), coupler, Bar("rocker", "B0", g.b0, "B", g.b)};
-  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3), PinJoint(m, "B0", 0, 3)};
+  AddLink(m, "frame", {{"A0", g.a0}, {"B0", g.b0}}, true);
+  AddBar(m, "crank", "A0", g.a0, "A", g.a);
+  AddLink(m, "coupler", {{"A", Local(g.a, g.plane_origin, g.plane_angle)},
+                         {"B", Local(g.b, g.plane_origin, g.plane_angle)},
+                         {"P", Eigen::Vector2d::Zero()}});
+  AddBar(m, "rocker", "B0", g.b0, "B", g.b);
+  Revolute(m, "A0", "frame", "crank");
+  Revolute(m, "A", "crank", "coupler");
+  Revolute(m, "B", "coupler", "rocker");
+  Revolute(m, "B0", "frame", "rocker");
   // joint angle of A0 = the crank's angle against +x; the input reads `input` in this pose
   const double crank_angle = Angle(g.a - g.a0);
-  m.drive.joint = 0;
-  m.drive.input_name = "phi";
-  m.drive.zero = crank_angle - g.input.value_or(crank_angle);
-  Output p;
-  p.name = "P";
-  p.kind = OutputKind::kPoint;
-  p.p = {2, 2};
-  Output theta;
-  theta.name = "theta";
-  theta.kind = OutputKind::kLinkAngle;
-  theta.link = 2;
-  Output psi;
-  psi.name = "psi";
-  psi.kind = OutputKind::kLinkAngle;
-  psi.link = 3;
+  SetDrive(m, "A0", crank_angle - g.input.value_or(crank_angle));
+  PointOutput(m, "P", "coupler", "P");
+  LinkAngleOutput(m, "theta", "coupler");
   const double rocker_angle = Angle(g.b - g.b0);
-  psi.offset = rocker_angle - g.psi.value_or(rocker_angle);
-  Output mu;
-  mu.name = "mu";
-  mu.kind = OutputKind::kTransmissionAngle;
-  mu.link = 2;
-  mu.joint = 2;
-  m.outputs = {p, theta, psi, mu};
-  m.hint.input = g.input.value_or(crank_angle);
-  m.hint.points = {{{1, 1}, g.a}, {{2, 0}, g.a}, {{2, 1}, g.b}, {{2, 2}, g.plane_origin}, {{3, 1}, g.b}};
+  LinkAngleOutput(m, "psi", "rocker").offset = rocker_angle - g.psi.value_or(rocker_angle);
+  TransmissionOutput(m, "mu", "coupler", "B");
+  HintInput(m, g.input.value_or(crank_angle));
+  HintPoint(m, "crank", "A", g.a);
+  HintPoint(m, "coupler", "A", g.a);
+  HintPoint(m, "coupler", "B", g.b);
+  HintPoint(m, "coupler", "P", g.plane_origin);
+  HintPoint(m, "rocker", "B", g.b);
   return m;
 }
 

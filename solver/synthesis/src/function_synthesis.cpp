@@ -1,5 +1,7 @@
 #include "koppel/synthesis/function_synthesis.hpp"
 
+#include "bar_linkages.hpp"
+
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
 #include "koppel/synthesis/fit.hpp"
@@ -10,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 
 namespace koppel {
@@ -30,26 +33,12 @@ std::optional<Mechanism> FourBarAt(const Dimensions& dim, double d, double phi, 
   const Eigen::Vector2d a0(0, 0), b0(d, 0), a = dim.a * Eigen::Vector2d(std::cos(phi), std::sin(phi));
   const std::optional<Eigen::Vector2d> b = FourBarJointB(a, b0, dim.b, dim.third, branch);
   if (!b) return std::nullopt;
-  Mechanism m;
-  m.name = "function-generator";
-  m.links = {{"frame", true, {{"A0", a0}, {"B0", b0}}},
-             {"crank", false, {{"A0", {0, 0}}, {"A", {dim.a, 0}}}},
-             {"coupler", false, {{"A", {0, 0}}, {"B", {dim.b, 0}}}},
-             {"rocker", false, {{"B0", {0, 0}}, {"B", {dim.third, 0}}}}};
-  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3), PinJoint(m, "B0", 0, 3)};
-  m.drive.joint = 0;
-  Output psi;
-  psi.name = "psi";
-  psi.kind = OutputKind::kLinkAngle;
-  psi.link = 3;
-  Output mu;
-  mu.name = "mu";
-  mu.kind = OutputKind::kTransmissionAngle;
-  mu.link = 2;
-  mu.joint = 2;
-  m.outputs = {psi, mu};
-  m.hint.input = phi;
-  m.hint.points = {{{1, 1}, a}, {{2, 0}, a}, {{2, 1}, *b}, {{3, 1}, *b}};
+  Mechanism m = BarFourBar("function-generator", a0, b0, dim.a, dim.b, dim.third);
+  HintInput(m, phi);
+  HintPoint(m, "crank", "A", a);
+  HintPoint(m, "coupler", "A", a);
+  HintPoint(m, "coupler", "B", *b);
+  HintPoint(m, "rocker", "B", *b);
   return m;
 }
 
@@ -60,39 +49,20 @@ std::optional<Mechanism> SliderCrankAt(const Dimensions& dim, double phi, int br
   const double h2 = dim.b * dim.b - std::pow(e - a.y(), 2);
   if (!(h2 >= 0)) return std::nullopt;
   const Eigen::Vector2d b(a.x() + branch * std::sqrt(h2), e);
-  Mechanism m;
-  m.name = "function-generator";
-  m.links = {{"frame", true, {{"A0", {0, 0}}, {"F", {0, e}}}},
-             {"crank", false, {{"A0", {0, 0}}, {"A", {dim.a, 0}}}},
-             {"coupler", false, {{"A", {0, 0}}, {"B", {std::abs(dim.b), 0}}}},
-             {"slider", false, {{"B", {0, 0}}}}};
-  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3)};
-  Joint slide;
-  slide.name = "S";
-  slide.type = JointType::kPrismatic;
-  slide.link_a = 0;
-  slide.point_a = 1;
-  slide.link_b = 3;
-  slide.point_b = 0;
-  m.joints.push_back(slide);
-  m.drive.joint = 0;
-  Output s;
-  s.name = "s";
-  s.kind = OutputKind::kJoint;
-  s.joint = 3;
-  Output mu;
-  mu.name = "mu";
-  mu.kind = OutputKind::kTransmissionAngle;
-  mu.link = 2;
-  mu.joint = 2;
-  m.outputs = {s, mu};
-  m.hint.input = phi;
-  m.hint.points = {{{1, 1}, a}, {{2, 0}, a}, {{2, 1}, b}, {{3, 0}, b}};
+  Mechanism m = BarSliderCrank("function-generator", {0, 0}, {0, e}, {dim.a, 0}, std::abs(dim.b));
+  HintInput(m, phi);
+  HintPoint(m, "crank", "A", a);
+  HintPoint(m, "coupler", "A", a);
+  HintPoint(m, "coupler", "B", b);
+  HintPoint(m, "slider", "B", b);
   return m;
 }
 
-// The linear equations through the precision points; false for a degenerate solution.
-bool SolveLinear(const FunctionRequest& r, const std::vector<double>& phi, const std::vector<double>& out, Dimensions* dim, std::string* why) {
+// The linear equations through the precision points (least squares for more than three); an
+// error for a degenerate solution.
+Expected<Dimensions> SolveLinear(const FunctionRequest& r, const std::vector<double>& phi, const std::vector<double>& out) {
+  using Result = Expected<Dimensions>;
+  Dimensions dim;
   const int n = static_cast<int>(phi.size());
   Eigen::MatrixXd m(n, 3);
   Eigen::VectorXd rhs(n);
@@ -107,41 +77,40 @@ bool SolveLinear(const FunctionRequest& r, const std::vector<double>& phi, const
   }
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(m);
   if (qr.rank() < 3) {
-    *why = "the precision points make the linear equations singular";
-    return false;
+    return Result::Error("the precision points make the linear equations singular");
   }
   const Eigen::Vector3d k = qr.solve(rhs);
   if (r.type == FunctionGenerator::kFourBar) {
     const double d = r.frame;
     // R1 = -d/c, R2 = d/a, R3 = (a^2 - b^2 + c^2 + d^2) / (2ac)
-    dim->third = -d / k[0];
-    dim->a = d / k[1];
-    const double b2 = dim->a * dim->a + dim->third * dim->third + d * d - 2 * dim->a * dim->third * k[2];
-    if (!(std::isfinite(dim->a) && std::isfinite(dim->third) && b2 > std::pow(kShortestLink * d, 2))) {
-      *why = "Freudenstein's equation gives no real coupler length for these precision points";
-      return false;
+    dim.third = -d / k[0];
+    dim.a = d / k[1];
+    const double b2 = dim.a * dim.a + dim.third * dim.third + d * d - 2 * dim.a * dim.third * k[2];
+    if (!(std::isfinite(dim.a) && std::isfinite(dim.third) && b2 > std::pow(kShortestLink * d, 2))) {
+      return Result::Error("Freudenstein's equation gives no real coupler length for these precision points");
     }
-    dim->b = std::sqrt(b2);
+    dim.b = std::sqrt(b2);
   } else {
-    dim->a = k[0] / 2;
-    dim->third = k[1] / k[0];
-    const double b2 = dim->a * dim->a + dim->third * dim->third - k[2];
-    if (!(std::isfinite(dim->a) && std::isfinite(dim->third) && b2 > 0)) {
-      *why = "the slider-crank's equation gives no real coupler length for these precision points";
-      return false;
+    dim.a = k[0] / 2;
+    dim.third = k[1] / k[0];
+    const double b2 = dim.a * dim.a + dim.third * dim.third - k[2];
+    if (!(std::isfinite(dim.a) && std::isfinite(dim.third) && b2 > 0)) {
+      return Result::Error("the slider-crank's equation gives no real coupler length for these precision points");
     }
-    dim->b = std::sqrt(b2);
+    dim.b = std::sqrt(b2);
   }
-  return true;
+  return dim;
 }
 
 }  // namespace
 
 const char* ToString(FunctionStatus status) {
   switch (status) {
+    case FunctionStatus::kNotRun: return "not run";
     case FunctionStatus::kOk: return "ok";
     case FunctionStatus::kNotDrivable: return "not drivable over the input range";
     case FunctionStatus::kNoMechanism: return "no mechanism";
+    case FunctionStatus::kMissesPoints: return "misses the precision points";
     case FunctionStatus::kInvalidRequest: return "invalid request";
   }
   return "?";
@@ -181,98 +150,77 @@ bool FunctionRequest::IsValid(std::string* why) const {
   return problem.empty();
 }
 
-FunctionDesign SynthesiseFunction(const FunctionRequest& r) {
-  FunctionDesign design;
-  if (!r.IsValid(&design.message)) return design;
-  const bool four_bar = r.type == FunctionGenerator::kFourBar;
-  double y_from = 0, y_to = 0;
-  if (!r.function(r.x_from, &y_from) || !r.function(r.x_to, &y_to) || y_from == y_to) {
-    design.message = "f must be defined at both ends of the x range and differ there";
-    return design;
-  }
-  auto input_of = [&](double x) { return r.input_from + (x - r.x_from) / (r.x_to - r.x_from) * (r.input_to - r.input_from); };
-  auto desired = [&](double x, double* out) {
+namespace {
+
+// The request's linear maps: x to the input, f(x) to the output.
+class FunctionMap {
+ public:
+  explicit FunctionMap(const FunctionRequest& r) : r_(r) {}
+  // f at both ends of the x range; false when it is undefined there or equal at both ends
+  bool Prepare() { return r_.function(r_.x_from, &y_from_) && r_.function(r_.x_to, &y_to_) && y_from_ != y_to_; }
+  double Input(double x) const { return r_.input_from + (x - r_.x_from) / (r_.x_to - r_.x_from) * (r_.input_to - r_.input_from); }
+  double X(double input) const { return r_.x_from + (input - r_.input_from) / (r_.input_to - r_.input_from) * (r_.x_to - r_.x_from); }
+  // the output that f(x) maps to; nullopt where f has no finite value
+  std::optional<double> Output(double x) const {
     double y = 0;
-    if (!r.function(x, &y)) return false;
-    *out = r.output_from + (y - y_from) / (y_to - y_from) * (r.output_to - r.output_from);
-    return std::isfinite(*out);
+    if (!r_.function(x, &y)) return std::nullopt;
+    const double out = r_.output_from + (y - y_from_) / (y_to_ - y_from_) * (r_.output_to - r_.output_from);
+    return std::isfinite(out) ? std::optional<double>(out) : std::nullopt;
+  }
+
+ private:
+  const FunctionRequest& r_;
+  double y_from_ = 0, y_to_ = 0;
+};
+
+FunctionDesign Refused(FunctionDesign& design, FunctionStatus status, std::string message) {
+  design.status = status;
+  design.message = std::move(message);
+  return design;
+}
+
+using Build = std::function<std::optional<Mechanism>(const Dimensions&)>;
+using Usable = std::function<bool(const Dimensions&)>;
+
+// More precision points than unknowns: the least-squares design polished on the true output
+// through the solver, kept when the fit assembles over the whole input range.
+void PolishByFit(const FunctionRequest& r, const std::vector<double>& phi, const std::vector<double>& out, const Build& build,
+                 const Usable& usable, Dimensions& dim, FunctionDesign& design) {
+  const MechanismBuilder builder = [&](const std::vector<double>& v) -> Expected<Mechanism> {
+    const std::optional<Mechanism> built = build({v[0], v[1], v[2]});
+    if (!built) return Expected<Mechanism>::Error("does not close at the first precision point");
+    return *built;
   };
-  design.precision_x = r.at.empty() ? ChebyshevPoints(r.x_from, r.x_to, r.points) : r.at;
-  std::vector<double> phi, out;
-  for (double x : design.precision_x) {
-    double o = 0;
-    if (!desired(x, &o)) {
-      design.message = fmt::format("f is not defined at the precision point x = {}", x);
-      return design;
-    }
-    phi.push_back(input_of(x));
-    out.push_back(o);
+  const std::vector<FitParameter> parameters = {{"a", dim.a}, {"b", dim.b}, {"third", dim.third}};
+  std::vector<FitTarget> targets;
+  for (size_t i = 0; i < phi.size(); ++i) {
+    FitTarget t;
+    t.name = fmt::format("x = {}", design.precision_x[i]);
+    t.output = 0;
+    t.input = phi[i];
+    t.value = out[i];
+    targets.push_back(t);
   }
-  Dimensions dim;
-  if (!SolveLinear(r, phi, out, &dim, &design.message)) {
-    design.status = FunctionStatus::kNoMechanism;
-    return design;
+  FitOptions options;
+  options.starts = 1;
+  options.threads = 1;
+  options.require_from = std::min(r.input_from, r.input_to);
+  options.require_to = std::max(r.input_from, r.input_to);
+  const FitReport fit = Fit(builder, parameters, targets, options);
+  design.polish_report = fit.Brief();
+  if (fit.values.empty() || !fit.assembles_over_range) return;
+  const Dimensions polished{fit.values[0], fit.values[1], fit.values[2]};
+  if (usable(polished) && build(polished)) {
+    dim = polished;
+    design.polished = true;
   }
-  // the assembly branch the first precision point puts B on, kept while polishing
-  int branch = 1;
-  if (four_bar) {
-    const Eigen::Vector2d a = dim.a * Eigen::Vector2d(std::cos(phi[0]), std::sin(phi[0]));
-    const Eigen::Vector2d b = Eigen::Vector2d(r.frame, 0) + dim.third * Eigen::Vector2d(std::cos(out[0]), std::sin(out[0]));
-    branch = FourBarBranch(a, b, {r.frame, 0}) >= 0 ? 1 : -1;
-  } else {
-    branch = out[0] >= dim.a * std::cos(phi[0]) ? 1 : -1;
-  }
-  auto build = [&](const Dimensions& d) { return four_bar ? FourBarAt(d, r.frame, phi[0], branch) : SliderCrankAt(d, phi[0], branch); };
-  const double size = four_bar ? r.frame : std::abs(r.output_to - r.output_from);
-  auto usable = [&](const Dimensions& d) { return std::min({std::abs(d.a), std::abs(d.b), four_bar ? std::abs(d.third) : 1e300}) > kShortestLink * size; };
-  if (!usable(dim) || !build(dim)) {
-    design.status = FunctionStatus::kNoMechanism;
-    design.message = "the precision points give a degenerate mechanism (a link of zero length, or it does not close at the first point)";
-    return design;
-  }
-  // more points than unknowns: polish the least-squares design on the true output through the solver
-  if (phi.size() > 3) {
-    const MechanismBuilder builder = [&](const std::vector<double>& v) -> Expected<Mechanism> {
-      const std::optional<Mechanism> built = build({v[0], v[1], v[2]});
-      if (!built) return Expected<Mechanism>::Error("does not close at the first precision point");
-      return *built;
-    };
-    const std::vector<FitParameter> parameters = {{"a", dim.a}, {"b", dim.b}, {"third", dim.third}};
-    std::vector<FitTarget> targets;
-    for (size_t i = 0; i < phi.size(); ++i) {
-      FitTarget t;
-      t.name = fmt::format("x = {}", design.precision_x[i]);
-      t.output = 0;
-      t.input = phi[i];
-      t.value = out[i];
-      targets.push_back(t);
-    }
-    FitOptions options;
-    options.starts = 1;
-    options.threads = 1;
-    options.require_from = std::min(r.input_from, r.input_to);
-    options.require_to = std::max(r.input_from, r.input_to);
-    const FitReport fit = Fit(builder, parameters, targets, options);
-    design.polish_report = fit.Brief();
-    if (!fit.values.empty() && fit.assembles_over_range) {
-      const Dimensions polished{fit.values[0], fit.values[1], fit.values[2]};
-      if (usable(polished) && build(polished)) {
-        dim = polished;
-        design.polished = true;
-      }
-    }
-  }
-  design.mechanism = *build(dim);
-  design.output = 0;
-  design.crank = std::abs(dim.a);
-  design.coupler = std::abs(dim.b);
-  if (four_bar) {
-    design.rocker = std::abs(dim.third);
-    design.frame = r.frame;
-  } else {
-    design.offset = dim.third;
-  }
-  // the structural error over the whole input range, by the solver
+}
+
+// The structural error over the whole input range and at the precision points, by the solver;
+// the design's status says whether the mechanism runs through the range.
+FunctionDesign MeasureError(const FunctionRequest& r, const FunctionMap& map, const std::vector<double>& phi,
+                            const std::vector<double>& out, FunctionDesign& design) {
+  const bool four_bar = r.type == FunctionGenerator::kFourBar;
   auto difference = [&](double generated, double wanted) { return four_bar ? AngleDifference(generated, wanted) : generated - wanted; };
   SweepOptions sweep;
   sweep.from = r.input_from;
@@ -283,12 +231,10 @@ FunctionDesign SynthesiseFunction(const FunctionRequest& r) {
   for (size_t i = 0; i < s.inputs.size(); ++i) {
     StructuralErrorSample e;
     e.input = s.inputs[i];
-    e.x = r.x_from + (e.input - r.input_from) / (r.input_to - r.input_from) * (r.x_to - r.x_from);
-    if (!desired(e.x, &e.desired)) {
-      design.status = FunctionStatus::kInvalidRequest;
-      design.message = fmt::format("f is not defined at x = {} inside the x range", e.x);
-      return design;
-    }
+    e.x = map.X(e.input);
+    const std::optional<double> wanted = map.Output(e.x);
+    if (!wanted) return Refused(design, FunctionStatus::kInvalidRequest, fmt::format("f is not defined at x = {} inside the x range", e.x));
+    e.desired = *wanted;
     e.generated = s.outputs(static_cast<Eigen::Index>(i), 0);
     e.error = difference(e.generated, e.desired);
     design.error_max = std::max(design.error_max, std::abs(e.error));
@@ -303,13 +249,68 @@ FunctionDesign SynthesiseFunction(const FunctionRequest& r) {
     if (!p.complete()) continue;  // reported through the error curve's status below
     design.error_at_precision = std::max(design.error_at_precision, std::abs(difference(p.outputs(0, 0), out[i])));
   }
-  if (!s.complete()) {
-    design.status = FunctionStatus::kNotDrivable;
-    design.message = "the mechanism does not run through the whole input range on its branch: " + s.message;
-    return design;
-  }
+  // three points are solved exactly: a solver's mechanism that misses one runs on another
+  // assembly branch than the equations assumed, and its error curve is not the design's
+  const double exact = 1e-6 * std::max(1.0, std::abs(r.output_to - r.output_from));
+  if (phi.size() == 3 && !(design.error_at_precision <= exact))
+    return Refused(design, FunctionStatus::kMissesPoints,
+                   fmt::format("the mechanism misses a precision point by {:.3g}: it assembles on another branch than the "
+                               "equations' solution (try other input or output ranges)",
+                               four_bar ? RadToDeg(design.error_at_precision) : design.error_at_precision));
+  if (!s.complete())
+    return Refused(design, FunctionStatus::kNotDrivable, "the mechanism does not run through the whole input range on its branch: " + s.message);
   design.status = FunctionStatus::kOk;
   return design;
+}
+
+}  // namespace
+
+FunctionDesign SynthesiseFunction(const FunctionRequest& r) {
+  FunctionDesign design;
+  if (std::string why; !r.IsValid(&why)) return Refused(design, FunctionStatus::kInvalidRequest, why);
+  const bool four_bar = r.type == FunctionGenerator::kFourBar;
+  FunctionMap map(r);
+  if (!map.Prepare()) return Refused(design, FunctionStatus::kInvalidRequest, "f must be defined at both ends of the x range and differ there");
+  design.precision_x = r.at.empty() ? ChebyshevPoints(r.x_from, r.x_to, r.points) : r.at;
+  std::vector<double> phi, out;
+  for (double x : design.precision_x) {
+    const std::optional<double> o = map.Output(x);
+    if (!o) return Refused(design, FunctionStatus::kInvalidRequest, fmt::format("f is not defined at the precision point x = {}", x));
+    phi.push_back(map.Input(x));
+    out.push_back(*o);
+  }
+  const Expected<Dimensions> solved = SolveLinear(r, phi, out);
+  if (!solved) return Refused(design, FunctionStatus::kNoMechanism, solved.error());
+  Dimensions dim = *solved;
+  // the assembly branch the first precision point puts B on, kept while polishing
+  int branch = 1;
+  if (four_bar) {
+    const Eigen::Vector2d a = dim.a * Eigen::Vector2d(std::cos(phi[0]), std::sin(phi[0]));
+    const Eigen::Vector2d b = Eigen::Vector2d(r.frame, 0) + dim.third * Eigen::Vector2d(std::cos(out[0]), std::sin(out[0]));
+    branch = FourBarBranch(a, b, {r.frame, 0}) >= 0 ? 1 : -1;
+  } else {
+    branch = out[0] >= dim.a * std::cos(phi[0]) ? 1 : -1;
+  }
+  const Build build = [&](const Dimensions& d) { return four_bar ? FourBarAt(d, r.frame, phi[0], branch) : SliderCrankAt(d, phi[0], branch); };
+  const double size = four_bar ? r.frame : std::abs(r.output_to - r.output_from);
+  const Usable usable = [&](const Dimensions& d) {
+    return std::min({std::abs(d.a), std::abs(d.b), four_bar ? std::abs(d.third) : 1e300}) > kShortestLink * size;
+  };
+  if (!usable(dim) || !build(dim))
+    return Refused(design, FunctionStatus::kNoMechanism,
+                   "the precision points give a degenerate mechanism (a link of zero length, or it does not close at the first point)");
+  if (phi.size() > 3) PolishByFit(r, phi, out, build, usable, dim, design);
+  design.mechanism = *build(dim);
+  design.output = 0;
+  design.crank = std::abs(dim.a);
+  design.coupler = std::abs(dim.b);
+  if (four_bar) {
+    design.rocker = std::abs(dim.third);
+    design.frame = r.frame;
+  } else {
+    design.offset = dim.third;
+  }
+  return MeasureError(r, map, phi, out, design);
 }
 
 }  // namespace koppel

@@ -14,7 +14,6 @@ namespace koppel {
 using DesignScore = std::function<std::optional<double>(double)>;
 
 struct GridMaximum {
-  bool found = false;
   double x = 0, value = 0;
   // the admissible stretch around x: its grid samples' ends, and whether it reaches the grid's ends
   double run_first = 0, run_last = 0;
@@ -23,8 +22,8 @@ struct GridMaximum {
 };
 
 // Scans `samples` + 1 points of [lo, hi], then golden section between the best sample's
-// neighbours, down to `x_tolerance`.
-inline GridMaximum MaximiseOnGrid(const DesignScore& score, double lo, double hi, int samples, double x_tolerance) {
+// neighbours, down to `x_tolerance`. nullopt when no sample is admissible.
+inline std::optional<GridMaximum> MaximiseOnGrid(const DesignScore& score, double lo, double hi, int samples, double x_tolerance) {
   GridMaximum m;
   std::vector<std::optional<double>> values(samples + 1);
   auto at = [&](int k) { return lo + (hi - lo) * k / samples; };
@@ -33,7 +32,7 @@ inline GridMaximum MaximiseOnGrid(const DesignScore& score, double lo, double hi
     values[k] = score(at(k));
     if (values[k] && (best < 0 || *values[k] > *values[best])) best = k;
   }
-  if (best < 0) return m;
+  if (best < 0) return std::nullopt;
   int first = best, last = best;
   while (first > 0 && values[first - 1]) --first;
   while (last < samples && values[last + 1]) ++last;
@@ -66,7 +65,6 @@ inline GridMaximum MaximiseOnGrid(const DesignScore& score, double lo, double hi
     }
   }
   const double x = 0.5 * (a + b), fx = f(x);
-  m.found = true;
   if (fx >= *values[best]) {
     m.x = x;
     m.value = fx;

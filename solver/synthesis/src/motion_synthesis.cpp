@@ -1,6 +1,7 @@
 #include "koppel/synthesis/motion_synthesis.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/build.hpp"
 #include "koppel/solver/position.hpp"
 #include "koppel/solver/sweep.hpp"
 #include "koppel/synthesis/four_bar_design.hpp"
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 #include <thread>
 
 namespace koppel {
@@ -42,18 +44,23 @@ double PoseError(const PositionSolver& solver, const Eigen::VectorXd& q, const P
   return std::max((p - pose.point).norm(), std::abs(AngleDifference(s.Output(1, 0, q.data()), pose.angle)) * size);
 }
 
-// The mechanism assembled at pose j from that pose's own geometry (its hint moved there).
-bool AssembleAtPose(const Mechanism& m, const std::vector<Pose>& poses, int j, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-                    double input, Eigen::VectorXd* q, double* error, double size) {
+// The coupler's error in pose j with the mechanism assembled there from that pose's own
+// geometry (its hint moved there); nullopt when the solver does not assemble it.
+std::optional<double> PoseErrorAssembledAt(const Mechanism& m, const std::vector<Pose>& poses, int j, const Eigen::Vector2d& a,
+                                           const Eigen::Vector2d& b, double input, double size) {
   Mechanism at = m;
   const Eigen::Vector2d aj = MovePoint(poses[0], poses[j], a), bj = MovePoint(poses[0], poses[j], b);
-  at.hint.input = input;
-  at.hint.points = {{{1, 1}, aj}, {{2, 0}, aj}, {{2, 1}, bj}, {{2, 2}, poses[j].point}, {{3, 1}, bj}};
+  at.hint.points.clear();
+  HintInput(at, input);
+  HintPoint(at, "crank", "A", aj);
+  HintPoint(at, "coupler", "A", aj);
+  HintPoint(at, "coupler", "B", bj);
+  HintPoint(at, "coupler", "P", poses[j].point);
+  HintPoint(at, "rocker", "B", bj);
   PositionSolver solver(at);
-  q->resize(solver.NumCoordinates());
-  if (!solver.Assemble(*q).ok()) return false;
-  *error = PoseError(solver, *q, poses[j], size);
-  return true;
+  Eigen::VectorXd q(solver.NumCoordinates());
+  if (!solver.Assemble(q).ok()) return std::nullopt;
+  return PoseError(solver, q, poses[j], size);
 }
 
 }  // namespace
@@ -95,13 +102,12 @@ MotionFourBar AnalyseMotionFourBar(const std::vector<Pose>& poses, const Dyad& c
     const Eigen::Vector2d aj = MovePoint(poses[0], poses[j], a), bj = MovePoint(poses[0], poses[j], b);
     phi[j] = Angle(aj - a0);
     branch[j] = FourBarBranch(aj, bj, b0);
-    Eigen::VectorXd q;
-    double error = 0;
-    if (!AssembleAtPose(m, poses, j, a, b, phi[j], &q, &error, size)) {
+    const std::optional<double> error = PoseErrorAssembledAt(m, poses, j, a, b, phi[j], size);
+    if (!error) {
       f.message = fmt::format("the solver does not assemble the four-bar in pose {}", j + 1);
       return f;
     }
-    f.pose_error = std::max(f.pose_error, error);
+    f.pose_error = std::max(f.pose_error, *error);
   }
   if (f.pose_error > kPoseTolerance * size) {
     f.message = fmt::format("the coupler misses a pose by {:.3g} (tolerance {:.3g})", f.pose_error, kPoseTolerance * size);

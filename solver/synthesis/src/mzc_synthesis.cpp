@@ -1,6 +1,7 @@
 #include "koppel/synthesis/mzc_synthesis.hpp"
 
 #include "koppel/analysis/coupler_curve.hpp"
+#include "koppel/core/build.hpp"
 #include "koppel/solver/sweep.hpp"
 
 #include <cmath>
@@ -73,19 +74,21 @@ Mechanism MzcMechanism(const MzcDesign& d) {
     const Eigen::Vector2d u = (to - from).normalized(), n(-u.y(), u.x());
     return Eigen::Vector2d((p - from).dot(u), (p - from).dot(n));
   };
-  m.links = {{"frame", true, {{"A0", a0}, {"B0", b0}}},
-             {"rocker1", false, {{"A0", {0, 0}}, {"A", {d.l1, 0}}}},
-             {"coupler", false, {{"A", {0, 0}}, {"B", {d.l2, 0}}, {"K", along(a, b, k)}}},
-             {"rocker2", false, {{"B0", {0, 0}}, {"B", {d.l3, 0}}}}};
-  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3), PinJoint(m, "B0", 0, 3)};
-  m.drive.joint = 0;
-  Output out;
-  out.name = "K";
-  out.kind = OutputKind::kPoint;
-  out.p = {2, 2};
-  m.outputs = {out};
-  m.hint.input = std::atan2(a.y() - a0.y(), a.x() - a0.x());
-  m.hint.points = {{{2, 0}, a}, {{2, 1}, b}, {{3, 1}, b}, {{1, 1}, a}};
+  AddLink(m, "frame", {{"A0", a0}, {"B0", b0}}, true);
+  AddLink(m, "rocker1", {{"A0", {0, 0}}, {"A", {d.l1, 0}}});
+  AddLink(m, "coupler", {{"A", {0, 0}}, {"B", {d.l2, 0}}, {"K", along(a, b, k)}});
+  AddLink(m, "rocker2", {{"B0", {0, 0}}, {"B", {d.l3, 0}}});
+  Revolute(m, "A0", "frame", "rocker1");
+  Revolute(m, "A", "rocker1", "coupler");
+  Revolute(m, "B", "coupler", "rocker2");
+  Revolute(m, "B0", "frame", "rocker2");
+  SetDrive(m, "A0");
+  PointOutput(m, "K", "coupler", "K");
+  HintInput(m, std::atan2(a.y() - a0.y(), a.x() - a0.x()));
+  HintPoint(m, "coupler", "A", a);
+  HintPoint(m, "coupler", "B", b);
+  HintPoint(m, "rocker2", "B", b);
+  HintPoint(m, "rocker1", "A", a);
   return m;
 }
 

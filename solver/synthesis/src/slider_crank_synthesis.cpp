@@ -3,6 +3,7 @@
 // largest mu_min.
 #include "koppel/synthesis/deadcentre_synthesis.hpp"
 
+#include "bar_linkages.hpp"
 #include "design_proof.hpp"
 #include "maximise.hpp"
 
@@ -108,7 +109,7 @@ SliderCrankDesign Prove(const SliderCrankRequest& r, const Geometry& g) {
   const double phi_a = std::atan2(x_a, -y);
   const double mu_closed_form = ClosedFormMuMin(g);
   const CrankReanalysis check = ReanalyseCrank(SliderCrankMechanism(d), 0, 1, phi_a + (2 * kPi - r.phi0) / 2);
-  if (!check.ok) return Failed(r, DesignStatus::kReanalysisFailed, "re-analysis: " + check.message);
+  if (!check.ok()) return Failed(r, DesignStatus::kReanalysisFailed, "re-analysis: " + check.message);
   d.reanalysed_phi0 = check.phi0;
   d.reanalysed_stroke = check.turn;
   d.mu_min = check.mu_min;
@@ -167,43 +168,18 @@ SliderCrankDesign BestSliderCrank(const SliderCrankRequest& r) {
     if (!g) return std::nullopt;
     return ClosedFormMuMin(*g);
   };
-  const GridMaximum best = MaximiseOnGrid(score, 0, 1, kSearchSamples, 1e-13);
-  if (!best.found) return Failed(r, DesignStatus::kNoDesign, "no offset gives a slider-crank: " + Ranges(r));
-  const std::optional<Geometry> g = FromOffset(r, best.x * e_max);
+  const std::optional<GridMaximum> best = MaximiseOnGrid(score, 0, 1, kSearchSamples, 1e-13);
+  if (!best) return Failed(r, DesignStatus::kNoDesign, "no offset gives a slider-crank: " + Ranges(r));
+  const std::optional<Geometry> g = FromOffset(r, best->x * e_max);
   if (!g || Degenerate(*g, r.stroke))
     return Failed(r, DesignStatus::kBoundaryOptimum, "mu_min grows towards the end of the offset range: " + Ranges(r));
   return Prove(r, *g);
 }
 
 Mechanism SliderCrankMechanism(const SliderCrankDesign& d) {
-  Mechanism m;
-  m.name = "slider-crank";
-  m.links = {{"frame", true, {{"A0", {0, -d.e}}, {"F", {0, 0}}}},
-             {"crank", false, {{"A0", {0, 0}}, {"A", {0, -d.l1}}}},
-             {"coupler", false, {{"A", {0, 0}}, {"B", {d.l2, 0}}}},
-             {"slider", false, {{"B", {0, 0}}}}};
-  m.joints = {PinJoint(m, "A0", 0, 1), PinJoint(m, "A", 1, 2), PinJoint(m, "B", 2, 3)};
-  Joint s;
-  s.name = "S";
-  s.type = JointType::kPrismatic;
-  s.link_a = 0;
-  s.link_b = 3;
-  s.point_a = 1;
-  s.point_b = 0;
-  m.joints.push_back(s);
-  m.drive.joint = 0;
-  Output out;
-  out.name = "s";
-  out.kind = OutputKind::kJoint;
-  out.joint = 3;
-  Output mu;
-  mu.name = "mu";
-  mu.kind = OutputKind::kTransmissionAngle;
-  mu.link = 2;
-  mu.joint = 2;
-  m.outputs = {out, mu};
-  m.hint.input = 0;
-  m.hint.points = {{{3, 0}, {std::sqrt(std::max(d.l2 * d.l2 - std::pow(d.e + d.l1, 2), 0.0)), 0.0}}};
+  Mechanism m = BarSliderCrank("slider-crank", {0, -d.e}, {0, 0}, {0, -d.l1}, d.l2);
+  HintInput(m, 0);
+  HintPoint(m, "slider", "B", {std::sqrt(std::max(d.l2 * d.l2 - std::pow(d.e + d.l1, 2), 0.0)), 0.0});
   return m;
 }
 

@@ -73,8 +73,7 @@ TEST_CASE("Q . dq/dphi is the loads' virtual work; the drive holding gravity and
   loads.forces = {{"F", {2, 1}, Eigen::Vector2d(0.6, 0.8), 2, "5 + psi"}};  // turns with the coupler
   const ConstraintSystem system(m);
   LoadModel model;
-  std::string why;
-  REQUIRE(model.Prepare(m, loads, &why));
+  REQUIRE(model.Prepare(m, loads));
   const double h = 1e-5;
   for (double degrees : {20.0, 140.0, 260.0}) {
     INFO("phi = " << degrees);
@@ -84,7 +83,7 @@ TEST_CASE("Q . dq/dphi is the loads' virtual work; the drive holding gravity and
     AppliedLoads applied;
     MotionState state;
     state.input = phi;
-    REQUIRE(model.Evaluate(pose, state, &applied, &why));
+    REQUIRE(model.Evaluate(pose, state, &applied));
     const Eigen::VectorXd q_force = GeneralizedForces(pose, applied);
     CHECK_THAT(q_force.dot(series.col(1)), Catch::Matchers::WithinAbs(-VirtualWorkDrive(applied), kExact * 1e3));
     // the force turns with the coupler and its magnitude reads the rocker angle psi
@@ -96,9 +95,9 @@ TEST_CASE("Q . dq/dphi is the loads' virtual work; the drive holding gravity and
     Loads conservative = SomeLoads(m);
     conservative.masses = loads.masses;
     LoadModel potential;
-    REQUIRE(potential.Prepare(m, conservative, &why));
+    REQUIRE(potential.Prepare(m, conservative));
     AppliedLoads held;
-    REQUIRE(potential.Evaluate(pose, state, &held, &why));
+    REQUIRE(potential.Evaluate(pose, state, &held));
     const Eigen::MatrixXd sm = SeriesAt(m, phi - h), sp = SeriesAt(m, phi + h);
     const double slope = (potential.PotentialEnergy(PoseMotion(system, sp, 1.0)) - potential.PotentialEnergy(PoseMotion(system, sm, 1.0))) / (2 * h);
     CHECK_THAT(VirtualWorkDrive(held), Catch::Matchers::WithinAbs(slope, kFirstDifference * 1e3));
@@ -118,8 +117,7 @@ TEST_CASE("a damper's force follows the speed; a formula without a value is an e
   loads.forces = {{"F", {3, 0}, Eigen::Vector2d(1, 0), 0, "sqrt(s - 3)"}};  // s < 3 in places
   const ConstraintSystem system(m);
   LoadModel model;
-  std::string why;
-  REQUIRE(model.Prepare(m, loads, &why));
+  REQUIRE(model.Prepare(m, loads));
   const double phi = DegToRad(30);
   const Eigen::MatrixXd series = SeriesAt(m, phi);
   const PoseMotion pose(system, series, 1.0);
@@ -129,12 +127,13 @@ TEST_CASE("a damper's force follows the speed; a formula without a value is an e
   AppliedLoads applied;
   const double s = test::SliderCrank(1.0, 2.6, 0.0, phi).s, s1 = test::SliderCrank(1.0, 2.6, 0.0, phi).s1;
   if (s < 3) {
-    CHECK_FALSE(model.Evaluate(pose, state, &applied, &why));
-    CHECK_THAT(why, Catch::Contains("force 'F'") && Catch::Contains("no finite value"));
+    const Outcome evaluated = model.Evaluate(pose, state, &applied);
+    CHECK_FALSE(evaluated);
+    CHECK_THAT(evaluated.error(), Catch::Contains("force 'F'") && Catch::Contains("no finite value"));
   }
   loads.forces.clear();
-  REQUIRE(model.Prepare(m, loads, &why));
-  REQUIRE(model.Evaluate(pose, state, &applied, &why));
+  REQUIRE(model.Prepare(m, loads));
+  REQUIRE(model.Evaluate(pose, state, &applied));
   REQUIRE(applied.forces.size() == 2);
   // the tension c ds/dt pulls the slider back towards F
   CHECK_THAT(applied.forces[1].force.x(), Catch::Matchers::WithinAbs(-7.0 * s1 * 4.0, kExact * 100));

@@ -10,7 +10,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdio>
 #include <random>
+#include <string>
 
 namespace koppel {
 namespace {
@@ -25,7 +27,7 @@ Mechanism SlideDriven() {
 void CheckAt(const ConstraintSystem& system, const Eigen::VectorXd& q, double input) {
   const JacobianCheckResult r = CheckJacobian(system, q.data(), input, test::kJacobianFd);
   INFO("worst entry (" << r.worst_row << ", " << r.worst_col << "): relative error " << r.max_rel_error);
-  CHECK(r.ok);
+  CHECK(r.ok());
 }
 
 }  // namespace
@@ -60,19 +62,24 @@ TEST_CASE("the Jacobian checker rejects a wrong Jacobian", "[constraints]") {
   Eigen::VectorXd q = Eigen::VectorXd::LinSpaced(system.NumCoordinates(), -1.0, 2.0);
   Eigen::MatrixXd jacobian(system.NumEquations(), system.NumCoordinates());
   system.Jacobian(q.data(), jacobian);
-  REQUIRE(CheckJacobian(system, q.data(), 0.3, jacobian, test::kJacobianFd).ok);
+  REQUIRE(CheckJacobian(system, q.data(), 0.3, jacobian, test::kJacobianFd).ok());
   // one entry off by 1e-4 (far above the FD error, far below the entry's size): caught
   const int row = system.FirstRowOf(m.FindJoint("S34")), col = system.CoordinateOf(m.FindLink("slot")) + 2;
   REQUIRE(jacobian(row, col) != 0.0);
   jacobian(row, col) += 1e-4;
   const JacobianCheckResult r = CheckJacobian(system, q.data(), 0.3, jacobian, test::kJacobianFd);
-  CHECK_FALSE(r.ok);
+  CHECK_FALSE(r.ok());
   CHECK(r.worst_row == row);
   CHECK(r.worst_col == col);
+  char error[32];
+  std::snprintf(error, sizeof error, "%.1e", r.max_rel_error);
+  CHECK(r.Brief() == "disagrees: relative error " + std::string(error) + " at equation " + std::to_string(row) +
+                         ", coordinate " + std::to_string(col));
+  CHECK(JacobianCheckResult().Brief() == "not run");
   // a sign error in a whole column: caught too
   system.Jacobian(q.data(), jacobian);
   jacobian.col(0) = -jacobian.col(0);
-  CHECK_FALSE(CheckJacobian(system, q.data(), 0.3, jacobian, test::kJacobianFd).ok);
+  CHECK_FALSE(CheckJacobian(system, q.data(), 0.3, jacobian, test::kJacobianFd).ok());
 }
 
 TEST_CASE("rotation residuals are wrap-safe: a full turn is no residual", "[constraints]") {

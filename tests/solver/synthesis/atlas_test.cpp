@@ -104,13 +104,14 @@ TEST_CASE("atlas builds do not depend on threads or shards; merge refuses a shar
   o.shards = 3;
   for (o.shard = 2; o.shard >= 0; --o.shard) parts.push_back(BuildAtlas(o));
   CHECK(parts[0].size() + parts[1].size() + parts[2].size() == 3001);
-  std::vector<AtlasEntry> merged;
-  std::string error;
-  REQUIRE(MergeAtlases(parts, &merged, &error));
-  CHECK(SerialiseAtlas(merged) == whole);
+  const Expected<std::vector<AtlasEntry>> merged = MergeAtlases(parts);
+  REQUIRE(merged);
+  CHECK(SerialiseAtlas(*merged) == whole);
   parts.push_back(parts[1]);
-  CHECK_FALSE(MergeAtlases(parts, &merged, &error));
-  CHECK_THAT(error, Catch::Contains("appears twice"));
+  const Expected<std::vector<AtlasEntry>> twice = MergeAtlases(parts);
+  CHECK_FALSE(twice);
+  CHECK_THAT(twice.error(), Catch::Contains("appears twice"));
+  std::string error;
   o.shard = 3;
   CHECK_FALSE(o.IsValid(&error));
 }
@@ -121,17 +122,14 @@ TEST_CASE("the atlas file reads back and refuses what is not an atlas", "[atlas]
   const std::vector<AtlasEntry> entries = BuildAtlas(o);
   const std::string bytes = SerialiseAtlas(entries);
   CHECK(bytes.size() == AtlasFileSize(50));
-  std::vector<AtlasEntry> back;
-  std::string error;
-  REQUIRE(ParseAtlas(bytes, &back, &error));
-  CHECK(SerialiseAtlas(back) == bytes);
-  CHECK_FALSE(ParseAtlas(bytes.substr(0, bytes.size() - 1), &back, &error));
-  CHECK_THAT(error, Catch::Contains("truncated"));
-  CHECK_FALSE(ParseAtlas("name: four-bar\n", &back, &error));
-  CHECK_THAT(error, Catch::Contains("not a koppel atlas"));
+  const Expected<std::vector<AtlasEntry>> back = ParseAtlas(bytes);
+  REQUIRE(back);
+  CHECK(SerialiseAtlas(*back) == bytes);
+  CHECK_THAT(ParseAtlas(bytes.substr(0, bytes.size() - 1)).error(), Catch::Contains("truncated"));
+  CHECK_THAT(ParseAtlas("name: four-bar\n").error(), Catch::Contains("not a koppel atlas"));
   std::string huge = bytes;
   huge[20] = '\xff';  // a count of billions in a small file
-  CHECK_FALSE(ParseAtlas(huge, &back, &error));
+  CHECK_FALSE(ParseAtlas(huge));
 }
 
 }  // namespace koppel

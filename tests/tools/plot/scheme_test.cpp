@@ -40,8 +40,9 @@ plot::SampledRun FullTurn(const Mechanism& m) {
 Drawn Draw(const Mechanism& m, double phi, plot::SchemeScene scene = {}) {
   const plot::SampledRun run = FullTurn(m);
   REQUIRE(run.complete);
-  std::string why;
-  REQUIRE(plot::PoseAt(m, run, phi, &scene.q, &why));
+  const Expected<Eigen::VectorXd> pose = plot::PoseAt(m, run, phi);
+  REQUIRE(pose);
+  scene.q = *pose;
   for (int i = 0; i < run.size(); ++i) scene.extent.push_back(run.poses.row(i).transpose());
   scene.animatable = true;
   Drawn d{test::ParseSvg(plot::DrawScheme(m, scene)), 0, 0, 0};
@@ -133,13 +134,15 @@ TEST_CASE("dead-centre overlays: labels with suffixes, frame pivots not repeated
   const Mechanism m = test::SliderCrank(1, 2.6, 0.8);
   const plot::SampledRun run = FullTurn(m);
   plot::SchemeScene scene;
-  std::string why;
   const double phi_a = test::SliderCrankPhiA(1, 2.6, 0.8), phi_i = test::SliderCrankPhiI(1, 2.6, 0.8);
   scene.overlays.resize(2);
   scene.overlays[0].suffix = "a";
   scene.overlays[1].suffix = "i";
-  REQUIRE(plot::PoseAt(m, run, phi_a, &scene.overlays[0].q, &why));
-  REQUIRE(plot::PoseAt(m, run, phi_i, &scene.overlays[1].q, &why));
+  const Expected<Eigen::VectorXd> extended = plot::PoseAt(m, run, phi_a), folded = plot::PoseAt(m, run, phi_i);
+  REQUIRE(extended);
+  REQUIRE(folded);
+  scene.overlays[0].q = *extended;
+  scene.overlays[1].q = *folded;
   const Drawn d = Draw(m, DegToRad(120), scene);
   std::vector<std::string> names;
   std::map<std::string, Eigen::Vector2d> at;

@@ -1,6 +1,7 @@
 // The design charts (Kurventafeln) of seed 002 from the CSV of `koppel synth chart`: curve
 // families over φ0, one curve per value of the family parameter, labelled.
 #include "koppel/plot/plots.hpp"
+#include "koppel/core/expected.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -33,7 +34,8 @@ std::vector<std::string> SplitCsvLine(const std::string& line) {
   return cells;
 }
 
-bool ParseCsv(const std::string& text, const std::string& file, CsvTable* table, std::string* why) {
+Expected<CsvTable> ParseCsv(const std::string& text, const std::string& file) {
+  CsvTable table;
   std::stringstream in(text);
   std::string line;
   int number = 0;
@@ -42,19 +44,18 @@ bool ParseCsv(const std::string& text, const std::string& file, CsvTable* table,
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
     const auto cells = SplitCsvLine(line);
-    if (table->columns.empty()) {
-      table->columns = cells;
+    if (table.columns.empty()) {
+      table.columns = cells;
       continue;
     }
-    if (cells.size() != table->columns.size()) {
-      *why = file + ":" + std::to_string(number) + ": " + std::to_string(cells.size()) + " cells, the header has " +
-             std::to_string(table->columns.size());
-      return false;
+    if (cells.size() != table.columns.size()) {
+      return Expected<CsvTable>::Error(file + ":" + std::to_string(number) + ": " + std::to_string(cells.size()) +
+                                       " cells, the header has " + std::to_string(table.columns.size()));
     }
     // `synth chart` writes a row for every grid point; without a design (status none, boundary,
     // failed) its numbers are empty: such a row is a gap. The rocker sense is a word: same = 1,
     // opposite = -1.
-    const int status = table->Column("status"), sense = table->Column("rocker_sense");
+    const int status = table.Column("status"), sense = table.Column("rocker_sense");
     if (status >= 0 && cells[status] != "ok") continue;
     std::vector<double> row;
     for (size_t c = 0; c < cells.size(); ++c) {
@@ -69,18 +70,17 @@ bool ParseCsv(const std::string& text, const std::string& file, CsvTable* table,
       char* end = nullptr;
       const double v = std::strtod(cells[c].c_str(), &end);
       if (cells[c].empty() || *end != '\0' || !std::isfinite(v)) {
-        *why = file + ":" + std::to_string(number) + ": column '" + table->columns[c] + "': not a number: '" + cells[c] + "'";
-        return false;
+        return Expected<CsvTable>::Error(file + ":" + std::to_string(number) + ": column '" + table.columns[c] +
+                                         "': not a number: '" + cells[c] + "'");
       }
       row.push_back(v);
     }
-    table->rows.push_back(std::move(row));
+    table.rows.push_back(std::move(row));
   }
-  if (table->columns.empty() || table->rows.empty()) {
-    *why = file + ": no table (a header line and at least one row expected)";
-    return false;
+  if (table.columns.empty() || table.rows.empty()) {
+    return Expected<CsvTable>::Error(file + ": no table (a header line and at least one row expected)");
   }
-  return true;
+  return table;
 }
 
 // Points (x, y) sorted by x, split where a grid value of x is missing (a design that did not
@@ -146,9 +146,9 @@ Panel FamilyPanel(const CsvTable& t, int phi0, int y, int family, const std::str
 }  // namespace
 
 PlotResult ChartPlot(const std::string& csv_text, const std::string& file_name) {
-  CsvTable t;
-  std::string why;
-  if (!ParseCsv(csv_text, file_name, &t, &why)) return {PlotStatus::kFailed, why, ""};
+  const Expected<CsvTable> parsed = ParseCsv(csv_text, file_name);
+  if (!parsed) return {PlotStatus::kFailed, parsed.error(), ""};
+  const CsvTable& t = *parsed;
   Figure figure;
   const int phi0 = t.Column("phi0");
   if (const int sense = t.Column("rocker_sense"); sense >= 0) {

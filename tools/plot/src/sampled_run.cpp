@@ -28,11 +28,9 @@ SampledRun SampleMechanism(const Mechanism& mechanism, const SweepOptions& optio
   return run;
 }
 
-bool PoseAt(const Mechanism& mechanism, const SampledRun& run, double input, Eigen::VectorXd* q, std::string* why) {
-  if (run.size() == 0) {
-    *why = "no computed sample to start from";
-    return false;
-  }
+Expected<Eigen::VectorXd> PoseAt(const Mechanism& mechanism, const SampledRun& run, double input) {
+  using Result = Expected<Eigen::VectorXd>;
+  if (run.size() == 0) return Result::Error("no computed sample to start from");
   int nearest = 0;
   for (int i = 1; i < run.size(); ++i)
     if (std::abs(run.inputs[i] - input) < std::abs(run.inputs[nearest] - input)) nearest = i;
@@ -42,17 +40,10 @@ bool PoseAt(const Mechanism& mechanism, const SampledRun& run, double input, Eig
   // steps of at most the run's spacing (or 1 degree / 1 % of the length scale for one sample)
   const double step = run.size() > 1 ? std::abs(run.inputs[1] - run.inputs[0])
                                      : (mechanism.InputIsAngle() ? kPi / 180 : 0.01 * LengthScale(mechanism));
-  if (!start.ok()) {
-    *why = start.message;
-    return false;
-  }
+  if (!start.ok()) return Result::Error(start.message);
   const WalkReport report = path.AdvanceTo(input, step);
-  if (!report.ok()) {
-    *why = report.message;
-    return false;
-  }
-  *q = path.q();
-  return true;
+  if (!report.ok()) return Result::Error(report.message);
+  return Eigen::VectorXd(path.q());
 }
 
 }  // namespace koppel::plot

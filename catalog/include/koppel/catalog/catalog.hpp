@@ -56,7 +56,9 @@ std::vector<const CatalogEntry*> FindEntries(const Catalog& catalog, const Featu
 // links. Link names, joint names, dimensions, the drive and the outputs do not matter.
 bool SameKinematicChain(const Mechanism& a, const Mechanism& b);
 
-// The default catalog directory: $KOPPEL_CATALOG if set, else the one compiled in.
+// The default catalog directory: $KOPPEL_CATALOG if set; else, for an installed koppel, the
+// entries installed with it (<prefix>/share/koppel/catalog, found relative to the library);
+// else the source tree's catalog/entries the build was made from.
 std::string DefaultCatalogDirectory();
 
 }  // namespace koppel

@@ -42,4 +42,9 @@ class Expected {
   std::variant<T, std::string> state_;
 };
 
+// Done, or the reason it could not be: for an operation whose result is written elsewhere (into
+// an out-parameter reused across calls) or that only checks.
+using Outcome = Expected<std::monostate>;
+inline Outcome Done() { return std::monostate{}; }
+
 }  // namespace koppel

@@ -4,6 +4,8 @@
 // so `30*deg` is thirty degrees in radians.
 #pragma once
 
+#include "koppel/core/expected.hpp"
+
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,15 +22,16 @@ class ParameterSet {
   ParameterSet(const ParameterSet& other);
   ParameterSet& operator=(const ParameterSet& other);
 
-  // Evaluates `formula` with the parameters defined so far and defines `name` with its value.
-  // Redefining a name replaces its value. On failure returns false and sets *error.
-  bool Define(const std::string& name, const std::string& formula, std::string* error);
+  // Evaluates `formula` with the parameters defined so far and defines `name` with its value
+  // (returned). Redefining a name replaces its value. On failure nothing is defined.
+  Expected<double> Define(const std::string& name, const std::string& formula);
 
-  // Evaluates a formula over the defined parameters. nullopt and *error on a parse error, an
-  // unknown name, a non-finite result or a formula longer than kMaxFormulaLength. The cost is
-  // that of the formula alone, whatever the number of parameters (names are looked up by hash).
-  // Not for concurrent use of the same set from several threads.
-  std::optional<double> Evaluate(const std::string& formula, std::string* error) const;
+  // Evaluates a formula over the defined parameters. The error says why there is no value: a
+  // parse error ("does not parse" in the text), an unknown name, a non-finite result or a
+  // formula longer than kMaxFormulaLength. The cost is that of the formula alone, whatever the
+  // number of parameters (names are looked up by hash). Not for concurrent use of the same set
+  // from several threads.
+  Expected<double> Evaluate(const std::string& formula) const;
 
   // Defines `name` with an exact value (no formula round trip), e.g. the input of a sample.
   void DefineValue(const std::string& name, double value);

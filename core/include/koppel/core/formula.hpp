@@ -19,13 +19,13 @@ class CompiledFormula {
   CompiledFormula& operator=(CompiledFormula&&) noexcept;
 
   // Compiles `formula` over the constants of `parameters` and the variables `variables` (later
-  // names shadow earlier ones and the parameters). False and *error when it does not parse or
+  // names shadow earlier ones and the parameters). The error says why when it does not parse or
   // names something unknown; a non-finite value at some point is not a compile error.
-  bool Compile(const std::string& formula, const ParameterSet& parameters, const std::vector<std::string>& variables,
-               std::string* error);
+  static Expected<CompiledFormula> Compile(const std::string& formula, const ParameterSet& parameters,
+                                           const std::vector<std::string>& variables);
 
   // The value for `values` (one per variable of Compile, in its order); NaN when the formula
-  // has no finite value there (the caller reports it). Precondition: Compile succeeded.
+  // has no finite value there (the caller reports it). Precondition: made by Compile.
   double Evaluate(const double* values) const;
 
   const std::string& text() const { return text_; }

@@ -78,13 +78,13 @@ struct AppliedLoads {
 // The mechanism's loads with their formulas compiled, ready to be evaluated at many poses.
 class LoadModel {
  public:
-  // False and *error (naming the load) when a magnitude formula does not compile or the loads do
-  // not fit the mechanism (CheckLoads). Keeps references: both must outlive the model.
-  bool Prepare(const Mechanism& mechanism, const Loads& loads, std::string* error);
+  // The error names the load when a magnitude formula does not compile or the loads do not fit
+  // the mechanism (CheckLoads). Keeps references: both must outlive the model.
+  Outcome Prepare(const Mechanism& mechanism, const Loads& loads);
 
-  // The loads at the pose (gravity, forces, torques, springs and dampers; no inertia). False and
-  // *error when a magnitude formula has no finite value there.
-  bool Evaluate(const PoseMotion& pose, const MotionState& state, AppliedLoads* out, std::string* error) const;
+  // The loads at the pose (gravity, forces, torques, springs and dampers; no inertia) into *out
+  // (reused from call to call); an error when a magnitude formula has no finite value there.
+  Outcome Evaluate(const PoseMotion& pose, const MotionState& state, AppliedLoads* out) const;
 
   // Potential energy of gravity and springs at the pose [J] (dampers and formula loads have none).
   double PotentialEnergy(const PoseMotion& pose) const;

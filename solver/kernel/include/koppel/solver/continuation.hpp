@@ -90,7 +90,8 @@ class Continuation {
   double input() const { return input_; }
   const Eigen::VectorXd& q() const { return q_; }
   // Taylor coefficients d^k q / d input^k / k! at the current pose (columns 0..order). Columns
-  // above ValidOrder() are zero: not computable here.
+  // above ValidOrder() are zero: not computable here. Precondition 0 <= order <= kMaxOrder
+  // (std::out_of_range otherwise: the caller validated its options, e.g. SweepOptions::IsValid).
   const Eigen::MatrixXd& Series(int order);
   // kMaxOrder at a regular pose; 3 at a singular pose inside a branch-point window, where
   // higher orders through J^-1 would be noise.

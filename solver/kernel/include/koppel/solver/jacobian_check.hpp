@@ -7,14 +7,25 @@
 
 #include <Eigen/Core>
 
+#include <string>
+
 namespace koppel {
 
+enum class JacobianCheckStatus {
+  kNotRun,
+  kAgrees,     // max_rel_error <= tolerance
+  kDisagrees,  // some entry is further from the finite difference than the tolerance
+};
+
 struct JacobianCheckResult {
+  JacobianCheckStatus status = JacobianCheckStatus::kNotRun;
   double max_abs_error = 0.0;  // largest |J - J_fd| entry
   double max_rel_error = 0.0;  // that error over max(1, |J_fd| entry)
   int worst_row = -1;
   int worst_col = -1;
-  bool ok = false;             // max_rel_error <= tolerance
+  bool ok() const { return status == JacobianCheckStatus::kAgrees; }
+  // e.g. "disagrees: relative error 3.1e-02 at equation 4, coordinate 7"
+  std::string Brief() const;
 };
 
 // Central differences of ConstraintSystem::Residuals with step h = 1e-6 * max(1, |q_i|)

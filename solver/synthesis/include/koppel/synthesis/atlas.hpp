@@ -20,6 +20,8 @@
 // which the query tries both ways. The features are Re and Im of c_k for k != 0, 1.
 #pragma once
 
+#include "koppel/core/expected.hpp"
+
 #include <Eigen/Core>
 
 #include <array>
@@ -81,12 +83,12 @@ std::vector<AtlasEntry> BuildAtlas(const AtlasBuildOptions& options);
 // The atlas file: a header ("KOPPEL-ATLAS", format version, feature count, entry count; little
 // endian) and the entries packed. Parse refuses a file whose size disagrees with its header.
 std::string SerialiseAtlas(const std::vector<AtlasEntry>& entries);
-bool ParseAtlas(const std::string& bytes, std::vector<AtlasEntry>* entries, std::string* error);
+Expected<std::vector<AtlasEntry>> ParseAtlas(const std::string& bytes);
 // Bytes of a file holding `count` entries.
 std::uint64_t AtlasFileSize(std::uint64_t count);
 
-// The union of atlases, ordered by (seed, index); false when an entry appears twice (a shard
+// The union of atlases, ordered by (seed, index); an error when an entry appears twice (a shard
 // merged twice).
-bool MergeAtlases(std::vector<std::vector<AtlasEntry>> parts, std::vector<AtlasEntry>* merged, std::string* error);
+Expected<std::vector<AtlasEntry>> MergeAtlases(std::vector<std::vector<AtlasEntry>> parts);
 
 }  // namespace koppel

@@ -43,9 +43,11 @@ struct FunctionRequest {
 };
 
 enum class FunctionStatus {
+  kNotRun,
   kOk,               // designed, drivable over the whole input range, error curve complete
   kNotDrivable,      // designed, but the mechanism does not run through the whole input range
   kNoMechanism,      // the precision points give no real mechanism (a link of zero or imaginary length)
+  kMissesPoints,     // exact design (3 points), but the solver's mechanism misses a precision point (another branch)
   kInvalidRequest,
 };
 const char* ToString(FunctionStatus status);
@@ -55,7 +57,7 @@ struct StructuralErrorSample {
 };
 
 struct FunctionDesign {
-  FunctionStatus status = FunctionStatus::kInvalidRequest;
+  FunctionStatus status = FunctionStatus::kNotRun;
   std::string message;
   bool ok() const { return status == FunctionStatus::kOk; }
   std::string Brief() const;

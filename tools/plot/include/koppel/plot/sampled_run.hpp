@@ -6,6 +6,7 @@
 // stretch only, never across a gap or a singular position.
 #pragma once
 
+#include "koppel/core/expected.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/sweep.hpp"
 
@@ -43,7 +44,7 @@ struct SampledRun {
 SampledRun SampleMechanism(const Mechanism& mechanism, const SweepOptions& options);
 
 // The pose at `input`, continued from the nearest computed sample of the run (so on the run's
-// assembly branch). False and *why when the solver cannot get there.
-bool PoseAt(const Mechanism& mechanism, const SampledRun& run, double input, Eigen::VectorXd* q, std::string* why);
+// assembly branch): the coordinates q, or why the solver cannot get there.
+Expected<Eigen::VectorXd> PoseAt(const Mechanism& mechanism, const SampledRun& run, double input);
 
 }  // namespace koppel::plot

@@ -1,0 +1,101 @@
+#!/usr/bin/env bash
+# koppel as an installed package, checked as its users meet it (ctest `packaging`, CI):
+#   check.sh BUILD_DIR SOURCE_DIR WORK_DIR PYTHON PYTHON_DIR
+# installs BUILD_DIR into WORK_DIR/prefix, then
+# - the installed `koppel` finds its catalog without --catalog, and prints the version;
+# - the installed headers pull in no header of Ceres, glog or yaml-cpp, nor any private one;
+# - tests/packaging/cpp (find_package, koppel::koppel) computes the slider-crank's stroke;
+# - tests/packaging/analysis_only (koppel::analysis) does too, and neither its dependencies nor
+#   the libraries it loads name Ceres, glog or yaml-cpp;
+# - with the Python module (PYTHON_DIR, relative to the prefix; empty: not built)
+#   tests/packaging/python/stroke.py does the same against the installed module;
+# - the C++ and Python examples of README.md's "Using koppel as a library" run as written.
+set -euo pipefail
+build=$1 source=$2 work=$3 python=$4 python_dir=${5:-}
+prefix=$work/prefix
+rm -rf "$work" && mkdir -p "$work"
+cmake --install "$build" --prefix "$prefix" > "$work/install.log"
+echo "installed: $(du -sh "$prefix" | cut -f1) in $(find "$prefix" -type f | wc -l) files under $prefix"
+unset KOPPEL_CATALOG
+private='ceres|glog|gflags|yaml-cpp|muParser|fmt/|nlohmann|CLI/'
+
+fail() { echo "FAILED: $*" >&2; exit 1; }
+
+# the installed tool: version and catalog from the prefix
+version=$("$prefix/bin/koppel" --version)
+echo "$version"
+(cd "$work" && "$prefix/bin/koppel" catalog find --links 4 --prismatic 1) > "$work/find.txt" || fail "koppel catalog find"
+grep -q slider-crank-offset "$work/find.txt" || fail "the installed koppel does not find its catalog"
+installed_catalog() {  # PREFIX: the installed koppel reads its entries from PREFIX/share/koppel/catalog
+  (cd "$work" && "$1/bin/koppel" catalog show slider-crank-offset) > "$work/show.txt" || fail "koppel catalog show"
+  grep -q "^file: *$1/share/koppel/catalog/slider-crank-offset.yaml" "$work/show.txt" ||
+    fail "the koppel installed in $1 does not read the catalog installed with it"
+}
+installed_catalog "$prefix"
+
+# installed headers: every one included at once, the include closure listed by the preprocessor
+headers=$(cd "$prefix/include" && find koppel -name '*.hpp' | sort)
+for h in $headers; do echo "#include <$h>"; done > "$work/all_headers.cpp"
+c++ -std=c++20 -M -I"$prefix/include" -I/usr/include/eigen3 "$work/all_headers.cpp" > "$work/all_headers.d"
+if grep -Eo "[^ ]*($private)[^ ]*" "$work/all_headers.d"; then fail "installed headers include a private dependency"; fi
+echo "installed headers: $(echo "$headers" | wc -w), none includes Ceres, glog, yaml-cpp, muparser, fmt, json or CLI11"
+
+consumer() {  # NAME: configure, build and run tests/packaging/NAME against the prefix
+  cmake -S "$source/tests/packaging/$1" -B "$work/$1" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release > "$work/$1.log"
+  cmake --build "$work/$1" >> "$work/$1.log" || { cat "$work/$1.log"; fail "building $1"; }
+}
+
+consumer cpp
+"$work/cpp/stroke" > "$work/cpp.out" || { cat "$work/cpp.out"; fail "tests/packaging/cpp"; }
+cat "$work/cpp.out"
+grep -q "catalog $prefix/share/koppel/catalog" "$work/cpp.out" || fail "the library does not find the catalog installed with it"
+
+consumer analysis_only
+"$work/analysis_only/analysis_only" || fail "tests/packaging/analysis_only"
+# compile time: the headers the program's compilation read (the compiler's depfile)
+depfile=$(find "$work/analysis_only" -name 'analysis_only.cpp.o.d')
+[ -n "$depfile" ] || fail "no depfile of analysis_only.cpp"
+if grep -Eo "[^ ]*($private)[^ ]*" "$depfile"; then fail "analysis_only compiled with a private dependency's header"; fi
+# link and run time: its own dependencies, and every library the loader maps for it
+readelf -d "$work/analysis_only/analysis_only" | grep NEEDED > "$work/needed.txt"
+ldd "$work/analysis_only/analysis_only" > "$work/ldd.txt"
+if grep -Ei 'ceres|glog|yaml' "$work/needed.txt" "$work/ldd.txt"; then fail "analysis_only links Ceres, glog or yaml-cpp"; fi
+grep -q libkoppel_analysis "$work/needed.txt" || fail "analysis_only does not link koppel's analysis library"
+# Debian's Ceres is a static library: it lives inside libkoppel_synthesis, which must not be loaded,
+# and no library that is loaded may define a symbol of Ceres
+if grep -E 'libkoppel_(synthesis|catalog|api)' "$work/ldd.txt"; then fail "analysis_only loads synthesis or the catalog"; fi
+for library in $(awk '/libkoppel_/ {print $3}' "$work/ldd.txt"); do
+  if nm -DC --defined-only "$library" | grep -m1 'ceres::'; then fail "$library holds Ceres"; fi
+done
+echo "analysis_only: $(wc -l < "$work/ldd.txt") libraries loaded, none of Ceres, glog, yaml-cpp"
+
+# README.md's examples, as written
+readme_block() {  # LANGUAGE: the first fenced block of that language in the library section
+  awk -v lang="$1" '/^## Using koppel as a library/ {in_section = 1; next}
+                    in_section && /^## / {exit}
+                    in_section && $0 == "```" lang {inside = 1; next}
+                    inside && /^```/ {exit}
+                    inside {print}' "$source/README.md"
+}
+mkdir -p "$work/readme_cpp"
+readme_block cpp > "$work/readme_cpp/example.cpp"
+[ -s "$work/readme_cpp/example.cpp" ] || fail "README.md has no C++ example in 'Using koppel as a library'"
+readme_block cmake > "$work/readme_cpp/CMakeLists.txt"
+[ -s "$work/readme_cpp/CMakeLists.txt" ] || fail "README.md has no CMakeLists.txt in 'Using koppel as a library'"
+cmake -S "$work/readme_cpp" -B "$work/readme_cpp/build" -DCMAKE_PREFIX_PATH="$prefix" > "$work/readme_cpp.log"
+cmake --build "$work/readme_cpp/build" >> "$work/readme_cpp.log" || { cat "$work/readme_cpp.log"; fail "building README's C++ example"; }
+(cd "$source" && "$work/readme_cpp/build/example") > "$work/readme_cpp.out" || fail "README's C++ example"
+echo "README C++ example:" && cat "$work/readme_cpp.out"
+
+if [ -n "$python_dir" ]; then
+  export PYTHONPATH="$prefix/$python_dir"
+  (cd "$work" && KOPPEL_PREFIX="$prefix" "$python" "$source/tests/packaging/python/stroke.py") || fail "tests/packaging/python/stroke.py"
+  readme_block python > "$work/readme_example.py"
+  [ -s "$work/readme_example.py" ] || fail "README.md has no Python example in 'Using koppel as a library'"
+  (cd "$source" && "$python" "$work/readme_example.py") > "$work/readme_python.out" || fail "README's Python example"
+  echo "README Python example:" && cat "$work/readme_python.out"
+fi
+# an installed tree moved elsewhere still finds its libraries and its catalog
+mv "$prefix" "$work/moved" && installed_catalog "$work/moved"
+"$work/moved/bin/koppel" --version > /dev/null || fail "the moved koppel does not start"
+echo "packaging: all passed"

@@ -1,0 +1,101 @@
+// Model::Sweep, FindDeadCentres, DrivableRanges (tools/api/src/analyses.cpp) against closed forms:
+// seed 000's slider-crank and the triple rocker's limits by the law of cosines.
+#include "koppel/api/model.hpp"
+#include "koppel/core/angles.hpp"
+#include "support/closed_forms.hpp"
+#include "support/temp_file.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace koppel;
+using Catch::Matchers::WithinAbs;
+
+namespace {
+constexpr double kClosedForm = 1e-9;  // the catalog entry's own tolerance against seed 000
+constexpr double kDeadCentre = 1e-8;  // dead centres are refined to 1e-12 in the input
+constexpr double kL1 = 1, kL2 = 2.6;
+}  // namespace
+
+TEST_CASE("Model::Sweep: the columns of koppel analyze, values equal to seed 000 row by row", "[api]") {
+  const Model m = Model::Load(test::CatalogEntryPath("slider-crank-offset"));
+  const SweepTable t = m.Sweep(0, 360, 5, 2);
+  REQUIRE(t.status == AnalysisStatus::kComplete);
+  CHECK(t.columns == std::vector<std::string>{"phi", "s", "s_d1", "s_d2", "mu", "mu_d1", "mu_d2", "singular"});
+  CHECK(t.units == std::vector<std::string>{"deg", "length", "length/rad", "length/rad^2", "deg", "rad/rad", "rad/rad^2", "1"});
+  REQUIRE(t.rows == 73);
+  const std::vector<double> phi = t.Column("phi"), s = t.Column("s"), s1 = t.Column("s_d1"), s2 = t.Column("s_d2"), mu = t.Column("mu");
+  for (int i = 0; i < t.rows; ++i) {
+    CHECK_THAT(phi[i], WithinAbs(5.0 * i, 1e-9));
+    const test::SliderCrankValues ref = test::SliderCrank(kL1, kL2, 0.8, DegToRad(phi[i]));
+    CHECK_THAT(s[i], WithinAbs(ref.s, kClosedForm));
+    CHECK_THAT(s1[i], WithinAbs(ref.s1, kClosedForm));
+    CHECK_THAT(s2[i], WithinAbs(ref.s2, kClosedForm));
+    CHECK_THAT(mu[i], WithinAbs(RadToDeg(ref.mu), 1e-7));
+    CHECK(t.At(i, t.ColumnIndex("singular")) == 0.0);
+  }
+  CHECK(t.ColumnIndex("nope") == -1);
+  CHECK_THROWS_AS(t.Column("nope"), InputError);
+  CHECK_THROWS_AS(m.Sweep(0, 360, 0), InputError);
+  CHECK_THROWS_AS(m.Sweep(0, 1e12, 1e-6), InputError);  // beyond kMaxSweepSamples, refused before allocating
+}
+
+TEST_CASE("Model::Sweep beyond a limit point is partial: the reachable rows, the gap, the singular point", "[api]") {
+  const Model m = Model::Load(test::TestDataPath("triple-rocker.yaml"));
+  const SweepTable t = m.Sweep(0, 180, 1, 1);
+  CHECK(t.status == AnalysisStatus::kPartial);
+  CHECK(!t.message.empty());
+  REQUIRE(!t.gaps.empty());
+  REQUIRE(!t.singular_points.empty());
+  CHECK(t.singular_points[0].kind == "limit");
+  const double limit = RadToDeg(test::FourBarLimits(2, 3, 2.5, 4)[0]);
+  bool matched = false;
+  for (const SingularPosition& p : t.singular_points) matched = matched || std::abs(p.input - limit) < 1e-6;
+  CHECK(matched);
+  for (double input : t.Column("phi")) CHECK(input <= limit + 1e-9);
+}
+
+TEST_CASE("Model::FindDeadCentres: stroke, dead-centre angles and phase ratio of seed 000", "[api]") {
+  for (double e : {0.0, 0.8}) {
+    const Model m = Model::Load(test::CatalogEntryPath("slider-crank-offset"), {{"e", std::to_string(e)}});
+    const DeadCentres d = m.FindDeadCentres("s");
+    REQUIRE(d.status == AnalysisStatus::kComplete);
+    REQUIRE(d.has_stroke);
+    REQUIRE(d.points.size() == 2);
+    // stroke = sqrt((l1 + l2)^2 - e^2) - sqrt((l2 - l1)^2 - e^2): the slider's distance from
+    // the foot point with crank and coupler stretched and folded (seed 000, s_a - s_i)
+    const double stroke = std::sqrt((kL1 + kL2) * (kL1 + kL2) - e * e) - std::sqrt((kL2 - kL1) * (kL2 - kL1) - e * e);
+    CHECK_THAT(d.stroke, WithinAbs(stroke, kDeadCentre));
+    CHECK_THAT(d.input_a, WithinAbs(RadToDeg(test::SliderCrankPhiA(kL1, kL2, e)), kDeadCentre));
+    CHECK_THAT(d.input_i, WithinAbs(RadToDeg(test::SliderCrankPhiI(kL1, kL2, e)), kDeadCentre));
+    const double forward = d.input_i - d.input_a;
+    CHECK_THAT(d.forward_angle, WithinAbs(forward, kDeadCentre));
+    CHECK_THAT(d.phase_ratio, WithinAbs(forward / (360 - forward), kDeadCentre));
+    CHECK(d.points[0].kind == "extended");
+    CHECK(d.points[1].kind == "folded");
+  }
+  const Model m = Model::Load(test::CatalogEntryPath("slider-crank-offset"));
+  CHECK_THROWS_AS(m.FindDeadCentres("no_such_output"), InputError);
+}
+
+TEST_CASE("Model::DrivableRanges: the triple rocker swings between its two limits; the slider-crank turns fully", "[api]") {
+  const Model rocker = Model::Load(test::TestDataPath("triple-rocker.yaml"));
+  const Ranges r = rocker.DrivableRanges();
+  REQUIRE(r.status == AnalysisStatus::kComplete);
+  REQUIRE(r.branches.size() == 1);
+  const BranchInterval& b = r.branches[0];
+  CHECK(b.from_kind == "limit");
+  CHECK(b.to_kind == "limit");
+  // the law of cosines: cos(phi) = (a^2 + d^2 - (b + c)^2) / (2 a d), symmetric about the frame line
+  const double limit = RadToDeg(std::acos((4.0 + 16.0 - 5.5 * 5.5) / (2 * 2 * 4)));
+  CHECK_THAT(b.from, WithinAbs(-limit, 1e-7));
+  CHECK_THAT(b.to, WithinAbs(limit, 1e-7));
+
+  const Model crank = Model::Load(test::CatalogEntryPath("slider-crank-offset"));
+  const Ranges full = crank.DrivableRanges();
+  REQUIRE(full.status == AnalysisStatus::kComplete);
+  CHECK(full.branches.at(0).to_kind == "full-turn");
+  CHECK_THAT(full.branches.at(0).period, WithinAbs(360, 1e-9));
+  CHECK(crank.SingularPositions().empty());
+}

@@ -1,0 +1,106 @@
+// The syntheses as functions (tools/api/src/synthesis.cpp): each design is re-analysed here
+// through the API itself (its model's dead centres give back the request), a malformed request
+// throws InputError, an impossible one is a status.
+#include "koppel/api/synthesis.hpp"
+#include "koppel/core/angles.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace koppel;
+using Catch::Matchers::WithinAbs;
+
+namespace {
+constexpr double kReanalysis = 1e-7;  // dead centres refined to 1e-12; degrees and a sweep of 1 deg
+}  // namespace
+
+TEST_CASE("SynthesiseCrankRocker: the model's dead centres give phi0 and psi0 back", "[api]") {
+  CrankRockerSpec spec;
+  spec.phi0 = 164;
+  spec.psi0 = 60;
+  const Design d = SynthesiseCrankRocker(spec);
+  REQUIRE(d.ok());
+  REQUIRE(d.model);
+  const DeadCentres c = d.model->FindDeadCentres("psi");
+  REQUIRE(c.status == AnalysisStatus::kComplete);
+  REQUIRE(c.has_stroke);
+  // the rocker's swing is the stroke of its angle; the crank turns phi0 from folded to extended
+  CHECK_THAT(c.stroke, WithinAbs(60, kReanalysis));
+  CHECK_THAT(std::fmod(c.input_a - c.input_i + 720.0, 360.0), WithinAbs(164, kReanalysis));
+  // Grashof with the crank shortest: l1 + l_max < the other two
+  const double l1 = d.Get("l1"), l2 = d.Get("l2"), l3 = d.Get("l3"), l4 = d.Get("l4");
+  CHECK(l1 < std::min({l2, l3, l4}));
+  CHECK(l1 + std::max({l2, l3, l4}) < l2 + l3 + l4 - std::max({l2, l3, l4}));
+  CHECK_THROWS_AS(d.Get("nope"), InputError);
+}
+
+TEST_CASE("SynthesiseSliderCrank: the model's stroke is the one asked for", "[api]") {
+  SliderCrankSpec spec;
+  spec.phi0 = 160;
+  spec.stroke = 2.5;
+  const Design d = SynthesiseSliderCrank(spec);
+  REQUIRE(d.ok());
+  const DeadCentres c = d.model->FindDeadCentres("s");
+  REQUIRE(c.has_stroke);
+  CHECK_THAT(c.stroke, WithinAbs(2.5, kReanalysis));
+  // the offset slider-crank's own closed form (seed 000) for the stroke of the designed lengths
+  const double e = d.Get("e"), l1 = d.Get("l1"), l2 = d.Get("l2");
+  CHECK_THAT(std::sqrt((l1 + l2) * (l1 + l2) - e * e) - std::sqrt((l2 - l1) * (l2 - l1) - e * e), WithinAbs(2.5, 1e-9));
+}
+
+TEST_CASE("Synthesis requests: malformed ones throw InputError, impossible ones are a status", "[api]") {
+  CrankRockerSpec bad;
+  bad.phi0 = 400;
+  bad.psi0 = 60;
+  CHECK_THROWS_AS(SynthesiseCrankRocker(bad), InputError);
+  CrankRockerSpec both;
+  both.phi0 = 164;
+  both.psi0 = 60;
+  both.beta = 10;
+  both.lambda = 0.5;
+  CHECK_THROWS_AS(SynthesiseCrankRocker(both), InputError);
+  // phi0 = 180 deg: crank and rocker shrink to nothing towards the best design
+  CrankRockerSpec centric;
+  centric.phi0 = 180;
+  centric.psi0 = 60;
+  const Design d = SynthesiseCrankRocker(centric);
+  CHECK(d.status == DesignStatus::kBoundaryOptimum);
+  CHECK(!d.model);
+  CHECK(d.figures.empty());
+}
+
+TEST_CASE("SynthesiseMzc: six-point contact of K's path, and a model that assembles", "[api]") {
+  MzcSpec spec;
+  spec.lambda = 5.0 / 6.0;
+  const Design d = SynthesiseMzc(spec);
+  REQUIRE(d.ok());
+  CHECK(d.Get("contact_points") >= 6);
+  // sin^2 phi0 = (1 + 2 lambda)/4 (seed 003)
+  CHECK_THAT(std::pow(std::sin(DegToRad(d.Get("phi0"))), 2), WithinAbs((1 + 2 * 5.0 / 6.0) / 4, 1e-12));
+  Model m = *d.model;
+  CHECK(m.Assemble().status == AnalysisStatus::kComplete);
+}
+
+TEST_CASE("SynthesiseFunction: the classic log10 four-bar meets the function at its precision points", "[api]") {
+  // tests/data/function-log10.yaml: y = log10 x, 1 <= x <= 10, crank 15..75 deg, rocker 105..195 deg
+  FunctionSpec spec;
+  spec.f = [](double x) { return std::log10(x); };
+  spec.x_from = 1;
+  spec.x_to = 10;
+  spec.input_from = 15;
+  spec.input_to = 75;
+  spec.output_from = 105;
+  spec.output_to = 195;
+  const Design d = SynthesiseFunction(spec);
+  REQUIRE(d.ok());
+  CHECK(d.Get("error_at_precision") < 1e-7);  // exact through 3 points, measured by the solver
+  // Chebyshev points of [1, 10]: at the middle one, x = 5.5, the crank stands at 45 deg and the
+  // rocker must read 105 + 90 log10(5.5) deg
+  Model m = *d.model;
+  const PoseResult p = m.MoveTo(45);
+  REQUIRE(p.status == AnalysisStatus::kComplete);
+  CHECK_THAT(std::remainder(p.Get("psi") - (105 + 90 * std::log10(5.5)), 360.0), WithinAbs(0, 1e-6));
+  spec.type = "cam";
+  CHECK_THROWS_AS(SynthesiseFunction(spec), InputError);
+}

@@ -1,0 +1,156 @@
+"""The Python module (tools/python): its numbers against closed forms and against the CLI's own
+output for the same request, its errors with file and line. Run by ctest (python_module) with
+PYTHONPATH set to the package in the build tree and KOPPEL_EXECUTABLE to the CLI."""
+import ast
+import csv
+import io
+import math
+import os
+import subprocess
+import tempfile
+import unittest
+
+import numpy as np
+
+import koppel
+
+CATALOG = os.environ["KOPPEL_CATALOG_DIR"]
+SLIDER_CRANK = os.path.join(CATALOG, "slider-crank-offset.yaml")
+L1, L2 = 1.0, 2.6
+
+
+def closed_form_s(phi, e):
+    """Seed 000: s/l1 = sin phi + cos psi/lambda, sin psi = -lambda cos phi - eps."""
+    lam, eps = L1 / L2, e / L2
+    cos_psi = math.sqrt(1 - (lam * math.cos(phi) + eps) ** 2)
+    return L1 * (math.sin(phi) + cos_psi / lam)
+
+
+class MechanismTest(unittest.TestCase):
+    def test_version_is_the_cli_version(self):
+        out = subprocess.run([os.environ["KOPPEL_EXECUTABLE"], "--version"], capture_output=True, text=True, check=True)
+        self.assertEqual(out.stdout.strip(), "koppel " + koppel.__version__)
+
+    def test_sweep_equals_koppel_analyze(self):
+        # the same request through the CLI: every number of its CSV (12 digits) equals the module's
+        m = koppel.Mechanism.load(SLIDER_CRANK, set={"e": 0.8})
+        t = m.sweep(0, 360, 5, order=3)
+        cli = subprocess.run([os.environ["KOPPEL_EXECUTABLE"], "analyze", SLIDER_CRANK, "--set", "e=0.8", "--step", "5",
+                              "--order", "3"], capture_output=True, text=True, check=True)
+        rows = list(csv.reader(io.StringIO(cli.stdout)))
+        self.assertEqual(rows[0], t.columns)
+        self.assertEqual(len(rows) - 1, len(t))
+        expected = np.array([[float(x) for x in row] for row in rows[1:]])
+        np.testing.assert_allclose(t.values, expected, rtol=1e-11, atol=1e-11)
+
+    def test_sweep_against_closed_form_and_dict(self):
+        m = koppel.Mechanism.load(SLIDER_CRANK, set={"e": "l1/2"})
+        t = m.sweep(0, 360, 1, order=2)
+        self.assertEqual(t.status, "complete")
+        self.assertEqual(t.values.shape, (361, len(t.columns)))
+        for phi, s in zip(t["phi"], t["s"]):
+            self.assertAlmostEqual(s, closed_form_s(math.radians(phi), 0.5), delta=1e-9)
+        d = t.to_dict()
+        self.assertEqual(list(d), t.columns)
+        np.testing.assert_array_equal(d["s_d1"], t.values[:, t.columns.index("s_d1")])
+
+    def test_dead_centres_stroke(self):
+        for e in (0.0, 0.8):
+            d = koppel.Mechanism.load(SLIDER_CRANK, set={"e": e}).dead_centres("s")
+            stroke = math.sqrt((L1 + L2) ** 2 - e ** 2) - math.sqrt((L2 - L1) ** 2 - e ** 2)
+            self.assertEqual(d.status, "complete")
+            self.assertAlmostEqual(d.stroke, stroke, delta=1e-9)
+            self.assertEqual([p["kind"] for p in d.points], ["extended", "folded"])
+
+    def test_range_and_pose(self):
+        m = koppel.Mechanism.load(SLIDER_CRANK)
+        r = m.range()
+        self.assertEqual(r.branches[0]["to_kind"], "full-turn")
+        pose = m.move_to(30, order=4)
+        self.assertTrue(pose.ok)
+        self.assertAlmostEqual(pose["s"], closed_form_s(math.radians(30), 0.8), delta=1e-9)
+        self.assertEqual(pose.valid_order, 4)
+        m.set("e", 0)
+        self.assertFalse(m.assembled)
+        self.assertAlmostEqual(m.move_to(30)["s"], closed_form_s(math.radians(30), 0.0), delta=1e-9)
+
+    def test_input_error_names_file_and_line(self):
+        with open(SLIDER_CRANK) as f:
+            text = f.read()
+        bad = text.replace("links: [coupler, slider]", "links: [coupler, slidr]")
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "bad.yaml")
+            with open(path, "w") as f:
+                f.write(bad)
+            with self.assertRaises(koppel.InputError) as caught:
+                koppel.Mechanism.load(path)
+        error = caught.exception
+        self.assertIsInstance(error, ValueError)
+        self.assertEqual(error.file, path)
+        self.assertEqual(error.line, bad[:bad.index("slidr")].count("\n") + 1)
+        self.assertIn("slidr", str(error))
+        with self.assertRaises(koppel.InputError):
+            koppel.Mechanism.load(SLIDER_CRANK, set={"no_such": 1})
+        with self.assertRaises(koppel.InputError):
+            koppel.Mechanism.load(SLIDER_CRANK).sweep(0, 360, 0)
+
+    def test_catalog_find(self):
+        hits = koppel.catalog.find(links=4, prismatic=1, directory=CATALOG)
+        self.assertIn("slider-crank-offset", [h.id for h in hits])
+        for h in hits:
+            self.assertEqual((h.links, h.prismatic), (4, 1))
+            self.assertEqual(h.load().path, h.path)
+        with self.assertRaises(koppel.InputError):
+            koppel.catalog.find(links="four", directory=CATALOG)
+
+    def test_synthesis_reanalysed(self):
+        d = koppel.synth.crank_rocker(phi0=164, psi0=60)
+        self.assertEqual(d.status, "ok")
+        swing = d.mechanism.dead_centres("psi")
+        self.assertAlmostEqual(swing.stroke, 60, delta=1e-7)
+        self.assertEqual(koppel.synth.crank_rocker(phi0=180, psi0=60).status, "optimum on the boundary")
+        with self.assertRaises(koppel.InputError):
+            koppel.synth.crank_rocker(phi0=400, psi0=60)
+        s = koppel.synth.slider_crank(phi0=160, stroke=2.5)
+        self.assertAlmostEqual(s.mechanism.dead_centres("s").stroke, 2.5, delta=1e-7)
+        # the classic log10 four-bar (tests/data/function-log10.yaml): exact at the middle
+        # Chebyshev point x = 5.5, where the crank stands at 45 deg
+        f = koppel.synth.function(math.log10, x=(1, 10), input=(15, 75), output=(105, 195))
+        self.assertTrue(f.ok)
+        self.assertLess(f.figures["error_at_precision"], 1e-7)
+        psi = f.mechanism.move_to(45)["psi"]
+        self.assertAlmostEqual(math.remainder(psi - (105 + 90 * math.log10(5.5)), 360), 0, delta=1e-6)
+
+    def test_stubs_name_what_the_module_has(self):
+        # every class, function and member of the compiled module is in _koppel.pyi and back
+        from koppel import _koppel
+        with open(os.path.join(os.path.dirname(koppel.__file__), "_koppel.pyi")) as f:
+            tree = ast.parse(f.read())
+        stubbed = {}
+        for node in tree.body:
+            if isinstance(node, ast.ClassDef):
+                members = set()
+                for item in node.body:
+                    if isinstance(item, ast.FunctionDef):
+                        members.add(item.name)
+                    elif isinstance(item, ast.AnnAssign):
+                        members.add(item.target.id)
+                stubbed[node.name] = members
+            elif isinstance(node, ast.FunctionDef):
+                stubbed[node.name] = None
+        compiled = {name for name in dir(_koppel) if not name.startswith("__")}
+        self.assertEqual(set(stubbed), compiled)
+        for name, members in stubbed.items():
+            if members is None or name == "InputError":
+                continue
+            public = {m for m in dir(getattr(_koppel, name)) if not m.startswith("_")} | (
+                {"__getitem__", "__len__"} & set(dir(getattr(_koppel, name))))
+            self.assertEqual(members - {"__getitem__", "__len__"}, public - {"__getitem__", "__len__"}, name)
+        for name in ("catalog", "synth"):
+            for function in getattr(koppel, name).__dict__.values():
+                if callable(function) and getattr(function, "__module__", "").startswith("koppel."):
+                    self.assertTrue(function.__doc__, f"{name}.{function.__name__} has no docstring")
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,196 @@
+// koppel::Model: one mechanism, loaded from a mechanism file (README "Mechanism files"), with its
+// parameters, a current pose, and the analyses the CLI runs on it.
+//
+// Units (the same as in the mechanism files and at the CLI, so a table here equals the table of
+// `koppel analyze`): the drive input in degrees for an R drive, in the file's length unit for a
+// P drive; an output's value in degrees for an angle (R joint, link angle, direction,
+// transmission angle) and in length units otherwise; its k-th transfer function d^k y / d x^k
+// with angles in radians and the input x in radians (R drive) or length (P drive).
+// Frame: x right, y up, angles counter-clockwise positive (see koppel/core/mechanism.hpp).
+//
+// Failure behaviour: bad input (a file that does not read, an unknown parameter or output, a
+// range that cannot be sampled) throws koppel::InputError, naming the file, line and field where
+// there is one; the model is then unchanged. Outcomes are values: every result carries a status
+// (AnalysisStatus: not run, complete, partial, failed), a message and Brief(). A value that
+// cannot be computed (a transfer function above the order a singular pose allows) is NaN, and
+// the row's valid_order says so; no other NaN is ever returned.
+// A Model is not safe for concurrent use; copies are independent.
+#pragma once
+
+#include "koppel/analysis/status.hpp"
+#include "koppel/catalog/mechanism_file.hpp"  // InputError, Diagnostic
+#include "koppel/core/mechanism.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace koppel {
+
+// Parameter overrides: name -> formula over the file's parameters ("0.8", "l1/2").
+using ParameterValues = std::vector<std::pair<std::string, std::string>>;
+
+// A singular position met on the way (koppel/solver/singular.hpp explains the kinds).
+struct SingularPosition {
+  std::string kind;                 // "limit" (dead centre of the drive) or "branch-point"
+  double input = 0;                 // [deg for an R drive, length for a P drive]
+  double rcond = 0;                 // reciprocal condition of the scaled Jacobian there
+  std::vector<std::string> joints;  // the joints that carry it
+  std::string action;               // branch points: "continue", "stop" or "switch"
+};
+
+// A part of a requested range the drive cannot reach on the branch: [from, to] in sweep order.
+struct InputGap {
+  double from = 0, to = 0;
+};
+
+// The outputs and transfer functions at the samples of a sweep, laid out as `koppel analyze`:
+// the input, then per output y (y_x, y_y for a point) the columns y, y_d1, ..., y_d<order>, then
+// `singular` (1 where the pose is a singular position).
+struct SweepTable {
+  AnalysisStatus status = AnalysisStatus::kNotRun;  // partial: some samples are beyond the branch
+  std::string message;                              // why samples are missing
+  std::vector<std::string> notes;
+  int order = 0;
+  std::vector<std::string> columns, units;  // units: "deg", "length", "rad/rad^2", "1", ...
+  int rows = 0;
+  std::vector<double> values;               // rows x columns.size(), row after row
+  std::vector<int> valid_order;             // per row: orders above this are NaN there
+  std::vector<SingularPosition> singular_points;
+  std::vector<InputGap> gaps;
+
+  int ColumnIndex(const std::string& name) const;  // -1 when there is none
+  // The column called `name`; InputError for a name the table does not have.
+  std::vector<double> Column(const std::string& name) const;
+  double At(int row, int column) const { return values[static_cast<size_t>(row) * columns.size() + column]; }
+  std::string Brief() const;
+};
+
+// One pose: a single row of the sweep layout at the current input.
+struct PoseResult {
+  AnalysisStatus status = AnalysisStatus::kNotRun;  // complete: the pose was found
+  std::string message;
+  double input = 0;  // [deg | length]
+  std::vector<std::string> columns;
+  std::vector<double> values;  // one row; empty unless complete
+  int valid_order = 0;
+  bool singular = false;
+  // The value of column `name` ("s", "s_d3", "K_x"); InputError for an unknown column.
+  double Get(const std::string& name) const;
+  std::string Brief() const;
+};
+
+struct DeadCentrePoint {
+  std::string kind;  // "extended" (Strecklage), "folded" (Decklage) or "unclassified"
+  double input = 0;  // [deg | length]
+  double value = 0;  // the output there [deg | length]
+  double second = 0; // its 2nd-order transfer function there: < 0 a maximum, > 0 a minimum
+};
+
+// The dead centres of a scalar output and, where they pair up, the stroke (koppel deadcentres).
+struct DeadCentres {
+  AnalysisStatus status = AnalysisStatus::kNotRun;
+  std::string message;
+  std::vector<DeadCentrePoint> points;  // in input order
+  bool has_stroke = false;
+  // input_a / input_i: the drive at the extended / folded dead centre; value_a / value_i: the
+  // output there; stroke = |value_a - value_i|; forward_angle: the crank's turn from input_a to
+  // input_i (R drive, [deg]); phase_ratio = forward_angle / (360 - forward_angle).
+  double input_a = 0, input_i = 0, value_a = 0, value_i = 0, stroke = 0, forward_angle = 0, phase_ratio = 0;
+  std::vector<SingularPosition> singular_points;
+  std::vector<InputGap> gaps;
+  std::string Brief() const;
+};
+
+// One assembly branch's drivable interval (koppel range).
+struct BranchInterval {
+  int branch = 0;     // 0: the branch the file's assembly hint chooses
+  double from = 0, to = 0;  // [deg | length]; a full turn: 0 .. period
+  std::string from_kind, to_kind;  // "limit", "branch-point", "full-turn", "bound", "failed"
+  double period = 0;  // full turn: the input after which the pose repeats (360 k deg); else 0
+  std::vector<SingularPosition> singular_points;
+  std::string message;
+};
+
+struct Ranges {
+  AnalysisStatus status = AnalysisStatus::kNotRun;  // failed: not assemblable, or a walk failed
+  std::string message;
+  std::vector<std::string> notes;
+  std::vector<BranchInterval> branches;
+  std::string Brief() const;
+};
+
+// What a sweep does at a branch point (see --at-branch-point).
+enum class AtBranchPoint { kContinue, kStop, kSwitch };
+
+class Model {
+ public:
+  // Reads a mechanism file; `set` overrides parameters as --set does. Throws InputError.
+  static Model Load(const std::string& path, const ParameterValues& set = {});
+  // The same from the text of a mechanism file; `name` stands for the file in messages.
+  static Model Parse(const std::string& yaml, const std::string& name = "<string>", const ParameterValues& set = {});
+  // A mechanism built in code or returned by a synthesis (no parameters; sweep 0..360 by 1).
+  // Throws InputError when the mechanism is not consistent (CheckConsistency).
+  static Model FromMechanism(const Mechanism& mechanism);
+
+  Model(const Model& other);
+  Model& operator=(const Model& other);
+  Model(Model&&) noexcept;
+  Model& operator=(Model&&) noexcept;
+  ~Model();
+
+  const std::string& name() const;    // the file's `name`
+  const std::string& title() const;
+  const std::string& path() const;    // the file read, or the name given to Parse
+  const Mechanism& mechanism() const; // the model, radians inside (koppel/core/mechanism.hpp)
+  std::string input_name() const;     // "phi"
+  bool input_is_angle() const;        // R drive (degrees here) or P drive (length)
+  std::vector<std::string> output_names() const;
+  bool output_is_angle(const std::string& output) const;  // InputError for an unknown output
+  // The file's default sweep [deg | length].
+  double sweep_from() const;
+  double sweep_to() const;
+  double sweep_step() const;
+
+  // Every parameter after evaluation, in file order.
+  std::vector<std::pair<std::string, double>> parameters() const;
+  // Overrides one parameter (a formula over the others) and rebuilds the mechanism from the
+  // file's text with every override so far; the pose is forgotten. InputError (model unchanged)
+  // for an unknown name or a mechanism that no longer reads.
+  void Set(const std::string& name, const std::string& formula);
+  void Set(const std::string& name, double value);
+
+  // Assembles at the file's assembly hint and makes that the current pose; transfer functions up
+  // to `order` (0..8).
+  PoseResult Assemble(int order = 2);
+  // Drives from the current pose (assembling first if there is none) along its branch to `input`
+  // [deg | length]: through branch points as `at_branch_point` says, never past a limit point.
+  // On failure the pose stays where the walk ended and the status is failed.
+  PoseResult MoveTo(double input, int order = 2, AtBranchPoint at_branch_point = AtBranchPoint::kContinue);
+  bool assembled() const;
+
+  // The sweep of `koppel analyze`: from the assembly outward along the hint's branch.
+  SweepTable Sweep(double from, double to, double step, int order = 2, AtBranchPoint at_branch_point = AtBranchPoint::kContinue) const;
+  SweepTable Sweep(int order = 2) const;  // over the file's default sweep
+
+  // The dead centres of scalar output `output` (empty: the first) over from..to by step, the
+  // search resolution [deg | length]; unset: the file's sweep range, step 1 (as the CLI).
+  DeadCentres FindDeadCentres(const std::string& output = "", std::optional<double> from = {}, std::optional<double> to = {},
+                              std::optional<double> step = {}) const;
+  // The drivable interval of the hint's branch, or of every branch koppel finds.
+  Ranges DrivableRanges(bool all_branches = false, AtBranchPoint at_branch_point = AtBranchPoint::kContinue) const;
+  // The singular positions a sweep over the file's range meets.
+  std::vector<SingularPosition> SingularPositions() const;
+
+  // The mechanism as a mechanism file (numbers with 17 digits) that Parse reads back.
+  std::string ToYaml() const;
+
+ private:
+  struct Impl;
+  explicit Model(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace koppel

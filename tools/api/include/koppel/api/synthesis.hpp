@@ -1,0 +1,87 @@
+// The syntheses of `koppel synth` as functions: each returns a Design whose mechanism is a Model,
+// ready to analyse. Angles in degrees, lengths in any one unit (as at the CLI).
+//
+// Failure behaviour: a malformed request (an angle out of its range, a negative length, a
+// function that is not finite at a precision point) throws koppel::InputError; an outcome is a
+// value: DesignStatus kOk (proved by the solver's re-analysis, see the synthesis headers),
+// kNoDesign (no mechanism of the kind satisfies the request: the message says why),
+// kBoundaryOptimum (no best design: it degenerates) or kReanalysisFailed (the solver did not
+// confirm the closed form: nothing is reported). Only an ok design carries figures and a model.
+#pragma once
+
+#include "koppel/api/model.hpp"
+#include "koppel/synthesis/design_status.hpp"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+struct DesignFigure {
+  std::string name;  // the CLI's summary names: "l1", "mu_min", "beta", ...
+  double value = 0;
+  std::string unit;  // "deg", "length", "1"
+};
+
+struct Design {
+  DesignStatus status = DesignStatus::kNotRun;
+  std::string message;
+  std::vector<DesignFigure> figures;  // as `koppel synth ...` prints them
+  std::optional<Model> model;         // the designed mechanism
+  bool ok() const { return status == DesignStatus::kOk; }
+  // The figure called `name`; InputError when the design has none of that name.
+  double Get(const std::string& name) const;
+  std::string Brief() const;
+};
+
+// Dead-centre synthesis of a crank-rocker (seed 002, koppel synth deadcentre crank-rocker):
+// phi0 the crank's turn from the folded to the extended dead centre, psi0 the rocker's swing
+// meanwhile [deg]; beta [deg] or lambda = l1/l2 choose the design of the family (neither: the one
+// with the largest smallest transmission angle); frame = A0B0; the crank runs counter-clockwise
+// (clockwise: the mirror image). Model: input phi, outputs psi and mu.
+struct CrankRockerSpec {
+  double phi0 = 0, psi0 = 0;
+  bool same_sense = true;  // the rocker turns the crank's way from folded to extended
+  std::optional<double> beta, lambda;
+  double frame = 1;
+  bool clockwise = false;
+};
+Design SynthesiseCrankRocker(const CrankRockerSpec& spec);
+
+// Dead-centre synthesis of a slider-crank (seed 000's conventions): phi0 [deg] and the stroke;
+// the offset |e| or beta [deg] (neither: the largest smallest transmission angle).
+// Model: input phi, outputs s and mu.
+struct SliderCrankSpec {
+  double phi0 = 0, stroke = 0;
+  std::optional<double> offset, beta;
+};
+Design SynthesiseSliderCrank(const SliderCrankSpec& spec);
+
+// Meyer zur Capellen straight-line linkage (seed 003) from lambda, or from the coupler angle
+// kappa [deg], and the inflection-circle diameter D. Model: the double rocker, output K.
+struct MzcSpec {
+  std::optional<double> lambda, kappa;
+  double diameter = 1;
+};
+Design SynthesiseMzc(const MzcSpec& spec);
+
+// Function generation (koppel synth function): a four-bar (rocker angle) or slider-crank
+// (slider displacement) whose output follows y = f(x) while the crank follows x, mapped linearly
+// onto input_from..input_to [deg] and output_from..output_to [deg | length]; `points` Chebyshev
+// precision points, or the x values in `at`. Figures: the link lengths, the largest structural
+// error (error_max, [deg | length]) over the range and at the precision points.
+struct FunctionSpec {
+  std::string type = "four-bar";  // or "slider-crank"
+  std::function<double(double)> f;
+  double x_from = 0, x_to = 1;
+  double input_from = 0, input_to = 90;
+  double output_from = 0, output_to = 90;
+  int points = 3;
+  std::vector<double> at;
+  double frame = 1;
+};
+Design SynthesiseFunction(const FunctionSpec& spec);
+
+}  // namespace koppel

@@ -1,0 +1,67 @@
+#include "koppel/api/catalog.hpp"
+
+#include "display.hpp"
+
+#include "koppel/catalog/catalog.hpp"
+
+namespace koppel {
+
+namespace {
+
+int CountOf(const std::map<std::string, int>& m, const std::string& key) {
+  const auto it = m.find(key);
+  return it == m.end() ? 0 : it->second;
+}
+
+std::optional<CountRange> Range(const char* field, const std::optional<std::string>& text) {
+  if (!text) return std::nullopt;
+  const std::optional<CountRange> range = CountRange::Parse(*text);
+  if (!range) api_detail::BadInput("catalog query", field, "expected a count or a range such as 4, 4..6, ..6 or 4.., found '" + *text + "'");
+  return range;
+}
+
+}  // namespace
+
+std::string CatalogDirectory() { return DefaultCatalogDirectory(); }
+
+std::vector<CatalogHit> FindInCatalog(const CatalogQuery& q, const std::string& directory) {
+  FeatureQuery query;
+  query.links = Range("links", q.links);
+  query.binary = Range("binary", q.binary);
+  query.ternary = Range("ternary", q.ternary);
+  query.quaternary = Range("quaternary", q.quaternary);
+  query.joints = Range("joints", q.joints);
+  query.revolute = Range("revolute", q.revolute);
+  query.prismatic = Range("prismatic", q.prismatic);
+  query.drives = Range("drives", q.drives);
+  query.outputs = Range("outputs", q.outputs);
+  if (q.kind == "transfer") {
+    query.kind = CardKind::kTransfer;
+  } else if (q.kind == "guidance") {
+    query.kind = CardKind::kGuidance;
+  } else if (!q.kind.empty()) {
+    api_detail::BadInput("catalog query", "kind", "expected transfer or guidance, found '" + q.kind + "'");
+  }
+  query.klass = q.klass;
+  query.motion = q.motion;
+  query.text = q.text;
+  const Catalog catalog = Catalog::Load(directory.empty() ? DefaultCatalogDirectory() : directory);
+  std::vector<CatalogHit> hits;
+  for (const CatalogEntry* e : FindEntries(catalog, query)) {
+    CatalogHit h;
+    h.id = e->file.id;
+    h.title_en = e->file.card->title_en;
+    h.title_de = e->file.card->title_de;
+    h.path = e->file.path;
+    h.kind = ToString(e->file.card->kind);
+    h.classes = e->classes;
+    h.links = e->features.links;
+    h.joints = e->features.joints;
+    h.revolute = CountOf(e->features.joints_by_type, "D");
+    h.prismatic = CountOf(e->features.joints_by_type, "S");
+    hits.push_back(std::move(h));
+  }
+  return hits;
+}
+
+}  // namespace koppel

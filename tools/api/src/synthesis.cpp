@@ -1,0 +1,197 @@
+// The syntheses of `koppel synth` as functions returning a Design (synthesis.hpp).
+#include "koppel/api/synthesis.hpp"
+
+#include "display.hpp"
+
+#include "koppel/core/angles.hpp"
+#include "koppel/synthesis/deadcentre_synthesis.hpp"
+#include "koppel/synthesis/function_synthesis.hpp"
+#include "koppel/synthesis/mzc_synthesis.hpp"
+
+#include <cmath>
+
+namespace koppel {
+
+using api_detail::BadInput;
+
+namespace {
+
+void Require(bool valid, const std::string& field, const std::string& why) {
+  if (!valid) BadInput("synthesis request", field, why);
+}
+
+struct Figures {
+  std::vector<DesignFigure> list;
+  void Add(const std::string& name, double value, const std::string& unit) { list.push_back({name, value, unit}); }
+  void Angle(const std::string& name, double radians) { Add(name, RadToDeg(radians), "deg"); }
+};
+
+template <class Result>
+Design Finished(const Result& result, Figures figures, const Mechanism& mechanism) {
+  Design d;
+  d.status = result.status;
+  d.message = result.message;
+  if (d.ok()) {
+    d.figures = std::move(figures.list);
+    d.model = Model::FromMechanism(mechanism);
+  }
+  return d;
+}
+
+}  // namespace
+
+double Design::Get(const std::string& name) const {
+  for (const DesignFigure& f : figures) {
+    if (f.name == name) return f.value;
+  }
+  BadInput("design", "figure", ok() ? "no figure '" + name + "'" : "no design: " + message);
+}
+
+std::string Design::Brief() const {
+  std::string s = ToString(status);
+  const char* separator = ": ";
+  for (const DesignFigure& f : figures) {
+    s += separator + f.name + " = " + std::to_string(f.value);
+    separator = ", ";
+  }
+  return s + (message.empty() ? "" : "; " + message);
+}
+
+Design SynthesiseCrankRocker(const CrankRockerSpec& spec) {
+  Require(!(spec.beta && spec.lambda), "beta/lambda", "give beta or lambda, not both");
+  CrankRockerRequest request;
+  request.phi0 = DegToRad(spec.phi0);
+  request.psi0 = DegToRad(spec.psi0);
+  request.rocker_sense = spec.same_sense ? RockerSense::kSame : RockerSense::kOpposite;
+  request.frame_length = spec.frame;
+  std::string why;
+  Require(request.IsValid(&why), "phi0/psi0/frame", why);
+  const CrankRockerDesign d = spec.beta     ? CrankRockerFromBeta(request, DegToRad(*spec.beta))
+                              : spec.lambda ? CrankRockerFromLambda(request, *spec.lambda)
+                                            : BestCrankRocker(request);
+  if (d.status == DesignStatus::kInvalidRequest) BadInput("synthesis request", "beta/lambda", d.message);
+  Figures f;
+  if (d.ok()) {
+    const double turn = spec.clockwise ? -1 : 1;  // the CLI's --sense cw: the mirror image
+    f.Angle("beta", d.beta);
+    f.Add("lambda", d.lambda, "1");
+    f.Add("l1", d.l1, "length");
+    f.Add("l2", d.l2, "length");
+    f.Add("l3", d.l3, "length");
+    f.Add("l4", d.l4, "length");
+    f.Angle("mu_min", d.mu_min);
+    f.Angle("mu_min_at", turn * d.mu_min_at);
+    f.Angle("phi_a", turn * d.phi_a);
+    f.Angle("phi_i", turn * d.phi_i);
+    f.Angle("beta_L", d.beta_l);
+    f.Angle("beta_E", d.beta_e);
+    f.Angle("reanalysed_phi0", d.reanalysed_phi0);
+    f.Angle("reanalysed_psi0", std::abs(d.reanalysed_psi));
+  }
+  if (!d.ok()) return Finished(d, f, Mechanism{});
+  return Finished(d, f, spec.clockwise ? MirrorMechanism(CrankRockerMechanism(d)) : CrankRockerMechanism(d));
+}
+
+Design SynthesiseSliderCrank(const SliderCrankSpec& spec) {
+  Require(!(spec.offset && spec.beta), "offset/beta", "give the offset or beta, not both");
+  SliderCrankRequest request;
+  request.phi0 = DegToRad(spec.phi0);
+  request.stroke = spec.stroke;
+  std::string why;
+  Require(request.IsValid(&why), "phi0/stroke", why);
+  const SliderCrankDesign d = spec.offset ? SliderCrankFromOffset(request, *spec.offset)
+                              : spec.beta ? SliderCrankFromBeta(request, DegToRad(*spec.beta))
+                                          : BestSliderCrank(request);
+  if (d.status == DesignStatus::kInvalidRequest) BadInput("synthesis request", "offset/beta", d.message);
+  Figures f;
+  if (d.ok()) {
+    f.Add("e", d.e, "length");
+    f.Add("l1", d.l1, "length");
+    f.Add("l2", d.l2, "length");
+    f.Angle("beta", d.beta);
+    f.Angle("mu_min", d.mu_min);
+    f.Angle("mu_min_at", d.mu_min_at);
+    f.Add("offset_max", d.offset_max, "length");
+    f.Angle("beta_max", d.beta_max);
+    f.Angle("reanalysed_phi0", d.reanalysed_phi0);
+    f.Add("reanalysed_stroke", d.reanalysed_stroke, "length");
+    return Finished(d, f, SliderCrankMechanism(d));
+  }
+  return Finished(d, f, Mechanism{});
+}
+
+Design SynthesiseMzc(const MzcSpec& spec) {
+  Require(spec.lambda.has_value() != spec.kappa.has_value(), "lambda/kappa", "give lambda or kappa (one of them)");
+  double lambda = spec.lambda.value_or(0);
+  if (spec.kappa) {
+    const Expected<double> from_kappa = LambdaFromKappa(DegToRad(*spec.kappa));
+    Require(static_cast<bool>(from_kappa), "kappa", from_kappa ? "" : from_kappa.error());
+    lambda = *from_kappa;
+  }
+  const MzcDesign d = MzcFromLambda(lambda, spec.diameter);
+  if (d.status == DesignStatus::kInvalidRequest) BadInput("synthesis request", "lambda/D", d.message);
+  Figures f;
+  if (!d.ok()) return Finished(d, f, Mechanism{});
+  const Mechanism m = MzcMechanism(d);
+  f.Add("lambda", d.lambda, "1");
+  f.Add("D", d.D, "length");
+  f.Angle("phi0", d.phi0);
+  f.Angle("kappa", d.kappa);
+  f.Add("l1", d.l1, "length");
+  f.Add("l2", d.l2, "length");
+  f.Add("l3", d.l3, "length");
+  f.Add("l4", d.l4, "length");
+  f.Add("k", d.k, "length");
+  // point 2 of link 2: K on the coupler (MzcMechanism), as `koppel synth mzc` counts it
+  f.Add("contact_points", TangentContactOrder(m, {2, 2}, m.hint.input, 1e-9), "1");
+  return Finished(d, f, m);
+}
+
+Design SynthesiseFunction(const FunctionSpec& spec) {
+  Require(spec.type == "four-bar" || spec.type == "slider-crank", "type", "expected four-bar or slider-crank, found '" + spec.type + "'");
+  Require(static_cast<bool>(spec.f), "f", "no function given");
+  FunctionRequest request;
+  request.type = spec.type == "four-bar" ? FunctionGenerator::kFourBar : FunctionGenerator::kSliderCrank;
+  request.function = [&spec](double x, double* y) {
+    *y = spec.f(x);
+    return std::isfinite(*y);
+  };
+  request.x_from = spec.x_from;
+  request.x_to = spec.x_to;
+  request.input_from = DegToRad(spec.input_from);
+  request.input_to = DegToRad(spec.input_to);
+  const bool angle_out = request.type == FunctionGenerator::kFourBar;
+  request.output_from = angle_out ? DegToRad(spec.output_from) : spec.output_from;
+  request.output_to = angle_out ? DegToRad(spec.output_to) : spec.output_to;
+  request.points = spec.points;
+  request.at = spec.at;
+  request.frame = spec.frame;
+  std::string why;
+  Require(request.IsValid(&why), "function request", why);
+  const FunctionDesign d = koppel::SynthesiseFunction(request);
+  if (d.status == FunctionStatus::kInvalidRequest) BadInput("synthesis request", "function request", d.message);
+  Design design;
+  design.status = d.ok() ? DesignStatus::kOk : DesignStatus::kNoDesign;
+  design.message = d.ok() ? d.message : std::string(ToString(d.status)) + ": " + d.message;
+  if (!d.ok()) return design;
+  Figures f;
+  const auto shown = [&](double v) { return angle_out ? RadToDeg(v) : v; };
+  const std::string unit = angle_out ? "deg" : "length";
+  if (angle_out) {
+    f.Add("crank", d.crank, "length");
+    f.Add("coupler", d.coupler, "length");
+    f.Add("rocker", d.rocker, "length");
+    f.Add("frame", d.frame, "length");
+  } else {
+    f.Add("crank", d.crank, "length");
+    f.Add("coupler", d.coupler, "length");
+    f.Add("offset", d.offset, "length");
+  }
+  f.Add("error_max", shown(d.error_max), unit);
+  f.Add("error_at_precision", shown(d.error_at_precision), unit);
+  design.figures = std::move(f.list);
+  design.model = Model::FromMechanism(d.mechanism);
+  return design;
+}
+
+}  // namespace koppel

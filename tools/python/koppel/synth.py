@@ -1,0 +1,59 @@
+"""The syntheses of `koppel synth` as functions.
+
+Each returns a Design: a dict-like result with status ("ok", "no design", "optimum on the
+boundary", "re-analysis failed"), ok, message, figures ({name: value} as the CLI prints them; angles in
+degrees) and mechanism (a koppel.Mechanism, ready to analyse; None unless ok). Every design is
+proved by the solver's re-analysis before it is returned. A malformed request raises
+koppel.InputError.
+"""
+from typing import Callable, Optional, Sequence, Tuple
+
+from . import _koppel
+
+
+class Design(dict):
+    """The outcome of a synthesis; keys are also attributes (d.status, d.figures, d.mechanism)."""
+
+    def __getattr__(self, name):
+        try:
+            return self[name]
+        except KeyError as error:
+            raise AttributeError(name) from error
+
+
+def crank_rocker(phi0: float, psi0: float, rocker_sense: str = "same",
+                 beta: Optional[float] = None, lambda_: Optional[float] = None,
+                 frame: float = 1.0, sense: str = "ccw") -> Design:
+    """Dead-centre synthesis of a crank-rocker (seed 002; koppel synth deadcentre crank-rocker).
+
+    phi0: the crank's turn from the folded to the extended dead centre [deg]; psi0: the rocker's
+    swing meanwhile [deg]; rocker_sense "same" (the document's) or "opposite"; beta [deg] or
+    lambda_ = l1/l2 picks the design (neither: the largest smallest transmission angle); frame:
+    A0B0; sense "ccw" or "cw" (the mirror image). Mechanism: input phi, outputs psi and mu.
+    """
+    return Design(_koppel._crank_rocker(phi0, psi0, rocker_sense, beta, lambda_, frame, sense))
+
+
+def slider_crank(phi0: float, stroke: float, offset: Optional[float] = None,
+                 beta: Optional[float] = None) -> Design:
+    """Dead-centre synthesis of a slider-crank (seed 000's conventions): phi0 [deg], the stroke,
+    and the offset |e| or beta [deg] (neither: the largest smallest transmission angle)."""
+    return Design(_koppel._slider_crank(phi0, stroke, offset, beta))
+
+
+def mzc(lambda_: Optional[float] = None, kappa: Optional[float] = None, D: float = 1.0) -> Design:
+    """Meyer zur Capellen straight-line linkage (seed 003) from lambda_ or the coupler angle
+    kappa [deg], and the inflection-circle diameter D. Mechanism: the double rocker, output K."""
+    return Design(_koppel._mzc(lambda_, kappa, D))
+
+
+def function(f: Callable[[float], float], x: Tuple[float, float] = (0.0, 1.0),
+             input: Tuple[float, float] = (0.0, 90.0), output: Tuple[float, float] = (0.0, 90.0),
+             type: str = "four-bar", points: int = 3, at: Sequence[float] = (),
+             frame: float = 1.0) -> Design:
+    """Function generation (koppel synth function): a "four-bar" (rocker angle) or
+    "slider-crank" (slider displacement) whose output follows y = f(x) while the crank follows x,
+    x mapped onto input [deg] and f onto output [deg or length]; `points` Chebyshev precision
+    points or the x values `at`. Figures: link lengths, error_max, error_at_precision."""
+    return Design(_koppel._function(f, type, x[0], x[1], input[0], input[1], output[0], output[1],
+                                    points, list(at), frame))

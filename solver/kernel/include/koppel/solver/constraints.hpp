@@ -45,7 +45,8 @@ Expected<TransmissionGeometry> ResolveTransmission(const Mechanism& m, const Out
 class ConstraintSystem {
  public:
   // Precondition: CheckConsistency(mechanism) is empty. Keeps a reference: the mechanism must
-  // outlive the system.
+  // outlive the system and not change while it is used (the joints' geometry and the Jacobian's
+  // pattern are taken at construction; a changed mechanism needs a new system).
   explicit ConstraintSystem(const Mechanism& mechanism);
 
   const Mechanism& mechanism() const { return mechanism_; }

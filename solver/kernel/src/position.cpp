@@ -84,15 +84,13 @@ void PositionSolver::FillDenseJacobian() {
 bool PositionSolver::Factorize() {
   double max_pivot = 0.0, min_pivot = 0.0;
   scaled_determinant_ = 0.0;
-  if (use_blocks_) {
-    // The pivots of the blocks' LUs are those of one LU of the permuted J (pivoting within the
-    // blocks); each belongs to one coordinate, so the pivots of J S are pivot_j S_jj as below.
-    blocks_.Factorize(jacobian_values_.data());
-    int sign = blocks_.DeterminantSign();
+  // The gauge, det(J S) and its sign from an LU of J whose pivot j belongs to coordinate j
+  // (`sign`: that of the LU's permutations): the pivots of J S are pivot_j S_jj.
+  auto take_pivots = [&](int sign, auto pivot_of) {
     double determinant = sign;
-    min_pivot = std::abs(blocks_.Pivot(0) * column_scale_(0));
-    for (int j = 0; j < blocks_.size(); ++j) {
-      const double d = blocks_.Pivot(j) * column_scale_(j);
+    min_pivot = std::abs(pivot_of(0) * column_scale_(0));
+    for (int j = 0; j < NumCoordinates(); ++j) {
+      const double d = pivot_of(j) * column_scale_(j);
       max_pivot = std::max(max_pivot, std::abs(d));
       min_pivot = std::min(min_pivot, std::abs(d));
       determinant *= d;
@@ -101,24 +99,16 @@ bool PositionSolver::Factorize() {
     pivot_ratio_ = max_pivot > 0 ? min_pivot / max_pivot : 0.0;
     scaled_determinant_ = determinant;
     jacobian_sign_ = pivot_ratio_ > kSingularPivotRatio ? sign : 0;
+  };
+  if (use_blocks_) {
+    // the blocks' LUs are one LU of the permuted J (pivoting within the blocks)
+    blocks_.Factorize(jacobian_values_.data());
+    take_pivots(blocks_.DeterminantSign(), [&](int j) { return blocks_.Pivot(j); });
   } else if (square_ && jacobian_.rows() > 0) {
     lu_.compute(jacobian_);
+    // Partial pivoting permutes rows only, so column j of U still belongs to coordinate j.
     const auto& lu = lu_.matrixLU();
-    int sign = static_cast<int>(lu_.permutationP().determinant());
-    // Partial pivoting permutes rows only, so column j of U still belongs to coordinate j and
-    // the pivots of J S are U_jj S_jj: the scaled ratio and determinant come for free.
-    double determinant = sign;
-    min_pivot = std::abs(lu(0, 0) * column_scale_(0));
-    for (int i = 0; i < lu.rows(); ++i) {
-      const double d = lu(i, i) * column_scale_(i);
-      max_pivot = std::max(max_pivot, std::abs(d));
-      min_pivot = std::min(min_pivot, std::abs(d));
-      determinant *= d;
-      if (d < 0) sign = -sign;
-    }
-    pivot_ratio_ = max_pivot > 0 ? min_pivot / max_pivot : 0.0;
-    scaled_determinant_ = determinant;
-    jacobian_sign_ = pivot_ratio_ > kSingularPivotRatio ? sign : 0;
+    take_pivots(static_cast<int>(lu_.permutationP().determinant()), [&](int j) { return lu(j, j); });
   } else {
     // Redundant constraints (more rows than coordinates): least squares through QR, no sign.
     // Column pivoting ranks the columns by size, so scale them first to compare like with like.

@@ -40,8 +40,14 @@ std::optional<Extremum> FindExtremum(const Mechanism& m, const SweepResult& swee
   const double lo_sample = sweep.outputs.col(column).minCoeff(), hi_sample = sweep.outputs.col(column).maxCoeff();
   if (hi_sample - lo_sample <= 1e-12 * std::max(1.0, LengthScale(m))) return Extremum{sweep.inputs[best], sweep.outputs(best, column)};
   const Eigen::VectorXd q = sweep.poses.row(best).transpose();
-  const StationaryPoint p = RefineStationary(m, output, component, sweep.inputs[best], q);
+  StationaryPoint p = RefineStationary(m, output, component, sweep.inputs[best], q);
   const bool interior = best > 0 && best < n - 1;
+  // an extreme at a singular position (a change point where the output turns back): no path
+  // starts on a singular pose, but one from a regular neighbour walks onto it
+  for (int neighbour : {best - 1, best + 1}) {
+    if (p.ok() || !sweep.singular[best] || neighbour < 0 || neighbour >= n || sweep.singular[neighbour]) continue;
+    p = RefineStationary(m, output, component, sweep.inputs[neighbour], sweep.poses.row(neighbour).transpose());
+  }
   if (!p.ok()) {
     if (interior) {
       *why_not = p.message;

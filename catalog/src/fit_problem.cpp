@@ -2,11 +2,13 @@
 
 #include "koppel/core/angles.hpp"
 #include "input_file.hpp"
+#include "mechanism_node.hpp"
 #include "yaml_reader.hpp"
 
 #include <fmt/core.h>
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 namespace koppel {
@@ -136,11 +138,14 @@ std::optional<FitTarget> ReadFitTarget(YamlReader& r, const YAML::Node& t, const
 MechanismBuilder BuilderFor(const FitProblem& problem, std::string mechanism_text) {
   const std::string mechanism_path = problem.mechanism_path;
   const std::vector<FitParameter> free = problem.parameters;
-  return [mechanism_path, mechanism_text = std::move(mechanism_text), free](const std::vector<double>& values) -> Expected<Mechanism> {
+  // Parsed once; every call reads its own deep copy (the reader may add nodes to a tree it looks
+  // into, and the builder runs on several threads at once).
+  const auto parsed = std::make_shared<const YAML::Node>(ParseYamlText(mechanism_text, mechanism_path));
+  return [mechanism_path, parsed, free](const std::vector<double>& values) -> Expected<Mechanism> {
     Overrides overrides;
     for (size_t j = 0; j < free.size(); ++j) overrides.emplace_back(free[j].name, fmt::format("{:.17g}", values[j]));
     try {
-      return ParseMechanismText(mechanism_text, mechanism_path, overrides).mechanism;
+      return ParseMechanismNode(YAML::Clone(*parsed), mechanism_path, overrides).mechanism;
     } catch (const InputError& e) {
       return Expected<Mechanism>::Error(e.what());
     }

@@ -1,5 +1,7 @@
 #include "koppel/catalog/mechanism_file.hpp"
 
+#include "mechanism_node.hpp"
+
 #include "input_file.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/core/limits.hpp"
@@ -396,9 +398,12 @@ InputError::InputError(std::vector<Diagnostic> diagnostics)
     : std::runtime_error(JoinDiagnostics(diagnostics)), diagnostics_(std::move(diagnostics)) {}
 
 MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides) {
+  return ParseMechanismNode(ParseYamlText(text, file_name), file_name, overrides);
+}
+
+MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file_name, const Overrides& overrides) {
   MechanismFile out;
   out.path = file_name;
-  const YAML::Node root = ParseYamlText(text, file_name);
   YamlReader reader(file_name, &out.parameters);
   reader.set_fallback(YAML::Mark());  // line 1, column 1 for problems without a place
   try {

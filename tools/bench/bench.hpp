@@ -23,6 +23,9 @@ struct Case {
   std::string baseline;
   double baseline_factor = 1.0;
   double budget_ns = 0.0;
+  // Threads of its own (the chart, the fit's starts): timed by the wall clock. Every other case
+  // by the CPU time of this process, which other programs on a loaded machine do not inflate.
+  bool threaded = false;
   std::string note;  // printed with the table (e.g. why a case is skipped)
   bool skipped = false;
   std::function<void(benchmark::State&)> run;

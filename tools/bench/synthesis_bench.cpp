@@ -103,11 +103,12 @@ void TimeFit(benchmark::State& state) {
   }
 }
 
-Case RunCase(std::string name, double budget_ms, void (*run)(benchmark::State&)) {
+Case RunCase(std::string name, double budget_ms, void (*run)(benchmark::State&), bool threaded) {
   Case c;
   c.name = std::move(name);
   c.per = Per::kRun;
   c.budget_ns = budget_ms * 1e6;
+  c.threaded = threaded;
   c.run = run;
   return c;
 }
@@ -115,7 +116,8 @@ Case RunCase(std::string name, double budget_ms, void (*run)(benchmark::State&))
 }  // namespace
 
 std::vector<Case> SynthesisCases() {
-  return {RunCase("deadcentre-synthesis", 5, TimeDeadCentre), RunCase("chart-30x30", 2000, TimeChart), RunCase("fit-32-starts", 1000, TimeFit)};
+  return {RunCase("deadcentre-synthesis", 5, TimeDeadCentre, false), RunCase("chart-30x30", 2000, TimeChart, true),
+          RunCase("fit-32-starts", 1000, TimeFit, true)};
 }
 
 }  // namespace koppel::bench

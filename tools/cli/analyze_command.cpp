@@ -26,14 +26,15 @@ struct AnalyzeArgs {
 // the row's valid order) is empty in CSV and null in JSON, never a number.
 std::string ToCsv(const Mechanism& m, const SweepColumns& t, const SweepResult& r) {
   std::string out;
+  out.reserve(r.inputs.size() * (r.outputs.cols() + 2) * 16);  // about 16 characters a number
   for (size_t c = 0; c < t.names.size(); ++c) out += (c ? "," : "") + t.names[c];
   out += "\n";
   for (size_t i = 0; i < r.inputs.size(); ++i) {
-    out += FormatNumber(m.InputIsAngle() ? RadToDeg(r.inputs[i]) : r.inputs[i]);
+    AppendNumber(out, m.InputIsAngle() ? RadToDeg(r.inputs[i]) : r.inputs[i]);
     for (int c = 0; c < r.outputs.cols(); ++c) {
       const double v = r.outputs(i, c);
-      out += ",";
-      if (t.order_of_column[c + 1] <= r.valid_order[i]) out += FormatNumber(t.angle_value[c + 1] ? RadToDeg(v) : v);
+      out += ',';
+      if (t.order_of_column[c + 1] <= r.valid_order[i]) AppendNumber(out, t.angle_value[c + 1] ? RadToDeg(v) : v);
     }
     out += r.singular[i] ? ",1\n" : ",0\n";
   }

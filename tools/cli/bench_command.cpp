@@ -24,7 +24,7 @@ struct BenchArgs {
 };
 
 struct Measured {
-  double ns = 0.0;  // per step (Per::kStep) or per run
+  double cpu_ns = 0.0, wall_ns = 0.0;  // per benchmark iteration
   std::string error;
   bool ran = false;
 };
@@ -41,7 +41,8 @@ class Collector : public benchmark::BenchmarkReporter {
       if (r.error_occurred) {
         m.error = r.error_message;
       } else if (r.iterations > 0) {
-        m.ns = r.real_accumulated_time / static_cast<double>(r.iterations) * 1e9;
+        m.cpu_ns = r.cpu_accumulated_time / static_cast<double>(r.iterations) * 1e9;
+        m.wall_ns = r.real_accumulated_time / static_cast<double>(r.iterations) * 1e9;
       }
       std::cerr << fmt::format("koppel bench: {} done\n", r.run_name.function_name);
     }
@@ -53,7 +54,7 @@ class Collector : public benchmark::BenchmarkReporter {
 };
 
 struct Row {
-  std::string name, per, baseline_name, note;
+  std::string name, per, clock, baseline_name, note;
   double ns = 0.0;
   double baseline_ns = 0.0;  // 0: none
   double ratio = 0.0;        // 0: none
@@ -106,7 +107,8 @@ void RunBench(const BenchArgs& args) {
   benchmark::Initialize(&argc, argv);
   for (const bench::Case& c : cases) {
     if (!wanted.count(c.name) || c.skipped) continue;
-    benchmark::RegisterBenchmark(c.name.c_str(), c.run)->MinTime(args.min_time)->UseRealTime();
+    benchmark::internal::Benchmark* b = benchmark::RegisterBenchmark(c.name.c_str(), c.run)->MinTime(args.min_time);
+    if (c.threaded) b->UseRealTime();
   }
   double load[1] = {0.0};
   const bool have_load = getloadavg(load, 1) == 1;
@@ -117,17 +119,18 @@ void RunBench(const BenchArgs& args) {
 
   std::vector<Row> rows;
   bool failed = false;
-  auto per_unit = [](const bench::Case& c, double ns) { return c.per == bench::Per::kStep ? ns / c.steps_per_iteration : ns; };
   std::map<std::string, double> ns_of;
   for (const bench::Case& c : cases) {
     const Measured& m = collector.measured()[c.name];
-    if (m.ran && m.error.empty()) ns_of[c.name] = per_unit(c, m.ns);
+    const double ns = c.threaded ? m.wall_ns : m.cpu_ns;
+    if (m.ran && m.error.empty()) ns_of[c.name] = c.per == bench::Per::kStep ? ns / c.steps_per_iteration : ns;
   }
   for (const bench::Case& c : cases) {
     if (!wanted.count(c.name)) continue;
     Row row;
     row.name = c.name;
     row.per = c.per == bench::Per::kStep ? "step" : "run";
+    row.clock = c.threaded ? "wall" : "cpu";
     row.note = c.note;
     const Measured& m = collector.measured()[c.name];
     if (!c.skipped && !m.error.empty()) {
@@ -155,7 +158,7 @@ void RunBench(const BenchArgs& args) {
   if (args.format == "json") {
     nlohmann::json list = nlohmann::json::array();
     for (const Row& r : rows) {
-      nlohmann::json j = {{"name", r.name}, {"per", r.per}};
+      nlohmann::json j = {{"name", r.name}, {"per", r.per}, {"clock", r.clock}};
       j["ns_per_step"] = r.measured ? nlohmann::json(r.ns) : nlohmann::json(nullptr);
       j["baseline"] = r.baseline_ns > 0.0 ? nlohmann::json(r.baseline_ns) : nlohmann::json(nullptr);
       j["ratio"] = r.ratio > 0.0 ? nlohmann::json(r.ratio) : nlohmann::json(nullptr);
@@ -167,9 +170,9 @@ void RunBench(const BenchArgs& args) {
     if (have_load) out["load_average"] = load[0];
     std::cout << JsonText(out);
   } else if (args.format == "csv") {
-    std::string text = "name,per,ns_per_step,baseline,ratio,baseline_name,note\n";
+    std::string text = "name,per,clock,ns_per_step,baseline,ratio,baseline_name,note\n";
     for (const Row& r : rows) {
-      text += fmt::format("{},{},{},{},{},{},\"{}\"\n", r.name, r.per, r.measured ? Number(r.ns, 6) : "",
+      text += fmt::format("{},{},{},{},{},{},{},\"{}\"\n", r.name, r.per, r.clock, r.measured ? Number(r.ns, 6) : "",
                           r.baseline_ns > 0 ? Number(r.baseline_ns, 6) : "", r.ratio > 0 ? Number(r.ratio, 4) : "", r.baseline_name,
                           r.note);
     }
@@ -182,7 +185,12 @@ void RunBench(const BenchArgs& args) {
                                r.baseline_ns > 0 ? time(r.baseline_ns) : "-", r.ratio > 0 ? Number(r.ratio, 3) : "-", r.baseline_name,
                                r.note.empty() ? "" : (r.baseline_name.empty() ? "" : "; ") + r.note);
     }
-    std::cout << fmt::format("({} cores, load average {} at the start)\n", cores, have_load ? Number(load[0], 3) : "unknown");
+    std::string wall;
+    for (const Row& r : rows) {
+      if (r.clock == "wall") wall += (wall.empty() ? "" : ", ") + r.name;
+    }
+    std::cout << fmt::format("(CPU time of this process{}; {} cores, load average {} at the start)\n",
+                             wall.empty() ? "" : "; wall time for " + wall, cores, have_load ? Number(load[0], 3) : "unknown");
   }
   if (failed) throw Exit{kExitFailed};
 }
@@ -197,7 +205,8 @@ void AddBenchCommand(CLI::App& app) {
       "walk steps (positions, 1st and 2nd order of every output) against hand-written closed forms doing the\n"
       "same work, chains of N four-bar loops against the 4-loop chain per loop, the four-bar's positions\n"
       "against SolveSpace's libslvs, and synthesis, charts, fits and analyze against their time budgets.\n"
-      "ratio = time / baseline. Times are wall-clock: on a loaded machine compare the ratios.\n"
+      "ratio = time / baseline. Times are the CPU time of this process, wall-clock time for the cases that run\n"
+      "threads of their own (chart, fit); on a loaded machine compare the ratios.\n"
       "Example: koppel bench --filter 'fourbar|chain' --format json");
   cmd->add_option("--filter", args->filter, "Run the benchmarks whose name matches this regular expression (and their baselines)");
   cmd->add_option("--format", args->format, "table (default), csv or json");

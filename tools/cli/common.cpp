@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <stdexcept>
@@ -74,9 +75,21 @@ std::string JsonText(nlohmann::json j) {
 const char* Version() { return kVersion; }  // koppel/core/version.hpp
 
 std::string FormatNumber(double value) {
+  std::string text;
+  AppendNumber(text, value);
+  return text;
+}
+
+void AppendNumber(std::string& out, double value) {
   if (!std::isfinite(value)) throw std::logic_error("koppel: refusing to print a non-finite number");
-  if (value == 0.0) return "0";  // no "-0"
-  return fmt::format("{:.12g}", value);
+  if (value == 0.0) {  // no "-0"
+    out += '0';
+    return;
+  }
+  // printf's %.12g, written without a temporary string (analyze writes millions of numbers)
+  char buffer[32];
+  const std::to_chars_result written = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 12);
+  out.append(buffer, written.ptr);
 }
 
 std::string Table::ToCsv() const {

@@ -73,6 +73,8 @@ void CheckCount(double count, const std::string& options, const CountLimit& limi
 // %.12g: enough digits for a paper, short enough for a spreadsheet. Refuses non-finite numbers
 // (a bug upstream, never silently printed).
 std::string FormatNumber(double value);
+// The same appended to `out`.
+void AppendNumber(std::string& out, double value);
 
 struct Table {
   std::vector<std::string> columns;

@@ -70,7 +70,9 @@ DeadCentreReport FindDeadCentres(const Mechanism& m, int output, int component, 
   for (int i = 0; i + 1 < n; ++i) {
     const double d0 = sweep.outputs(i, column + 1), d1 = sweep.outputs(i + 1, column + 1);
     if (!(d0 == 0.0 || (d0 > 0) != (d1 > 0))) continue;
-    const int start = std::abs(d0) <= std::abs(d1) ? i : i + 1;
+    int start = std::abs(d0) <= std::abs(d1) ? i : i + 1;
+    // no path starts on a singular pose (a dead centre at a change point): start beside it
+    if (sweep.singular[start]) start = start == i ? i + 1 : i;
     StationaryOptions stationary;
     stationary.max_step = resolution;
     stationary.continuation = options.continuation;

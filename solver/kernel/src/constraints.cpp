@@ -5,11 +5,6 @@
 namespace koppel {
 namespace {
 
-Eigen::Vector2d Rotate(double theta, const Eigen::Vector2d& v) {
-  const double c = std::cos(theta), s = std::sin(theta);
-  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
-}
-
 // v turned by +90 degrees: the derivative of R(theta) v with respect to theta.
 Eigen::Vector2d Perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
@@ -63,6 +58,28 @@ ConstraintSystem::ConstraintSystem(const Mechanism& mechanism)
     }
   }
   num_equations_ = 2 * static_cast<int>(mechanism.joints.size()) + 1;
+  for (const Joint& j : mechanism.joints) {
+    JointRecord r;
+    r.revolute = j.type == JointType::kRevolute;
+    r.link_a = j.link_a;
+    r.link_b = j.link_b;
+    r.ia = coordinate_[j.link_a];
+    r.ib = coordinate_[j.link_b];
+    r.pa = mechanism.links[j.link_a].points[j.point_a].local;
+    r.pb = mechanism.links[j.link_b].points[j.point_b].local;
+    r.axis = j.axis;
+    r.angle = j.angle;
+    records_.push_back(r);
+  }
+  if (!records_.empty()) drive_ = records_[mechanism.drive.joint];
+  // the pattern: the entries the rows emit, recorded once at an arbitrary pose
+  const std::vector<double> q(num_coordinates_, 0.0);
+  std::vector<double> trig(TrigSize(), 0.0), residual(num_equations_);
+  for (size_t l = 0; l < mechanism.links.size(); ++l) trig[2 * l] = 1.0;
+  EvaluateRows(q.data(), 0.0, trig.data(), residual.data(), [&](int row, int col, double) {
+    pattern_rows_.push_back(row);
+    pattern_cols_.push_back(col);
+  });
   transmission_.resize(mechanism.outputs.size());
   for (int k = 0; k < static_cast<int>(mechanism.outputs.size()); ++k) {
     const koppel::Output& o = mechanism.outputs[k];
@@ -76,65 +93,167 @@ ConstraintSystem::ConstraintSystem(const Mechanism& mechanism)
   }
 }
 
-void ConstraintSystem::Jacobian(const double* q, Eigen::Ref<Eigen::MatrixXd> jac) const {
-  jac.setZero();
+template <class Sink>
+void ConstraintSystem::EvaluateRows(const double* q, double input, const double* trig, double* r, Sink&& sink) const {
   const double scale = length_scale_;
-  auto theta = [&](int link) { return LinkAngle(link, q); };
-  // Global offset R(theta) p of a joint point from its link's origin.
-  auto arm = [&](int link, int point) { return Rotate(theta(link), mechanism_.links[link].points[point].local); };
-  auto global = [&](int link, int point) {
-    const int i = coordinate_[link];
-    const Eigen::Vector2d origin = i < 0 ? Eigen::Vector2d::Zero() : Eigen::Vector2d(q[i], q[i + 1]);
-    return Eigen::Vector2d(origin + arm(link, point));
+  // R(theta) p for a point p of `link`, and the origin and angle of a link by its coordinates
+  auto arm = [&](int link, const Eigen::Vector2d& p) {
+    const double c = trig[2 * link], s = trig[2 * link + 1];
+    return Eigen::Vector2d(c * p.x() - s * p.y(), s * p.x() + c * p.y());
   };
-  // Row of w(theta_a) . (p_b - p_a) where w is a direction fixed in link a (normal or axis).
-  auto line_row = [&](int row, const Joint& j, const Eigen::Vector2d& w_local) {
-    const Eigen::Vector2d w = Rotate(theta(j.link_a), w_local);
-    const Eigen::Vector2d d = global(j.link_b, j.point_b) - global(j.link_a, j.point_a);
-    if (const int ia = coordinate_[j.link_a]; ia >= 0) {
-      jac(row, ia) = -w.x();
-      jac(row, ia + 1) = -w.y();
-      jac(row, ia + 2) = Perp(w).dot(d) - w.dot(Perp(arm(j.link_a, j.point_a)));
+  auto origin = [&](int i) { return i < 0 ? Eigen::Vector2d::Zero().eval() : Eigen::Vector2d(q[i], q[i + 1]); };
+  auto theta = [&](int i) { return i < 0 ? 0.0 : q[i + 2]; };
+  // Row w(theta_a) . (p_b - p_a) where w is a direction fixed in link a (normal or axis).
+  auto line_row = [&](int row, const JointRecord& j, const Eigen::Vector2d& w_local) {
+    const Eigen::Vector2d w = arm(j.link_a, w_local), arm_a = arm(j.link_a, j.pa), arm_b = arm(j.link_b, j.pb);
+    const Eigen::Vector2d d = origin(j.ib) + arm_b - origin(j.ia) - arm_a;
+    if (j.ia >= 0) {
+      sink(row, j.ia, -w.x());
+      sink(row, j.ia + 1, -w.y());
+      sink(row, j.ia + 2, Perp(w).dot(d) - w.dot(Perp(arm_a)));
     }
-    if (const int ib = coordinate_[j.link_b]; ib >= 0) {
-      jac(row, ib) = w.x();
-      jac(row, ib + 1) = w.y();
-      jac(row, ib + 2) = w.dot(Perp(arm(j.link_b, j.point_b)));
+    if (j.ib >= 0) {
+      sink(row, j.ib, w.x());
+      sink(row, j.ib + 1, w.y());
+      sink(row, j.ib + 2, w.dot(Perp(arm_b)));
     }
+    return w.dot(d);
   };
-  auto angle_row = [&](int row, const Joint& j) {
-    if (const int ia = coordinate_[j.link_a]; ia >= 0) jac(row, ia + 2) = -scale;
-    if (const int ib = coordinate_[j.link_b]; ib >= 0) jac(row, ib + 2) = scale;
+  auto angle_row = [&](int row, const JointRecord& j) {
+    if (j.ia >= 0) sink(row, j.ia + 2, -scale);
+    if (j.ib >= 0) sink(row, j.ib + 2, scale);
   };
 
-  for (int k = 0; k < static_cast<int>(mechanism_.joints.size()); ++k) {
-    const Joint& j = mechanism_.joints[k];
+  for (int k = 0; k < static_cast<int>(records_.size()); ++k) {
+    const JointRecord& j = records_[k];
     const int row = FirstRowOf(k);
-    if (j.type == JointType::kRevolute) {
-      if (const int ia = coordinate_[j.link_a]; ia >= 0) {
-        const Eigen::Vector2d t = Perp(arm(j.link_a, j.point_a));
-        jac(row, ia) = 1.0;
-        jac(row + 1, ia + 1) = 1.0;
-        jac(row, ia + 2) = t.x();
-        jac(row + 1, ia + 2) = t.y();
+    if (j.revolute) {
+      const Eigen::Vector2d arm_a = arm(j.link_a, j.pa), arm_b = arm(j.link_b, j.pb);
+      const Eigen::Vector2d gap = origin(j.ia) + arm_a - origin(j.ib) - arm_b;
+      r[row] = gap.x();
+      r[row + 1] = gap.y();
+      // d/dtheta of R(theta) p is the arm turned by +90 degrees
+      if (j.ia >= 0) {
+        sink(row, j.ia, 1.0);
+        sink(row + 1, j.ia + 1, 1.0);
+        sink(row, j.ia + 2, -arm_a.y());
+        sink(row + 1, j.ia + 2, arm_a.x());
       }
-      if (const int ib = coordinate_[j.link_b]; ib >= 0) {
-        const Eigen::Vector2d t = Perp(arm(j.link_b, j.point_b));
-        jac(row, ib) = -1.0;
-        jac(row + 1, ib + 1) = -1.0;
-        jac(row, ib + 2) = -t.x();
-        jac(row + 1, ib + 2) = -t.y();
+      if (j.ib >= 0) {
+        sink(row, j.ib, -1.0);
+        sink(row + 1, j.ib + 1, -1.0);
+        sink(row, j.ib + 2, arm_b.y());
+        sink(row + 1, j.ib + 2, -arm_b.x());
       }
     } else {
-      line_row(row, j, Perp(j.axis));
+      r[row] = line_row(row, j, Perp(j.axis));
+      r[row + 1] = WrapAngle(theta(j.ib) - theta(j.ia) - j.angle) * scale;
       angle_row(row + 1, j);
     }
   }
-  const Joint& drive_joint = mechanism_.joints[mechanism_.drive.joint];
-  if (drive_joint.type == JointType::kRevolute) {
-    angle_row(DriveRow(), drive_joint);
+  const Drive& d = mechanism_.drive;
+  if (drive_.revolute) {
+    r[DriveRow()] = WrapAngle(theta(drive_.ib) - theta(drive_.ia) - d.zero - input) * scale;
+    angle_row(DriveRow(), drive_);
   } else {
-    line_row(DriveRow(), drive_joint, drive_joint.axis);
+    r[DriveRow()] = line_row(DriveRow(), drive_, drive_.axis) - d.zero - input;
+  }
+}
+
+void ConstraintSystem::Evaluate(const double* q, double input, double* residual, double* jacobian_values, double* trig) const {
+  for (int l = 0; l < static_cast<int>(coordinate_.size()); ++l) {
+    const int i = coordinate_[l];
+    if (i < 0) {
+      trig[2 * l] = 1.0;
+      trig[2 * l + 1] = 0.0;
+    } else {
+      SinCos(q[i + 2], trig[2 * l + 1], trig[2 * l]);
+    }
+  }
+  double* value = jacobian_values;
+  EvaluateRows(q, input, trig, residual, [&value](int, int, double v) { *value++ = v; });
+}
+
+void ConstraintSystem::Jacobian(const double* q, Eigen::Ref<Eigen::MatrixXd> jac) const {
+  jac.setZero();
+  std::vector<double> trig(TrigSize()), residual(num_equations_), values(pattern_rows_.size());
+  Evaluate(q, 0.0, residual.data(), values.data(), trig.data());
+  for (size_t e = 0; e < values.size(); ++e) jac(pattern_rows_[e], pattern_cols_[e]) = values[e];
+}
+
+void ConstraintSystem::TrigSeriesPartial(int k, const double* q_series, double* trig_series) const {
+  const int n = num_coordinates_, t = TrigSize();
+  for (int l = 0; l < static_cast<int>(coordinate_.size()); ++l) {
+    double* c = trig_series + 2 * l;  // c[t * j] = cos coefficient j, c[t * j + 1] = sin
+    const int i = coordinate_[l];
+    double cos_k = 0.0, sin_k = 0.0;
+    if (i >= 0) {
+      for (int j = 1; j < k; ++j) {
+        const double theta_j = j * q_series[i + 2 + n * j];
+        sin_k += theta_j * c[t * (k - j)];
+        cos_k -= theta_j * c[t * (k - j) + 1];
+      }
+    }
+    c[t * k] = cos_k / k;
+    c[t * k + 1] = sin_k / k;
+  }
+}
+
+void ConstraintSystem::TrigSeriesComplete(int k, const double* q_series, double* trig_series) const {
+  const int n = num_coordinates_, t = TrigSize();
+  for (int l = 0; l < static_cast<int>(coordinate_.size()); ++l) {
+    const int i = coordinate_[l];
+    if (i < 0) continue;
+    double* c = trig_series + 2 * l;
+    const double theta_k = q_series[i + 2 + n * k];
+    c[t * k] -= theta_k * c[1];
+    c[t * k + 1] += theta_k * c[0];
+  }
+}
+
+double ConstraintSystem::LineSeries(int k, const JointRecord& j, const Eigen::Vector2d& w_local, const double* q_series,
+                                    const double* trig_series) const {
+  const int n = num_coordinates_, t = TrigSize();
+  // coefficient m of R(theta) p for link `link`, and of a link's origin (zero at m = k)
+  auto arm = [&](int link, const Eigen::Vector2d& p, int m) {
+    const double c = trig_series[2 * link + t * m], s = trig_series[2 * link + 1 + t * m];
+    return Eigen::Vector2d(c * p.x() - s * p.y(), s * p.x() + c * p.y());
+  };
+  auto origin = [&](int i, int m) {
+    return i < 0 || m == k ? Eigen::Vector2d::Zero().eval() : Eigen::Vector2d(q_series[i + n * m], q_series[i + 1 + n * m]);
+  };
+  double sum = 0.0;
+  for (int m = 0; m <= k; ++m) {
+    const Eigen::Vector2d d = origin(j.ib, k - m) + arm(j.link_b, j.pb, k - m) - origin(j.ia, k - m) - arm(j.link_a, j.pa, k - m);
+    sum += arm(j.link_a, w_local, m).dot(d);
+  }
+  return sum;
+}
+
+void ConstraintSystem::SeriesResidual(int k, const double* q_series, const double* trig_series, double* r) const {
+  const int t = TrigSize();
+  auto arm = [&](int link, const Eigen::Vector2d& p) {
+    const double c = trig_series[2 * link + t * k], s = trig_series[2 * link + 1 + t * k];
+    return Eigen::Vector2d(c * p.x() - s * p.y(), s * p.x() + c * p.y());
+  };
+  for (int jk = 0; jk < static_cast<int>(records_.size()); ++jk) {
+    const JointRecord& j = records_[jk];
+    const int row = FirstRowOf(jk);
+    if (j.revolute) {
+      // the origins' coefficient k is zero: only the arms turn
+      const Eigen::Vector2d gap = arm(j.link_a, j.pa) - arm(j.link_b, j.pb);
+      r[row] = gap.x();
+      r[row + 1] = gap.y();
+    } else {
+      r[row] = LineSeries(k, j, Perp(j.axis), q_series, trig_series);
+      r[row + 1] = 0.0;  // linear in the angles
+    }
+  }
+  // the input's coefficient 1 is 1
+  if (drive_.revolute) {
+    r[DriveRow()] = k == 1 ? -length_scale_ : 0.0;
+  } else {
+    r[DriveRow()] = LineSeries(k, drive_, drive_.axis, q_series, trig_series) - (k == 1 ? 1.0 : 0.0);
   }
 }
 

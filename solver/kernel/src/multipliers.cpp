@@ -6,7 +6,12 @@ namespace koppel {
 
 bool PositionSolver::SolveWithJacobianTranspose(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
   if (!factorized_ || !square_) return false;
-  x = lu_.transpose().solve(rhs);
+  if (use_blocks_) {
+    x = rhs;
+    blocks_.SolveTransposed(x.data());
+  } else {
+    x = lu_.transpose().solve(rhs);
+  }
   return x.allFinite();
 }
 

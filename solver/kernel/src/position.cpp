@@ -13,12 +13,6 @@ Eigen::Vector2d Rotate(double theta, const Eigen::Vector2d& v) {
   return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
 }
 
-double Factorial(int k) {
-  double f = 1.0;
-  for (int i = 2; i <= k; ++i) f *= i;
-  return f;
-}
-
 // Guesses tried for links whose angle the hint leaves open.
 constexpr int kAssemblyAttempts = 12;
 // Levenberg–Marquardt budget for assembly from a rough guess: generous, it runs once.
@@ -51,33 +45,52 @@ PositionSolver::PositionSolver(const Mechanism& mechanism, NewtonOptions options
   q_try_.resize(n);
   q_solved_.setZero(n);
   jacobian_.resize(m, n);
-  if (square_) lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+  use_blocks_ = square_ && !options_.dense && n > 0 && blocks_.Analyse(n, system_.pattern_rows(), system_.pattern_cols());
+  if (use_blocks_) {
+    jacobian_values_.resize(system_.pattern_rows().size());
+    trig_.resize(system_.TrigSize());
+    trig_solved_.resize(system_.TrigSize());
+    trig_series_.resize(system_.TrigSize() * (kMaxOrder + 1));
+  } else if (square_) {
+    lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+  }
   column_scale_.setOnes(n);
   for (int i = 2; i < n; i += 3) column_scale_(i) = 1.0 / system_.length_scale();
   q2_.resize(n);
   q8_.resize(n);
   r2_.resize(m);
   r8_.resize(m);
+  trig2_.resize(system_.TrigSize());
+  trig8_.resize(system_.TrigSize());
 }
 
 void PositionSolver::Evaluate(const Eigen::VectorXd& q, double input) {
+  if (use_blocks_) {
+    system_.Evaluate(q.data(), input, residual_.data(), jacobian_values_.data(), trig_.data());
+    return;
+  }
   system_.Residuals(q.data(), input, residual_.data());
   system_.Jacobian(q.data(), jacobian_);
+}
+
+void PositionSolver::FillDenseJacobian() {
+  if (!use_blocks_) return;
+  jacobian_.setZero();
+  const std::vector<int>& rows = system_.pattern_rows();
+  const std::vector<int>& cols = system_.pattern_cols();
+  for (size_t e = 0; e < jacobian_values_.size(); ++e) jacobian_(rows[e], cols[e]) = jacobian_values_[e];
 }
 
 bool PositionSolver::Factorize() {
   double max_pivot = 0.0, min_pivot = 0.0;
   scaled_determinant_ = 0.0;
-  if (square_ && jacobian_.rows() > 0) {
-    lu_.compute(jacobian_);
-    const auto& lu = lu_.matrixLU();
-    int sign = static_cast<int>(lu_.permutationP().determinant());
-    // Partial pivoting permutes rows only, so column j of U still belongs to coordinate j and
-    // the pivots of J S are U_jj S_jj: the scaled ratio and determinant come for free.
+  // The gauge, det(J S) and its sign from an LU of J whose pivot j belongs to coordinate j
+  // (`sign`: that of the LU's permutations): the pivots of J S are pivot_j S_jj.
+  auto take_pivots = [&](int sign, auto pivot_of) {
     double determinant = sign;
-    min_pivot = std::abs(lu(0, 0) * column_scale_(0));
-    for (int i = 0; i < lu.rows(); ++i) {
-      const double d = lu(i, i) * column_scale_(i);
+    min_pivot = std::abs(pivot_of(0) * column_scale_(0));
+    for (int j = 0; j < NumCoordinates(); ++j) {
+      const double d = pivot_of(j) * column_scale_(j);
       max_pivot = std::max(max_pivot, std::abs(d));
       min_pivot = std::min(min_pivot, std::abs(d));
       determinant *= d;
@@ -86,6 +99,16 @@ bool PositionSolver::Factorize() {
     pivot_ratio_ = max_pivot > 0 ? min_pivot / max_pivot : 0.0;
     scaled_determinant_ = determinant;
     jacobian_sign_ = pivot_ratio_ > kSingularPivotRatio ? sign : 0;
+  };
+  if (use_blocks_) {
+    // the blocks' LUs are one LU of the permuted J (pivoting within the blocks)
+    blocks_.Factorize(jacobian_values_.data());
+    take_pivots(blocks_.DeterminantSign(), [&](int j) { return blocks_.Pivot(j); });
+  } else if (square_ && jacobian_.rows() > 0) {
+    lu_.compute(jacobian_);
+    // Partial pivoting permutes rows only, so column j of U still belongs to coordinate j.
+    const auto& lu = lu_.matrixLU();
+    take_pivots(static_cast<int>(lu_.permutationP().determinant()), [&](int j) { return lu(j, j); });
   } else {
     // Redundant constraints (more rows than coordinates): least squares through QR, no sign.
     // Column pivoting ranks the columns by size, so scale them first to compare like with like.
@@ -104,7 +127,10 @@ bool PositionSolver::Factorize() {
 }
 
 void PositionSolver::SolveFactorized(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
-  if (square_) {
+  if (use_blocks_) {
+    x = rhs;
+    blocks_.Solve(x.data());
+  } else if (square_) {
     x.noalias() = lu_.solve(rhs);
   } else {
     x.noalias() = qr_.solve(rhs);   // of J S: undo the column scaling
@@ -147,6 +173,7 @@ SolveReport PositionSolver::Correct(double input, Eigen::VectorXd& q) {
       q_solved_ = q_try_;
       input_solved_ = input;
       factorized_ = true;
+      if (use_blocks_) trig_solved_ = trig_;
       return Report(SolveStatus::kConverged, it, "");
     }
     if (!regular) return Report(SolveStatus::kSingular, it, "the Jacobian is singular before convergence");
@@ -284,7 +311,10 @@ SolveReport PositionSolver::AssembleFromGuess(double input, Eigen::VectorXd& x) 
   // Levenberg–Marquardt in dimensionless variables: residuals over L and the scaled Jacobian
   // J S (theta columns over L), so that a mechanism drawn in micrometres and one in kilometres
   // take the same steps. A step dz of the scaled problem moves the coordinates by L S dz.
-  auto scaled_jacobian = [&] { return Eigen::MatrixXd(jacobian_ * column_scale_.asDiagonal()); };
+  auto scaled_jacobian = [&] {
+    FillDenseJacobian();
+    return Eigen::MatrixXd(jacobian_ * column_scale_.asDiagonal());
+  };
   Evaluate(x, input);
   double cost = residual_.squaredNorm();
   Eigen::MatrixXd j_hat = scaled_jacobian();
@@ -355,10 +385,28 @@ bool PositionSolver::SeriesImpl(int order, Eigen::MatrixXd& coefficients) {
   return true;
 }
 
+void PositionSolver::BlockSeries(int order, Eigen::MatrixXd& coefficients) {
+  const int n = NumCoordinates();
+  coefficients.col(0) = q_solved_;
+  std::copy(trig_solved_.begin(), trig_solved_.end(), trig_series_.begin());
+  for (int k = 1; k <= order; ++k) {
+    system_.TrigSeriesPartial(k, coefficients.data(), trig_series_.data());
+    double* q_k = coefficients.data() + static_cast<std::ptrdiff_t>(n) * k;
+    system_.SeriesResidual(k, coefficients.data(), trig_series_.data(), rhs_.data());
+    for (int i = 0; i < n; ++i) q_k[i] = -rhs_(i);
+    blocks_.Solve(q_k);
+    system_.TrigSeriesComplete(k, coefficients.data(), trig_series_.data());
+  }
+}
+
 bool PositionSolver::Series(int order, Eigen::MatrixXd& coefficients) {
   if (!factorized_ || order < 0 || order > kMaxOrder) return false;
   if (coefficients.rows() != NumCoordinates() || coefficients.cols() != order + 1)
     coefficients.resize(NumCoordinates(), order + 1);
+  if (use_blocks_) {
+    BlockSeries(order, coefficients);
+    return true;
+  }
   return order <= 2 ? SeriesImpl<2>(order, coefficients) : SeriesImpl<kMaxOrder>(order, coefficients);
 }
 
@@ -377,15 +425,30 @@ int PositionSolver::OutputWidth(int order) const {
 template <int N>
 void PositionSolver::OutputDerivativesImpl(const Eigen::MatrixXd& coefficients, int order, double* out) const {
   std::vector<Taylor<N>>& qs = CoordinateSeries<N>();
+  std::vector<Taylor<N>>& trig = TrigSeries<N>();
   for (int i = 0; i < NumCoordinates(); ++i) {
     qs[i] = Taylor<N>();
     for (int j = 0; j <= order; ++j) qs[i].c[j] = coefficients(i, j);
   }
+  // cos and sin of each link angle once, not once per point an output looks at
+  for (int l = 0; l < static_cast<int>(mechanism_.links.size()); ++l) {
+    const int i = system_.CoordinateOf(l);
+    if (i < 0) {
+      trig[2 * l] = Taylor<N>(1.0);
+      trig[2 * l + 1] = Taylor<N>(0.0);
+    } else {
+      SinCos(qs[i + 2], trig[2 * l + 1], trig[2 * l]);
+    }
+  }
   int column = 0;
   for (int o = 0; o < static_cast<int>(mechanism_.outputs.size()); ++o) {
     for (int comp = 0; comp < mechanism_.outputs[o].Components(); ++comp) {
-      const Taylor<N> y = system_.Output(o, comp, qs.data());
-      for (int k = 0; k <= order; ++k) out[column++] = y.c[k] * Factorial(k);
+      const Taylor<N> y = system_.Output(o, comp, qs.data(), trig.data());
+      double factorial = 1.0;
+      for (int k = 0; k <= order; ++k) {
+        if (k > 1) factorial *= k;
+        out[column++] = y.c[k] * factorial;
+      }
     }
   }
 }

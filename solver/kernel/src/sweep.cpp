@@ -83,7 +83,7 @@ SweepResult Sweep(const Mechanism& m, const SweepOptions& options) {
     result.message = why;
     return result;
   }
-  PositionSolver solver(m);
+  PositionSolver solver(m, options.newton);
   const int n = solver.NumCoordinates();
   if (solver.system().NumEquations() < n) {
     result.status = SweepStatus::kNotAssemblable;

@@ -111,7 +111,11 @@ StartOutcome RunStart(const MechanismBuilder& builder, const TargetModel& model,
   ceres::Solver::Options solver_options;
   solver_options.max_num_iterations = o.max_iterations;
   solver_options.linear_solver_type = ceres::DENSE_QR;
-  solver_options.function_tolerance = 1e-15;
+  // A relative change of the cost below 1e-10 is the roundoff of the residuals' sensitivities
+  // (central differences, relative error about 1e-10): at that floor the fit is done. Smaller
+  // values leave the end to chance (an exact zero gradient, or rejected steps until the trust
+  // region collapses), and the iterations then depend on the last bits of every pose.
+  solver_options.function_tolerance = 1e-10;
   solver_options.gradient_tolerance = 1e-15;
   solver_options.parameter_tolerance = 1e-14;
   solver_options.num_threads = 1;  // one residual block: the starts are the parallel work

@@ -95,4 +95,87 @@ TEST_CASE("rotation residuals are wrap-safe: a full turn is no residual", "[cons
   CHECK(std::abs(r1(system.DriveRow())) < 1e-12);
 }
 
+
+TEST_CASE("one-pass evaluation: the residuals and Jacobian of Residuals and Jacobian, the pattern holding every entry", "[constraints]") {
+  const std::vector<Mechanism> mechanisms = {test::SliderCrank(1.0, 2.6, 0.8), test::ProportionalLinkage(1.0, 0.5, 1.83),
+                                             test::WattSixBar(), SlideDriven()};
+  std::mt19937 rng(20261123);
+  std::uniform_real_distribution<double> coordinate(-3.0, 3.0), angle(-4.0, 4.0);
+  for (const Mechanism& m : mechanisms) {
+    INFO(m.name);
+    const ConstraintSystem system(m);
+    const int n = system.NumCoordinates(), rows = system.NumEquations();
+    std::vector<double> residual(rows), values(system.pattern_rows().size()), trig(system.TrigSize()), reference(rows);
+    Eigen::VectorXd q(n);
+    for (int trial = 0; trial < 25; ++trial) {
+      for (int i = 0; i < n; ++i) q(i) = (i % 3 == 2) ? angle(rng) : coordinate(rng);
+      const double input = angle(rng);
+      system.Evaluate(q.data(), input, residual.data(), values.data(), trig.data());
+      system.Residuals(q.data(), input, reference.data());
+      for (int r = 0; r < rows; ++r) CHECK_THAT(residual[r], Catch::Matchers::WithinAbs(reference[r], 1e-14));
+      // the Jacobian from finite differences (the first test case) is the dense one; every entry
+      // outside the pattern is zero there
+      Eigen::MatrixXd dense(rows, n), from_pattern = Eigen::MatrixXd::Zero(rows, n);
+      system.Jacobian(q.data(), dense);
+      for (size_t e = 0; e < values.size(); ++e) from_pattern(system.pattern_rows()[e], system.pattern_cols()[e]) = values[e];
+      CHECK((dense - from_pattern).lpNorm<Eigen::Infinity>() == 0.0);
+      for (int l = 0; l < static_cast<int>(m.links.size()); ++l) {
+        const int i = system.CoordinateOf(l);
+        CHECK(trig[2 * l] == (i < 0 ? 1.0 : std::cos(q(i + 2))));
+        CHECK(trig[2 * l + 1] == (i < 0 ? 0.0 : std::sin(q(i + 2))));
+      }
+    }
+  }
+}
+
+TEST_CASE("series residuals order by order: the coefficients of Residuals on Taylor<8>", "[constraints]") {
+  // q(t) a random polynomial of degree 8; for each k the coefficient k of F(q(t), input + t) with
+  // q's coefficient k (and above) zero, from the Taylor<8> residuals (the reference) and from
+  // SeriesResidual with the trig series built by the recurrences
+  const std::vector<Mechanism> mechanisms = {test::SliderCrank(1.0, 2.6, 0.8), test::ProportionalLinkage(1.0, 0.5, 1.83),
+                                             test::WattSixBar(), SlideDriven()};
+  std::mt19937 rng(20261124);
+  std::uniform_real_distribution<double> coordinate(-2.0, 2.0);
+  constexpr int kOrder = 8;
+  for (const Mechanism& m : mechanisms) {
+    INFO(m.name);
+    const ConstraintSystem system(m);
+    const int n = system.NumCoordinates(), rows = system.NumEquations(), t = system.TrigSize();
+    Eigen::MatrixXd qc(n, kOrder + 1);
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j <= kOrder; ++j) qc(i, j) = coordinate(rng) / (1 + j);
+    }
+    const double input = coordinate(rng);
+    std::vector<double> values(system.pattern_rows().size()), residual(rows), trig_series(t * (kOrder + 1));
+    system.Evaluate(qc.col(0).eval().data(), input, residual.data(), values.data(), trig_series.data());
+    Taylor<kOrder> series_input(input);
+    series_input.c[1] = 1.0;
+    std::vector<Taylor<kOrder>> qs(n), rs(rows);
+    for (int k = 1; k <= kOrder; ++k) {
+      INFO("order " << k);
+      for (int i = 0; i < n; ++i) {
+        qs[i] = Taylor<kOrder>();
+        for (int j = 0; j < k; ++j) qs[i].c[j] = qc(i, j);
+      }
+      system.Residuals(qs.data(), series_input, rs.data());
+      system.TrigSeriesPartial(k, qc.data(), trig_series.data());
+      system.SeriesResidual(k, qc.data(), trig_series.data(), residual.data());
+      for (int r = 0; r < rows; ++r) CHECK_THAT(residual[r], Catch::Matchers::WithinAbs(rs[r].c[k], 1e-12));
+      system.TrigSeriesComplete(k, qc.data(), trig_series.data());
+    }
+    // and the trig series are those of cos and sin of the angles' full series
+    for (int l = 0; l < static_cast<int>(m.links.size()); ++l) {
+      const int i = system.CoordinateOf(l);
+      if (i < 0) continue;
+      Taylor<kOrder> theta, s, c;
+      for (int j = 0; j <= kOrder; ++j) theta.c[j] = qc(i + 2, j);
+      SinCos(theta, s, c);
+      for (int j = 0; j <= kOrder; ++j) {
+        CHECK_THAT(trig_series[2 * l + t * j], Catch::Matchers::WithinAbs(c.c[j], 1e-12));
+        CHECK_THAT(trig_series[2 * l + 1 + t * j], Catch::Matchers::WithinAbs(s.c[j], 1e-12));
+      }
+    }
+  }
+}
+
 }  // namespace koppel

@@ -4,6 +4,7 @@
 #include "koppel/solver/sweep.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/solver/singular.hpp"
 #include "solver/kernel/tolerances.hpp"
 #include "support/closed_forms.hpp"
 #include "support/mechanisms.hpp"
@@ -11,6 +12,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
+#include <random>
 
 namespace koppel {
 namespace {
@@ -183,6 +186,99 @@ TEST_CASE("two independent loops: velocities agree with differences of solved po
     CHECK(local.outputs(1, 1) == Approx(fd1).margin(1e-7));
     CHECK(local.outputs(1, 2) == Approx(fd2).margin(1e-3));
   }
+}
+
+namespace {
+
+// The block path (default) against the dense reference path: the same rows, flags, singular
+// points and gaps; poses, outputs and transfer functions within kSamePath, except the k-th
+// orders near singular positions, which either path knows only to eps / rcond^k.
+double CheckSamePaths(const Mechanism& m, SweepOptions o) {
+  SweepOptions dense = o;
+  dense.newton.dense = true;
+  const SweepResult fast = Sweep(m, o), reference = Sweep(m, dense);
+  REQUIRE(fast.status == reference.status);
+  REQUIRE(fast.inputs == reference.inputs);
+  REQUIRE(fast.singular == reference.singular);
+  REQUIRE(fast.valid_order == reference.valid_order);
+  REQUIRE(fast.singular_points.size() == reference.singular_points.size());
+  for (size_t i = 0; i < fast.singular_points.size(); ++i) {
+    CHECK(fast.singular_points[i].kind == reference.singular_points[i].kind);
+    CHECK(fast.singular_points[i].joints == reference.singular_points[i].joints);
+    // located to about 1e-10 (continuation.hpp) by either path
+    CHECK_THAT(fast.singular_points[i].input, Catch::Matchers::WithinAbs(reference.singular_points[i].input, 1e-9));
+  }
+  REQUIRE(fast.gaps.size() == reference.gaps.size());
+  double worst = 0.0;
+  const double scale = LengthScale(m);
+  for (Eigen::Index i = 0; i < fast.poses.size(); ++i) {
+    worst = std::max(worst, std::abs(fast.poses.data()[i] - reference.poses.data()[i]) / scale);
+  }
+  const ConstraintSystem system(m);
+  for (Eigen::Index r = 0; r < fast.outputs.rows(); ++r) {
+    double rcond = -1.0;  // computed where needed
+    for (Eigen::Index c = 0; c < fast.outputs.cols(); ++c) {
+      const double a = fast.outputs(r, c), b = reference.outputs(r, c);
+      const double deviation = std::abs(a - b) / (1.0 + std::abs(b));
+      if (deviation <= test::kSamePath) {
+        worst = std::max(worst, deviation);
+        continue;
+      }
+      // Near a singular position the k-th order carries roundoff of order eps / rcond^k by either
+      // path (singular.hpp): there they can only agree that well (100: the roundoff of the some
+      // tens of operations behind each entry).
+      if (rcond < 0.0) rcond = ReciprocalCondition(system, reference.poses.row(r).transpose());
+      const int k = static_cast<int>(c % (o.order + 1));
+      INFO("row " << r << ", column " << c << " (order " << k << "): rcond " << rcond);
+      CHECK(deviation <= 100.0 * std::numeric_limits<double>::epsilon() / std::pow(rcond, k));
+    }
+  }
+  return worst;  // of the entries within kSamePath, for the report
+}
+
+}  // namespace
+
+TEST_CASE("the block path gives the dense path's sweeps: seeds 000, 001, 003, two-loop and folding six-bars", "[sweep][blocks]") {
+  SweepOptions o = FullTurn(4);
+  double worst = 0.0;
+  for (double e : {0.0, 0.8}) worst = std::max(worst, CheckSamePaths(test::SliderCrank(1.0, 2.6, e), o));
+  worst = std::max(worst, CheckSamePaths(test::ProportionalLinkage(1.0, 0.5, 1.83), o));
+  worst = std::max(worst, CheckSamePaths(test::FourBar(1.0, kL23, kL23, 4.0, 25.0 / 3.0, kKappa, +1), o));
+  worst = std::max(worst, CheckSamePaths(test::WattSixBar(), o));
+  // a second loop folding flat mid-sweep (the fold direction that of B0 -> C at phi = 110 deg, as
+  // continuation_test): branch points crossed by both paths alike
+  const double psi110 = test::FourBarRocker(1, 3.5, 3, 4, DegToRad(110), +1)->psi;
+  worst = std::max(worst, CheckSamePaths(test::FoldingSixBar(1.5, 0.7, 2.0, psi110 + 0.7), o));
+  INFO("worst deviation " << worst);
+  SUCCEED();
+}
+
+TEST_CASE("the block path gives the dense path's sweeps: random four-bars and slider-cranks", "[sweep][blocks]") {
+  std::mt19937 random(20261123);
+  std::uniform_real_distribution<double> length(0.5, 4.0), offset(-1.0, 1.0), side(-1.0, 1.0);
+  SweepOptions o = FullTurn(2);
+  o.step = DegToRad(3);
+  double worst = 0.0;
+  for (int trial = 0; trial < 12; ++trial) {
+    // crank-rockers, double rockers (limit points) and non-Grashof linkages alike
+    const double a = length(random), b = length(random), c = length(random), d = length(random);
+    const Eigen::Vector2d pa(a, 0), b0(d, 0);
+    const double dist = (b0 - pa).norm();
+    if (dist > b + c || dist < std::abs(b - c)) continue;  // no pose at input 0
+    const double along = (b * b - c * c + dist * dist) / (2 * dist);
+    const Eigen::Vector2d u = (b0 - pa) / dist, n(-u.y(), u.x());
+    const Eigen::Vector2d hint = pa + along * u + (side(random) > 0 ? 1.0 : -1.0) * std::sqrt(b * b - along * along) * n;
+    INFO("four-bar " << a << ", " << b << ", " << c << ", " << d);
+    worst = std::max(worst, CheckSamePaths(test::PlainFourBar(a, b, c, d, 0.0, hint), o));
+  }
+  for (int trial = 0; trial < 12; ++trial) {
+    const double l1 = length(random), l2 = length(random), e = offset(random);
+    if (l2 <= std::abs(e + l1) + 0.05) continue;  // no pose at input 0 (crank pointing away from the slide line)
+    INFO("slider-crank " << l1 << ", " << l2 << ", " << e);
+    worst = std::max(worst, CheckSamePaths(test::SliderCrank(l1, l2, e), o));
+  }
+  INFO("worst deviation " << worst);
+  SUCCEED();
 }
 
 TEST_CASE("sample counts", "[sweep]") {

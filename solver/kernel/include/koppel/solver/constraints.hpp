@@ -45,7 +45,8 @@ Expected<TransmissionGeometry> ResolveTransmission(const Mechanism& m, const Out
 class ConstraintSystem {
  public:
   // Precondition: CheckConsistency(mechanism) is empty. Keeps a reference: the mechanism must
-  // outlive the system.
+  // outlive the system and not change while it is used (the joints' geometry and the Jacobian's
+  // pattern are taken at construction; a changed mechanism needs a new system).
   explicit ConstraintSystem(const Mechanism& mechanism);
 
   const Mechanism& mechanism() const { return mechanism_; }
@@ -65,17 +66,65 @@ class ConstraintSystem {
   void Jacobian(const double* q, Eigen::Ref<Eigen::MatrixXd> jacobian) const;
   double InputColumn() const { return mechanism_.InputIsAngle() ? -length_scale_ : -1.0; }
 
+  // The entries of dF/dq that can be non-zero, fixed by the joints (the same at every pose):
+  // entry e sits at (pattern_rows()[e], pattern_cols()[e]), no two at one place.
+  const std::vector<int>& pattern_rows() const { return pattern_rows_; }
+  const std::vector<int>& pattern_cols() const { return pattern_cols_; }
+  int TrigSize() const { return 2 * static_cast<int>(mechanism_.links.size()); }
+
+  // The Newton loop's evaluation: F(q, input) into `residual` and dF/dq's entries in pattern
+  // order into `jacobian_values`, in one pass with cos and sin of each link angle computed once
+  // (into `trig`, TrigSize() numbers: cos, sin per link; 1, 0 for the frame). The same equations
+  // as Residuals and Jacobian (constraints_test checks both).
+  void Evaluate(const double* q, double input, double* residual, double* jacobian_values, double* trig) const;
+
+  // The Taylor coefficients of q(input) order by order, each from J q_k = -[F]_k, without
+  // evaluating the residuals in series arithmetic: `q_series` holds q's coefficients column by
+  // column (NumCoordinates() rows), `trig_series` those of each link's cos and sin (TrigSize()
+  // rows; column 0 is `trig` of Evaluate at the pose). For k = 1, 2, ...:
+  //   TrigSeriesPartial(k): coefficient k of cos and sin with theta's coefficient k taken as zero
+  //     (the recurrences s' = c theta', c' = -s theta');
+  //   SeriesResidual(k): coefficient k of F(q(t), input + t) with q's coefficient k taken as zero,
+  //     from q's columns 0..k-1 and the trig columns 0..k;
+  //   (the caller solves for q's column k), TrigSeriesComplete(k): adds theta_k's part.
+  // The same numbers as Residuals on Taylor<N> (constraints_test), with no heap allocation.
+  void TrigSeriesPartial(int k, const double* q_series, double* trig_series) const;
+  void SeriesResidual(int k, const double* q_series, const double* trig_series, double* residual) const;
+  void TrigSeriesComplete(int k, const double* q_series, double* trig_series) const;
+
   // Value of one output component (0 = x, 1 = y for points), in radians / lengths, offset applied.
-  template <class T> T Output(int output, int component, const T* q) const;
+  // `trig`, when given, holds cos and sin of every link angle at q (TrigSize() numbers, as
+  // Evaluate lays them out), computed once for many outputs.
+  template <class T> T Output(int output, int component, const T* q, const T* trig = nullptr) const;
 
   // Global position of a link point.
-  template <class T> void GlobalPoint(const PointRef& ref, const T* q, T* xy) const;
+  template <class T> void GlobalPoint(const PointRef& ref, const T* q, T* xy, const T* trig = nullptr) const;
   template <class T> T LinkAngle(int link, const T* q) const;
 
  private:
-  template <class T> T JointValue(int joint, const T* q) const;
+  template <class T> T JointValue(int joint, const T* q, const T* trig = nullptr) const;
+  template <class T> void LinkSinCos(int link, const T* q, const T* trig, T& s, T& c) const;
+
+  // A joint as the hot loops read it: coordinate indices (-1 for the frame) and local geometry.
+  struct JointRecord {
+    bool revolute = true;
+    int link_a = 0, link_b = 0;
+    int ia = -1, ib = -1;
+    Eigen::Vector2d pa = Eigen::Vector2d::Zero(), pb = Eigen::Vector2d::Zero();
+    Eigen::Vector2d axis = Eigen::Vector2d::UnitX();  // P: the slide direction on link a
+    double angle = 0.0;
+  };
+  // Rows of joint k (and of the drive) with their Jacobian entries, emitted in one fixed order.
+  template <class Sink> void EvaluateRows(const double* q, double input, const double* trig, double* residual, Sink&& sink) const;
+  // The series coefficient k of w(theta_a) . (p_b - p_a), w fixed in link a (a P joint's normal
+  // or a P drive's axis), with q's coefficient k taken as zero.
+  double LineSeries(int k, const JointRecord& j, const Eigen::Vector2d& w_local, const double* q_series,
+                    const double* trig_series) const;
 
   const Mechanism& mechanism_;
+  std::vector<JointRecord> records_;
+  JointRecord drive_;
+  std::vector<int> pattern_rows_, pattern_cols_;
   std::vector<int> coordinate_;
   std::vector<TransmissionGeometry> transmission_;  // per output; default-constructed if unused
   std::vector<std::string> problems_;
@@ -93,7 +142,17 @@ T ConstraintSystem::LinkAngle(int link, const T* q) const {
 }
 
 template <class T>
-void ConstraintSystem::GlobalPoint(const PointRef& ref, const T* q, T* xy) const {
+void ConstraintSystem::LinkSinCos(int link, const T* q, const T* trig, T& s, T& c) const {
+  if (trig) {
+    c = trig[2 * link];
+    s = trig[2 * link + 1];
+  } else {
+    SinCos(LinkAngle(link, q), s, c);
+  }
+}
+
+template <class T>
+void ConstraintSystem::GlobalPoint(const PointRef& ref, const T* q, T* xy, const T* trig) const {
   const Eigen::Vector2d& p = mechanism_.links[ref.link].points[ref.point].local;
   const int i = coordinate_[ref.link];
   if (i < 0) {
@@ -102,19 +161,19 @@ void ConstraintSystem::GlobalPoint(const PointRef& ref, const T* q, T* xy) const
     return;
   }
   T s, c;
-  SinCos(q[i + 2], s, c);
+  LinkSinCos(ref.link, q, trig, s, c);
   xy[0] = q[i] + c * p.x() - s * p.y();
   xy[1] = q[i + 1] + s * p.x() + c * p.y();
 }
 
 template <class T>
-T ConstraintSystem::JointValue(int joint, const T* q) const {
+T ConstraintSystem::JointValue(int joint, const T* q, const T* trig) const {
   const Joint& j = mechanism_.joints[joint];
   if (j.type == JointType::kRevolute) return LinkAngle(j.link_b, q) - LinkAngle(j.link_a, q);
   T pa[2], pb[2], s, c;
-  GlobalPoint({j.link_a, j.point_a}, q, pa);
-  GlobalPoint({j.link_b, j.point_b}, q, pb);
-  SinCos(LinkAngle(j.link_a, q), s, c);
+  GlobalPoint({j.link_a, j.point_a}, q, pa, trig);
+  GlobalPoint({j.link_b, j.point_b}, q, pb, trig);
+  LinkSinCos(j.link_a, q, trig, s, c);
   const T ux = c * j.axis.x() - s * j.axis.y();
   const T uy = s * j.axis.x() + c * j.axis.y();
   return ux * (pb[0] - pa[0]) + uy * (pb[1] - pa[1]);
@@ -153,24 +212,24 @@ template <class T> T Abs(const T& x) { return Value(x) < 0.0 ? -x : x; }
 }  // namespace detail
 
 template <class T>
-T ConstraintSystem::Output(int output, int component, const T* q) const {
+T ConstraintSystem::Output(int output, int component, const T* q, const T* trig) const {
   const koppel::Output& o = mechanism_.outputs[output];
   switch (o.kind) {
     case OutputKind::kJoint:
-      return mechanism_.joints[o.joint].type == JointType::kRevolute ? JointValue(o.joint, q) - o.offset
-                                                                      : JointValue(o.joint, q);
+      return mechanism_.joints[o.joint].type == JointType::kRevolute ? JointValue(o.joint, q, trig) - o.offset
+                                                                      : JointValue(o.joint, q, trig);
     case OutputKind::kLinkAngle:
       return LinkAngle(o.link, q) - o.offset;
     case OutputKind::kPoint: {
       T xy[2];
-      GlobalPoint(o.p, q, xy);
+      GlobalPoint(o.p, q, xy, trig);
       return xy[component];
     }
     case OutputKind::kDistance:
     case OutputKind::kDirection: {
       T p[2], r[2];
-      GlobalPoint(o.p, q, p);
-      GlobalPoint(o.q, q, r);
+      GlobalPoint(o.p, q, p, trig);
+      GlobalPoint(o.q, q, r, trig);
       const T dx = r[0] - p[0], dy = r[1] - p[1];
       using std::atan2;
       using std::sqrt;
@@ -180,19 +239,19 @@ T ConstraintSystem::Output(int output, int component, const T* q) const {
     case OutputKind::kTransmissionAngle: {
       const TransmissionGeometry& g = transmission_[output];
       T a[2], b[2];
-      GlobalPoint(g.coupler_from, q, a);
-      GlobalPoint(g.coupler_to, q, b);
+      GlobalPoint(g.coupler_from, q, a, trig);
+      GlobalPoint(g.coupler_to, q, b, trig);
       const T cx = b[0] - a[0], cy = b[1] - a[1];
       T vx, vy;  // direction of motion of the output joint point
       if (g.slide_joint >= 0) {
         const Joint& j = mechanism_.joints[g.slide_joint];
         T s, c;
-        SinCos(LinkAngle(j.link_a, q), s, c);
+        LinkSinCos(j.link_a, q, trig, s, c);
         vx = c * j.axis.x() - s * j.axis.y();
         vy = s * j.axis.x() + c * j.axis.y();
       } else {
         T o_xy[2];
-        GlobalPoint(g.pivot, q, o_xy);
+        GlobalPoint(g.pivot, q, o_xy, trig);
         vx = -(b[1] - o_xy[1]);
         vy = b[0] - o_xy[0];
       }

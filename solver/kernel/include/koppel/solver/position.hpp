@@ -6,6 +6,7 @@
 #pragma once
 
 #include "koppel/core/mechanism.hpp"
+#include "koppel/solver/block_lu.hpp"
 #include "koppel/solver/constraints.hpp"
 
 #include <Eigen/Core>
@@ -40,6 +41,12 @@ struct NewtonOptions {
   // Converged when |F|_inf <= tolerance * L (L = length scale): a few hundred ulps of the
   // coordinates, far below the 1e-9 the closed-form checks ask for.
   double tolerance = 1e-13;
+  // The linear algebra of each step: by default the Jacobian's block triangular form with a
+  // dense LU per block (block_lu.hpp) and the Taylor coefficients order by order without series
+  // arithmetic (constraints.hpp); `dense` takes one dense LU of the whole Jacobian and evaluates
+  // the residuals on Taylor<N> instead: the straightforward reference the default path is tested
+  // against. Redundant (non-square) and structurally singular systems always take the dense path.
+  bool dense = false;
 };
 
 // Largest order of transfer function the solver computes (Taylor coefficients of q).
@@ -93,8 +100,9 @@ class PositionSolver {
   // det(J_hat) at the last factorised pose (square systems; 0 otherwise): a smooth, signed test
   // function whose simple roots along a branch are its singular positions.
   double ScaledDeterminant() const { return scaled_determinant_; }
-  // The Jacobian at the last pose Correct/Assemble evaluated.
-  const Eigen::MatrixXd& jacobian() const { return jacobian_; }
+  // True when the steps factorise the Jacobian block by block (see NewtonOptions::dense).
+  bool UsesBlocks() const { return use_blocks_; }
+  const BlockLU& blocks() const { return blocks_; }
 
   // x = J^-1 rhs with the factorisation of the last converged pose (implicit-function theorem:
   // dq/dp = -J^-1 dF/dp). Precondition: the last Correct/Assemble succeeded.
@@ -108,22 +116,29 @@ class PositionSolver {
   int ConstraintRank(const Eigen::VectorXd& q) const;
 
  private:
-  void Evaluate(const Eigen::VectorXd& q, double input);  // fills residual_ and jacobian_
+  void Evaluate(const Eigen::VectorXd& q, double input);  // fills residual_ and the Jacobian
+  void FillDenseJacobian();                               // jacobian_ from the block path's values
   bool Factorize();                                       // factorises jacobian_
   void SolveFactorized(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
   // The first guess from the frame, the drive and the hint. Links whose angle neither determines
   // get angle 0 on attempt 0 and a spread of angles on later attempts (see AssembleAt).
   Eigen::VectorXd InitialGuess(int attempt) const;
   SolveReport Report(SolveStatus status, int iterations, std::string message) const;
-  template <int N> bool SeriesImpl(int order, Eigen::MatrixXd& coefficients);
+  template <int N> bool SeriesImpl(int order, Eigen::MatrixXd& coefficients);  // the dense path
+  void BlockSeries(int order, Eigen::MatrixXd& coefficients);
 
   const Mechanism& mechanism_;
   ConstraintSystem system_;
   NewtonOptions options_;
   SolveReport AssembleFromGuess(double input, Eigen::VectorXd& x);  // x: the guess, then the result
   bool square_ = true;
+  bool use_blocks_ = false;
   Eigen::VectorXd residual_, step_, rhs_;
-  Eigen::MatrixXd jacobian_;
+  Eigen::MatrixXd jacobian_;  // the dense path's Jacobian (and assembly's)
+  // the block path: the Jacobian's entries in pattern order, cos and sin of the link angles at
+  // the last evaluation and at the last converged pose, their Taylor coefficients
+  BlockLU blocks_;
+  std::vector<double> jacobian_values_, trig_, trig_solved_, trig_series_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr_;
   Eigen::VectorXd q_solved_;
@@ -134,14 +149,17 @@ class PositionSolver {
   double scaled_determinant_ = 0.0;
   Eigen::VectorXd column_scale_;  // 1 for x, y columns; 1/L for theta columns
   // Taylor workspaces, allocated once.
-  mutable std::vector<Taylor<2>> q2_, r2_;
-  mutable std::vector<Taylor<kMaxOrder>> q8_, r8_;
+  mutable std::vector<Taylor<2>> q2_, r2_, trig2_;
+  mutable std::vector<Taylor<kMaxOrder>> q8_, r8_, trig8_;
   Eigen::VectorXd q_try_;
   template <int N> std::vector<Taylor<N>>& CoordinateSeries() const {
     if constexpr (N == 2) return q2_; else return q8_;
   }
   template <int N> std::vector<Taylor<N>>& ResidualSeries() const {
     if constexpr (N == 2) return r2_; else return r8_;
+  }
+  template <int N> std::vector<Taylor<N>>& TrigSeries() const {
+    if constexpr (N == 2) return trig2_; else return trig8_;
   }
   template <int N> void OutputDerivativesImpl(const Eigen::MatrixXd& q_coefficients, int order, double* out) const;
 };

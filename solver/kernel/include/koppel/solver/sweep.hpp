@@ -31,6 +31,7 @@ struct SweepOptions {
   double step = kPi / 180.0;  // != 0; its sign is ignored (from -> to)
   int order = 2;  // highest transfer function order in the table (0..kMaxOrder)
   ContinuationOptions continuation;
+  NewtonOptions newton;  // the corrector; newton.dense: the reference path (see NewtonOptions)
 
   // Empty *why and true when usable: finite from/to/step, step != 0, order in 0..kMaxOrder, at
   // most kMaxSweepSamples samples, valid continuation options.

@@ -55,11 +55,12 @@ Taylor<N> operator/(const Taylor<N>& a, const Taylor<N>& b) {
   return r;
 }
 
+inline void SinCos(double u, double& s, double& c) { s = std::sin(u); c = std::cos(u); }  // one sincos call
+
 // sin and cos together, from s' = c u', c' = -s u' (coefficient recurrences).
 template <int N>
 void SinCos(const Taylor<N>& u, Taylor<N>& s, Taylor<N>& c) {
-  s.c[0] = std::sin(u.c[0]);
-  c.c[0] = std::cos(u.c[0]);
+  SinCos(u.c[0], s.c[0], c.c[0]);
   for (int k = 1; k <= N; ++k) {
     double ss = 0.0, cc = 0.0;
     for (int j = 1; j <= k; ++j) {
@@ -70,8 +71,6 @@ void SinCos(const Taylor<N>& u, Taylor<N>& s, Taylor<N>& c) {
     c.c[k] = cc / k;
   }
 }
-inline void SinCos(double u, double& s, double& c) { s = std::sin(u); c = std::cos(u); }
-
 template <int N> Taylor<N> sin(const Taylor<N>& u) { Taylor<N> s, c; SinCos(u, s, c); return s; }
 template <int N> Taylor<N> cos(const Taylor<N>& u) { Taylor<N> s, c; SinCos(u, s, c); return c; }
 
@@ -119,7 +118,8 @@ template <int N> double Value(const Taylor<N>& x) { return x.c[0]; }
 
 // Folds the value into [-pi, pi] by a whole number of turns; higher coefficients are untouched
 // because a constant shift does not change derivatives.
-inline double WrapAngle(double x) { return std::remainder(x, 2.0 * kPi); }
+// (Inside [-pi, pi] remainder returns x itself, so the shortcut gives the same numbers.)
+inline double WrapAngle(double x) { return std::abs(x) <= kPi ? x : std::remainder(x, 2.0 * kPi); }
 template <int N>
 Taylor<N> WrapAngle(Taylor<N> x) {
   x.c[0] = WrapAngle(x.c[0]);

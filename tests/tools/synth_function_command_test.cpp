@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 namespace koppel {
@@ -63,6 +64,23 @@ TEST_CASE("synth function refuses bad specs with the line", "[cli][function]") {
       test::RunKoppel("synth function " + dir.Write("h.yaml", "function: x^2\nx: [0, 1]\ninput: [15, 75]\noutput: [105, 195]\npoints: 3\nat: [0.1, 0.5, 0.9]\n"));
   CHECK(both.exit_code == 2);
   CHECK_THAT(both.err, Catch::Contains("h.yaml:6:") && Catch::Contains("not both"));
+}
+
+// Reported by a user: x^2 over 0..1, crank 30..120, rocker 60..120, three points. Freudenstein's
+// equations have an exact solution, but the mechanism the solver assembles from the crank's first
+// position lies on the other branch and misses a precision point by 35.6 deg; koppel printed its
+// error curve with exit code 0. The reference is the design's own re-analysis: exit 1, and say so.
+TEST_CASE("synth function: an exact design on the wrong branch is refused, not printed as good", "[cli][function]") {
+  test::TempDir dir;
+  const std::string yaml = (dir.path() / "gen.yaml").string();
+  const test::RunResult r = test::RunKoppel(
+      "synth function " + dir.Write("sq.yaml", "function: x^2\nx: [0, 1]\ninput: [30, 120]\noutput: [60, 120]\npoints: 3\n") + " -o " + yaml);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.err, Catch::Contains("misses the precision points"));
+  CHECK_FALSE(std::filesystem::exists(yaml));  // no mechanism file for a design that is not one
+  const auto s = test::ParseSummary(r.out);  // the lengths solve the equations; the other branch's error is not shown
+  CHECK(s.count("crank") == 1);
+  CHECK(s.count("error_max") == 0);
 }
 
 }  // namespace koppel

@@ -44,15 +44,18 @@ void Run(const Args& args) {
   } else {
     s.Add("offset", d.offset, "length");
   }
-  s.Add("error_max", out_unit(d.error_max), four_bar ? "deg" : "length");
-  if (!args.error_curve.empty()) {
+  // A design that misses a precision point was re-analysed on another assembly branch: its
+  // lengths are the equations' solution, but its error curve belongs to a different mechanism.
+  const bool curve_is_the_design = d.status != FunctionStatus::kMissesPoints;
+  if (curve_is_the_design) s.Add("error_max", out_unit(d.error_max), four_bar ? "deg" : "length");
+  if (!args.error_curve.empty() && curve_is_the_design) {
     Table t;
     t.columns = {"x", "crank", "desired", "generated", "error"};
     for (const StructuralErrorSample& e : d.error_curve)
       t.rows.push_back({e.x, RadToDeg(e.input), out_unit(e.desired), out_unit(e.generated), out_unit(e.error)});
     WriteOutput(args.error_curve, t.ToCsv());
   }
-  if (!args.yaml.empty()) {
+  if (!args.yaml.empty() && d.ok()) {  // its comment states the structural error: only for a design
     std::string points;
     for (double x : d.precision_x) points += fmt::format("{}{:.6g}", points.empty() ? "" : ", ", x);
     const std::string comment = fmt::format(

@@ -338,6 +338,17 @@ void BindSynthesis(py::module_& m) {
     s.frame = frame;
     return Designed(SynthesiseFunction(s));
   });
+  m.def("_fit", [](const std::string& problem, int threads) {
+    FitSpec s;
+    s.problem = problem;
+    s.threads = threads;
+    Design d;
+    {
+      py::gil_scoped_release unlocked;  // the starts run on threads of their own and call no Python
+      d = SynthesiseFit(s);
+    }
+    return Designed(d);
+  });
 }
 
 }  // namespace

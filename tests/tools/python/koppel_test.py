@@ -16,6 +16,7 @@ import koppel
 
 CATALOG = os.environ["KOPPEL_CATALOG_DIR"]
 SLIDER_CRANK = os.path.join(CATALOG, "slider-crank-offset.yaml")
+DATA = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data"))
 L1, L2 = 1.0, 2.6
 
 
@@ -120,6 +121,22 @@ class MechanismTest(unittest.TestCase):
         self.assertLess(f.figures["error_at_precision"], 1e-7)
         psi = f.mechanism.move_to(45)["psi"]
         self.assertAlmostEqual(math.remainder(psi - (105 + 90 * math.log10(5.5)), 360), 0, delta=1e-6)
+
+    def test_fit_reanalysed(self):
+        # tests/data/fit-direction-three-points.yaml: exactly solvable, l1 = 1.674809355059234 from
+        # an independent Newton solve on closed-form four-bar geometry; the fitted mechanism,
+        # driven to each target's input, shows the target's direction
+        d = koppel.synth.fit(os.path.join(DATA, "fit-direction-three-points.yaml"))
+        self.assertTrue(d.ok, d.message)
+        self.assertAlmostEqual(d.figures["l1"], 1.674809355059234, delta=1e-9)
+        for phi, direction in ((100, 153), (225, 202), (270, 223)):
+            self.assertAlmostEqual(math.remainder(d.mechanism.move_to(phi)["dir"] - direction, 360), 0, delta=1e-6)
+        missed = koppel.synth.fit(os.path.join(DATA, "fit-direction-unmeetable.yaml"), threads=1)
+        self.assertEqual(missed.status, "no design")
+        self.assertIn("impossible", missed.message)
+        self.assertIsNone(missed.mechanism)
+        with self.assertRaises(koppel.InputError):
+            koppel.synth.fit(os.path.join(DATA, "no-such-problem.yaml"))
 
     def test_stubs_name_what_the_module_has(self):
         # every class, function and member of the compiled module is in _koppel.pyi and back

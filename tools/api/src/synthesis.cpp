@@ -3,10 +3,13 @@
 
 #include "display.hpp"
 
+#include "koppel/catalog/fit_problem.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/synthesis/deadcentre_synthesis.hpp"
 #include "koppel/synthesis/function_synthesis.hpp"
 #include "koppel/synthesis/mzc_synthesis.hpp"
+
+#include <fmt/core.h>
 
 #include <cmath>
 
@@ -191,6 +194,39 @@ Design SynthesiseFunction(const FunctionSpec& spec) {
   f.Add("error_at_precision", shown(d.error_at_precision), unit);
   design.figures = std::move(f.list);
   design.model = Model::FromMechanism(d.mechanism);
+  return design;
+}
+
+Design SynthesiseFit(const FitSpec& spec) {
+  Require(spec.threads >= 0, "threads", "must be 0 (the file's or one per core) or more");
+  FitProblem problem = ReadFitProblem(spec.problem);
+  if (spec.threads > 0) problem.options.threads = spec.threads;
+  std::string why;
+  if (!problem.options.IsValid(&why)) BadInput(spec.problem, "options", why);
+  const FitReport r = Fit(problem.builder, problem.parameters, problem.targets, problem.options);
+  if (r.status == FitStatus::kInvalidOptions) BadInput(spec.problem, "parameters/targets", r.message);
+  Design design;
+  design.status = r.ok() ? DesignStatus::kOk : DesignStatus::kNoDesign;
+  design.message = r.ok() ? r.message : std::string(ToString(r.status)) + ": " + r.message;
+  if (!r.ok()) return design;
+  Figures f;
+  ParameterValues fitted;
+  for (size_t j = 0; j < r.values.size(); ++j) {
+    f.Add(problem.parameters[j].name, r.values[j], "parameter");
+    fitted.emplace_back(problem.parameters[j].name, fmt::format("{:.17g}", r.values[j]));
+  }
+  design.model = Model::Load(problem.mechanism_path, fitted);
+  const bool angle_input = design.model->input_is_angle();
+  for (size_t i = 0; i < r.targets.size(); ++i) {
+    const FitTargetResult& t = r.targets[i];
+    const bool angle = t.unit == FitUnit::kAngle;
+    f.Add(fmt::format("target{}_{}_residual", i + 1, t.name), angle ? RadToDeg(t.residual) : t.residual, angle ? "deg" : "length");
+    if (problem.targets[i].input_free)
+      f.Add(fmt::format("target{}_input", i + 1), angle_input ? RadToDeg(t.input) : t.input, angle_input ? "deg" : "length");
+  }
+  f.Add("cost", r.cost, "1");
+  f.Add("starts_at_best", r.starts_at_best, "1");
+  design.figures = std::move(f.list);
   return design;
 }
 

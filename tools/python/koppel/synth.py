@@ -57,3 +57,14 @@ def function(f: Callable[[float], float], x: Tuple[float, float] = (0.0, 1.0),
     points or the x values `at`. Figures: link lengths, error_max, error_at_precision."""
     return Design(_koppel._function(f, type, x[0], x[1], input[0], input[1], output[0], output[1],
                                     points, list(at), frame))
+
+
+def fit(problem: str, threads: int = 0) -> Design:
+    """Least-squares fitting of any mechanism file to targets (koppel synth fit): `problem` is a
+    fit problem file naming the mechanism, the free parameters (bounds, starts) and the targets.
+    Figures: each free parameter, target<i>_<name>_residual [deg or length], target<i>_input for
+    a free input, cost, starts_at_best. "ok" only when every target is within its tolerance and
+    the design assembles over `require`; otherwise "no design", the message naming the targets
+    missed. The mechanism is the problem's mechanism file read with the fitted values. threads:
+    for the starts (0: the file's, or one per core)."""
+    return Design(_koppel._fit(problem, threads))

@@ -84,4 +84,19 @@ struct FunctionSpec {
 };
 Design SynthesiseFunction(const FunctionSpec& spec);
 
+// Least-squares fitting of any mechanism file to targets (koppel synth fit): `problem` is a fit
+// problem file (catalog/include/koppel/catalog/fit_problem.hpp: the mechanism, the free
+// parameters with bounds and starts, the targets); `threads` for the starts (0: the file's, or
+// one per core). Figures: every free parameter (unit "parameter"), per target
+// `target<i>_<name>_residual` [deg | length] and `target<i>_input` for a free input, `cost`,
+// `starts_at_best`. kOk only when every target is within its tolerance and the design assembles
+// over `require`; otherwise kNoDesign, the message naming what was missed. The model is the
+// problem's mechanism file read with the fitted values, so its other parameters stay formulas.
+// A problem file that does not read throws InputError naming the file and line.
+struct FitSpec {
+  std::string problem;
+  int threads = 0;
+};
+Design SynthesiseFit(const FitSpec& spec);
+
 }  // namespace koppel

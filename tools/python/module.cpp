@@ -12,6 +12,7 @@
 
 #include <optional>
 #include <string>
+#include <tuple>
 
 namespace py = pybind11;
 using namespace koppel;
@@ -348,6 +349,29 @@ void BindSynthesis(py::module_& m) {
       d = SynthesiseFit(s);
     }
     return Designed(d);
+  });
+  m.def("_motion", [](const std::vector<std::tuple<double, double, double>>& poses, const std::vector<std::pair<double, double>>& circle_points,
+                      double crank_turn, int curve_samples, bool require_crank, int threads) {
+    MotionSpec s;
+    for (const auto& [x, y, angle] : poses) s.poses.push_back({x, y, angle});
+    s.circle_points = circle_points;
+    s.crank_turn = crank_turn;
+    s.curve_samples = curve_samples;
+    s.require_crank = require_crank;
+    s.threads = threads;
+    MotionDesigns r;
+    {
+      py::gil_scoped_release unlocked;  // the four-bars are re-analysed on threads that call no Python
+      r = SynthesiseMotion(s);
+    }
+    py::dict out;
+    out["status"] = ToString(r.status);
+    out["ok"] = r.ok();
+    out["message"] = r.message;
+    py::list designs;
+    for (const Design& d : r.designs) designs.append(Designed(d));
+    out["designs"] = designs;
+    return out;
   });
 }
 

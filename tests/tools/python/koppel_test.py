@@ -138,6 +138,27 @@ class MechanismTest(unittest.TestCase):
         with self.assertRaises(koppel.InputError):
             koppel.synth.fit(os.path.join(DATA, "no-such-problem.yaml"))
 
+    def test_motion_reanalysed(self):
+        # poses 1, 3 and 5 of tests/data/motion-five-poses.yaml with the circle points of the crank-rocker
+        # A0 (0, 0), A (1, 0.2), B (3.1, 2.4), B0 (4, 0.3) whose coupler made them: its pivots come back,
+        # and the model, driven to each pose's crank angle, puts P and theta on the pose
+        poses = [(2.2, 3.3, 15), (2.4665273929408, 3.50994854354389, -3.90644221239416),
+                 (1.42227564999058, 2.23224622167394, -11.1093603534674)]
+        r = koppel.synth.motion(poses, circle_points=[(1, 0.2), (3.1, 2.4)])
+        self.assertTrue(r["ok"], r["message"])
+        pivots = sorted((round(d.figures["A0_x"], 6), round(d.figures["A0_y"], 6)) for d in r["designs"])
+        self.assertEqual(pivots, [(0.0, 0.0), (4.0, 0.3)])
+        for d in r["designs"]:
+            if d.figures["branch_defect"]:
+                continue
+            for i, (x, y, angle) in enumerate(poses):
+                p = d.mechanism.move_to(d.figures[f"pose{i + 1}_input"])
+                self.assertAlmostEqual(p["P_x"], x, delta=1e-7)
+                self.assertAlmostEqual(p["P_y"], y, delta=1e-7)
+                self.assertAlmostEqual(math.remainder(p["theta"] - angle, 360), 0, delta=1e-6)
+        with self.assertRaises(koppel.InputError):
+            koppel.synth.motion(poses)  # three poses need circle points
+
     def test_stubs_name_what_the_module_has(self):
         # every class, function and member of the compiled module is in _koppel.pyi and back
         from koppel import _koppel

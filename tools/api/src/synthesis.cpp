@@ -7,6 +7,8 @@
 #include "koppel/core/angles.hpp"
 #include "koppel/synthesis/deadcentre_synthesis.hpp"
 #include "koppel/synthesis/function_synthesis.hpp"
+#include "koppel/synthesis/motion_dyads.hpp"
+#include "koppel/synthesis/motion_synthesis.hpp"
 #include "koppel/synthesis/mzc_synthesis.hpp"
 
 #include <fmt/core.h>
@@ -228,6 +230,72 @@ Design SynthesiseFit(const FitSpec& spec) {
   f.Add("starts_at_best", r.starts_at_best, "1");
   design.figures = std::move(f.list);
   return design;
+}
+
+namespace {
+
+Design MotionDesign(const MotionFourBar& f) {
+  Figures figures;
+  const auto point = [&](const std::string& name, const Eigen::Vector2d& p) {
+    figures.Add(name + "_x", p.x(), "length");
+    figures.Add(name + "_y", p.y(), "length");
+  };
+  point("A0", f.crank.centre);
+  point("A", f.crank.circle);
+  point("B", f.rocker.circle);
+  point("B0", f.rocker.centre);
+  figures.Angle("mu_min", f.mu_min);
+  figures.Add("branch_defect", f.branch_defect ? 1 : 0, "bool");
+  figures.Add("order_defect", f.order_defect ? 1 : 0, "bool");
+  figures.Add("crank_turns_fully", f.crank_turns_fully ? 1 : 0, "bool");
+  figures.Add("pose_error", f.pose_error, "length");
+  for (size_t i = 0; i < f.pose_inputs.size(); ++i) figures.Angle(fmt::format("pose{}_input", i + 1), f.pose_inputs[i]);
+  Design d;
+  d.status = DesignStatus::kOk;
+  d.message = ToString(f.grashof);
+  d.figures = std::move(figures.list);
+  d.model = Model::FromMechanism(f.mechanism);
+  return d;
+}
+
+}  // namespace
+
+MotionDesigns SynthesiseMotion(const MotionSpec& spec) {
+  Require(spec.threads >= 0, "threads", "must be 0 (one per core) or more");
+  std::vector<Pose> poses;
+  for (const MotionPose& p : spec.poses) {
+    Require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.angle), "poses", "a pose is not finite");
+    poses.push_back({Eigen::Vector2d(p.x, p.y), DegToRad(p.angle)});
+  }
+  DyadRequest request;
+  for (const auto& [x, y] : spec.circle_points) request.circle_points.emplace_back(x, y);
+  request.crank_turn = DegToRad(spec.crank_turn);
+  request.curve_samples = spec.curve_samples;
+  const DyadChoice dyads = DyadsForPoses(poses, request);
+  if (dyads.status == BurmesterStatus::kInvalidRequest) BadInput("synthesis request", "poses/circle_points", dyads.message);
+  MotionDesigns out;
+  if (!dyads.ok() || dyads.dyads.empty()) {
+    out.status = DesignStatus::kNoDesign;
+    out.message = dyads.message.empty() ? "no dyad meets the poses" : dyads.message;
+    return out;
+  }
+  MotionOptions options;
+  options.require_crank = spec.require_crank;
+  options.threads = spec.threads;
+  const MotionResult result = FourBarsFromDyads(poses, dyads.dyads, options);
+  if (result.failed > 0) {
+    out.status = DesignStatus::kReanalysisFailed;
+    out.message = fmt::format("{} four-bar(s) failed their re-analysis{}", result.failed, result.failures.empty() ? "" : ": " + result.failures.front());
+    return out;
+  }
+  if (result.four_bars.empty()) {
+    out.status = DesignStatus::kNoDesign;
+    out.message = "no four-bar meets the request";
+    return out;
+  }
+  out.status = DesignStatus::kOk;
+  for (const MotionFourBar& f : result.four_bars) out.designs.push_back(MotionDesign(f));
+  return out;
 }
 
 }  // namespace koppel

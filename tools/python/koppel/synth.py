@@ -68,3 +68,21 @@ def fit(problem: str, threads: int = 0) -> Design:
     missed. The mechanism is the problem's mechanism file read with the fitted values. threads:
     for the starts (0: the file's, or one per core)."""
     return Design(_koppel._fit(problem, threads))
+
+
+def motion(poses: Sequence[Tuple[float, float, float]],
+           circle_points: Sequence[Tuple[float, float]] = (), crank_turn: float = 90.0,
+           curve_samples: int = 18, require_crank: bool = False, threads: int = 0) -> dict:
+    """Motion generation (koppel synth motion, Burmester): four-bars whose coupler carries a plane
+    through 2 to 5 poses (x, y, angle [deg]). Five poses fix the dyads (give no circle points);
+    four give the centre-point curve (curve_samples lines) unless circle points are given; three
+    and two need circle points (global, in the first pose), two also the crank's turn [deg].
+
+    Returns {"status", "ok", "message", "designs"}: the designs by mu_min (largest first), each a
+    Design with figures A0_x .. B0_y, mu_min [deg], branch_defect, order_defect,
+    crank_turns_fully, pose_error, pose<i>_input [deg], the Grashof type as its message, and its
+    mechanism (outputs P, theta, psi, mu). Every four-bar is re-analysed through every pose."""
+    r = _koppel._motion([tuple(p) for p in poses], [tuple(c) for c in circle_points], crank_turn,
+                        curve_samples, require_crank, threads)
+    r["designs"] = [Design(d) for d in r["designs"]]
+    return r

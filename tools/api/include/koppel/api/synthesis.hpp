@@ -15,6 +15,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace koppel {
@@ -98,5 +99,39 @@ struct FitSpec {
   int threads = 0;
 };
 Design SynthesiseFit(const FitSpec& spec);
+
+// Motion generation (koppel synth motion, Burmester): four-bars whose coupler carries a plane
+// through 2 to 5 poses, each pose the plane's reference point P (x, y [length]) and its angle
+// [deg, counter-clockwise]. The dyads by the number of poses: five fix them (Ball–Burmester
+// points: give no circle points); four give the centre-point curve sampled along
+// `curve_samples` lines unless circle points are given; three and two need circle points (global,
+// in the first pose), two also the crank's turn between the poses. Every pair of dyads is tried
+// with either one driven, and each four-bar is re-analysed by the solver through every pose.
+struct MotionPose {
+  double x = 0, y = 0, angle = 0;
+};
+struct MotionSpec {
+  std::vector<MotionPose> poses;
+  std::vector<std::pair<double, double>> circle_points;
+  double crank_turn = 90;    // [deg], two poses only
+  int curve_samples = 18;    // four poses without circle points
+  bool require_crank = false;  // keep only four-bars whose input turns fully
+  int threads = 0;           // 0: one per core
+};
+// The four-bars by mu_min, largest first. Each Design: figures A0_x, A0_y, A_x, A_y, B_x, B_y,
+// B0_x, B0_y (A0 A driven; A and B in the first pose), mu_min [deg] over the travel from the
+// first pose to the last, branch_defect, order_defect, crank_turns_fully (0/1), pose_error
+// [length], pose<i>_input (the crank angle at pose i [deg]); message: the Grashof type; model:
+// input phi at A0, outputs P, theta, psi, mu. status kOk with at least one four-bar; kNoDesign
+// when no dyad or no four-bar meets the request (message: why); kReanalysisFailed when a
+// four-bar did not pass its re-analysis (a defect of the synthesis: nothing is reported).
+// InputError for a malformed request (pose count, circle points where none belong, ...).
+struct MotionDesigns {
+  DesignStatus status = DesignStatus::kNotRun;
+  std::string message;
+  std::vector<Design> designs;
+  bool ok() const { return status == DesignStatus::kOk; }
+};
+MotionDesigns SynthesiseMotion(const MotionSpec& spec);
 
 }  // namespace koppel

@@ -279,6 +279,9 @@ MotionDesigns SynthesiseMotion(const MotionSpec& spec) {
     out.message = dyads.message.empty() ? "no dyad meets the poses" : dyads.message;
     return out;
   }
+  // every ordered pair is a four-bar to re-analyse: the CLI's bound on the work
+  Require(dyads.dyads.size() <= 2000, "curve_samples/circle_points",
+          fmt::format("{} dyads make {} four-bars: fewer, please", dyads.dyads.size(), dyads.dyads.size() * (dyads.dyads.size() - 1)));
   MotionOptions options;
   options.require_crank = spec.require_crank;
   options.threads = spec.threads;

@@ -183,6 +183,28 @@ void BindResults(py::module_& m) {
       .def("__repr__", [](const Ranges& r) { return "<koppel.Ranges " + r.Brief() + ">"; });
 }
 
+py::object Designed(const Design& d) {
+  py::dict r;
+  r["status"] = ToString(d.status);
+  r["ok"] = d.ok();
+  r["message"] = d.message;
+  r["figures"] = Figures(d);
+  r["mechanism"] = d.model ? py::cast(*d.model) : py::none();
+  return r;
+}
+
+// Several designs: {"status", "ok", "message", "designs": [design dicts]}.
+py::dict DesignList(const Designs& r) {
+  py::dict out;
+  out["status"] = ToString(r.status);
+  out["ok"] = r.ok();
+  out["message"] = r.message;
+  py::list designs;
+  for (const Design& d : r.designs) designs.append(Designed(d));
+  out["designs"] = designs;
+  return out;
+}
+
 void BindModel(py::module_& m) {
   py::class_<Model>(m, "Mechanism",
                     "A mechanism from a mechanism file, with its parameters and a current pose. Inputs in degrees (R drive) "
@@ -238,6 +260,7 @@ void BindModel(py::module_& m) {
            "Drivable ranges of the hint's branch (or of every branch koppel finds).")
       .def("singular_positions", [](const Model& model) { return SingularList(model.SingularPositions()); },
            "Singular positions a sweep over the file's range meets.")
+      .def("_cognates", [](const Model& model, const std::string& point) { return DesignList(FindCognates(model, point)); })
       .def("to_yaml", &Model::ToYaml, "The mechanism as a mechanism file.")
       .def("__repr__", [](const Model& model) { return "<koppel.Mechanism '" + model.name() + "' from " + model.path() + ">"; });
 }
@@ -279,16 +302,6 @@ void BindCatalog(py::module_& m) {
     return FindInCatalog(q, directory);
   });
   m.def("_catalog_directory", &CatalogDirectory);
-}
-
-py::object Designed(const Design& d) {
-  py::dict r;
-  r["status"] = ToString(d.status);
-  r["ok"] = d.ok();
-  r["message"] = d.message;
-  r["figures"] = Figures(d);
-  r["mechanism"] = d.model ? py::cast(*d.model) : py::none();
-  return r;
 }
 
 void BindSynthesis(py::module_& m) {
@@ -359,19 +372,12 @@ void BindSynthesis(py::module_& m) {
     s.curve_samples = curve_samples;
     s.require_crank = require_crank;
     s.threads = threads;
-    MotionDesigns r;
+    Designs r;
     {
       py::gil_scoped_release unlocked;  // the four-bars are re-analysed on threads that call no Python
       r = SynthesiseMotion(s);
     }
-    py::dict out;
-    out["status"] = ToString(r.status);
-    out["ok"] = r.ok();
-    out["message"] = r.message;
-    py::list designs;
-    for (const Design& d : r.designs) designs.append(Designed(d));
-    out["designs"] = designs;
-    return out;
+    return DesignList(r);
   });
 }
 

@@ -3,6 +3,7 @@
 // throws InputError, an impossible one is a status.
 #include "koppel/api/synthesis.hpp"
 #include "koppel/core/angles.hpp"
+#include "support/temp_file.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -144,7 +145,7 @@ TEST_CASE("SynthesiseMotion: five poses of a known crank-rocker give it back, an
                 {2.4665273929408, 3.50994854354389, -3.90644221239416},
                 {1.95132500529917, 3.08335354035025, -12.1217291854381},
                 {1.42227564999058, 2.23224622167394, -11.1093603534674}};
-  const MotionDesigns r = SynthesiseMotion(spec);
+  const Designs r = SynthesiseMotion(spec);
   INFO(r.message);
   REQUIRE(r.ok());
   bool found = false;
@@ -171,4 +172,23 @@ TEST_CASE("SynthesiseMotion: five poses of a known crank-rocker give it back, an
   MotionSpec one;
   one.poses = {{0, 0, 0}};
   CHECK_THROWS_AS(SynthesiseMotion(one), InputError);
+}
+
+TEST_CASE("FindCognates: seed 003's cognate frame, and cognate 2 traces the original's K row by row", "[api]") {
+  const Model original = Model::Load(test::CatalogEntryPath("mzc-crank-rocker"));
+  const Designs c = FindCognates(original, "K");
+  INFO(c.message);
+  REQUIRE(c.ok());
+  REQUIRE(c.designs.size() == 2);
+  CHECK_THAT(c.designs[0].Get("A0C0"), WithinAbs(40.0 / 9 * std::sqrt(3.0), 1e-9));  // seed 003, as `koppel cognates`
+  // the reference: the original's own sweep of K at the same inputs
+  const SweepTable a = original.Sweep(0, 330, 30, 0), b = c.designs[1].model->Sweep(0, 330, 30, 0);
+  REQUIRE(a.rows == b.rows);
+  const std::vector<double> ax = a.Column("K_x"), ay = a.Column("K_y"), bx = b.Column("K_x"), by = b.Column("K_y");
+  for (int i = 0; i < a.rows; ++i) {
+    CHECK_THAT(bx[i], WithinAbs(ax[i], 1e-9));
+    CHECK_THAT(by[i], WithinAbs(ay[i], 1e-9));
+  }
+  CHECK_THROWS_AS(FindCognates(original, "nowhere"), InputError);
+  CHECK_THROWS_AS(FindCognates(Model::Load(test::CatalogEntryPath("slider-crank-offset")), "B"), InputError);  // not a four-bar of R joints
 }

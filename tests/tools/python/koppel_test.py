@@ -159,6 +159,20 @@ class MechanismTest(unittest.TestCase):
         with self.assertRaises(koppel.InputError):
             koppel.synth.motion(poses)  # three poses need circle points
 
+    def test_cognates_trace_the_same_curve(self):
+        # seed 003's straight-line four-bar: cognate 2, driven with the original's input, puts K
+        # where the original does (the reference is the original's own sweep)
+        original = koppel.Mechanism.load(os.path.join(CATALOG, "mzc-crank-rocker.yaml"))
+        r = koppel.synth.cognates(original, "K")
+        self.assertTrue(r["ok"], r["message"])
+        self.assertAlmostEqual(r["designs"][0].figures["A0C0"], 40 / 9 * math.sqrt(3), delta=1e-9)
+        a = original.sweep(0, 330, 30, order=0)
+        b = r["designs"][1].mechanism.sweep(0, 330, 30, order=0)
+        np.testing.assert_allclose(b["K_x"], a["K_x"], atol=1e-9)
+        np.testing.assert_allclose(b["K_y"], a["K_y"], atol=1e-9)
+        with self.assertRaises(koppel.InputError):
+            koppel.synth.cognates(original, "nowhere")
+
     def test_stubs_name_what_the_module_has(self):
         # every class, function and member of the compiled module is in _koppel.pyi and back
         from koppel import _koppel

@@ -5,6 +5,7 @@
 
 #include "koppel/catalog/fit_problem.hpp"
 #include "koppel/core/angles.hpp"
+#include "koppel/synthesis/cognates.hpp"
 #include "koppel/synthesis/deadcentre_synthesis.hpp"
 #include "koppel/synthesis/function_synthesis.hpp"
 #include "koppel/synthesis/motion_dyads.hpp"
@@ -260,7 +261,7 @@ Design MotionDesign(const MotionFourBar& f) {
 
 }  // namespace
 
-MotionDesigns SynthesiseMotion(const MotionSpec& spec) {
+Designs SynthesiseMotion(const MotionSpec& spec) {
   Require(spec.threads >= 0, "threads", "must be 0 (one per core) or more");
   std::vector<Pose> poses;
   for (const MotionPose& p : spec.poses) {
@@ -273,7 +274,7 @@ MotionDesigns SynthesiseMotion(const MotionSpec& spec) {
   request.curve_samples = spec.curve_samples;
   const DyadChoice dyads = DyadsForPoses(poses, request);
   if (dyads.status == BurmesterStatus::kInvalidRequest) BadInput("synthesis request", "poses/circle_points", dyads.message);
-  MotionDesigns out;
+  Designs out;
   if (!dyads.ok() || dyads.dyads.empty()) {
     out.status = DesignStatus::kNoDesign;
     out.message = dyads.message.empty() ? "no dyad meets the poses" : dyads.message;
@@ -298,6 +299,35 @@ MotionDesigns SynthesiseMotion(const MotionSpec& spec) {
   }
   out.status = DesignStatus::kOk;
   for (const MotionFourBar& f : result.four_bars) out.designs.push_back(MotionDesign(f));
+  return out;
+}
+
+Designs FindCognates(const Model& original, const std::string& point) {
+  const Expected<PointRef> k = FindPointByText(original.mechanism(), point);
+  if (!k) BadInput(original.path(), "point", k.error());
+  const Cognates c = RobertsCognates(original.mechanism(), *k);
+  if (c.status == DesignStatus::kInvalidRequest) BadInput(original.path(), "mechanism", c.message);
+  Designs out;
+  out.status = c.status;
+  out.message = c.message;
+  if (!c.ok()) return out;
+  Figures first, second;
+  first.Add("A0C0", c.frame_first, "length");
+  first.Add("A0A1", c.crank_first, "length");
+  first.Add("A1C1", c.coupler_first, "length");
+  first.Add("C0C1", c.rocker_first, "length");
+  first.Add("A1K", c.k_first, "length");
+  first.Add("C1K", c.l_first, "length");
+  first.Angle("input_min", c.first_input_min);
+  first.Angle("input_max", c.first_input_max);
+  second.Add("C0B0", c.frame_second, "length");
+  second.Add("C0C2", c.crank_second, "length");
+  second.Add("C2B2", c.coupler_second, "length");
+  second.Add("B0B2", c.rocker_second, "length");
+  second.Add("B2K", c.k_second, "length");
+  second.Add("C2K", c.l_second, "length");
+  out.designs.push_back(Finished(c, first, c.first));
+  out.designs.push_back(Finished(c, second, c.second));
   return out;
 }
 

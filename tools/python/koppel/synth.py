@@ -86,3 +86,17 @@ def motion(poses: Sequence[Tuple[float, float, float]],
                         curve_samples, require_crank, threads)
     r["designs"] = [Design(d) for d in r["designs"]]
     return r
+
+
+def cognates(mechanism: "_koppel.Mechanism", point: str) -> dict:
+    """The two Roberts-Chebyshev cognates (koppel cognates) of a four-bar of revolute joints:
+    four-bars whose coupler point traces the curve of `point` (a point output, "link.point" or a
+    point name). Returns {"status", "ok", "message", "designs"}: designs[0] (pivots A0, C0; its
+    crank turns with the original coupler; figures A0C0, A0A1, A1C1, C0C1, A1K, C1K, input_min,
+    input_max [deg]) and designs[1] (pivots C0, B0, driven with the original's input; C0B0, C0C2,
+    C2B2, B0B2, B2K, C2K), each with its mechanism. Cognate 2 is proved against the original
+    sample by sample over a turn. Raises koppel.InputError for a point that is not there or a
+    mechanism that is not such a four-bar."""
+    r = mechanism._cognates(point)
+    r["designs"] = [Design(d) for d in r["designs"]]
+    return r

@@ -126,12 +126,23 @@ struct MotionSpec {
 // when no dyad or no four-bar meets the request (message: why); kReanalysisFailed when a
 // four-bar did not pass its re-analysis (a defect of the synthesis: nothing is reported).
 // InputError for a malformed request (pose count, circle points where none belong, ...).
-struct MotionDesigns {
+// (Designs: several designs from one request, with the request's status; also FindCognates.)
+struct Designs {
   DesignStatus status = DesignStatus::kNotRun;
   std::string message;
   std::vector<Design> designs;
   bool ok() const { return status == DesignStatus::kOk; }
 };
-MotionDesigns SynthesiseMotion(const MotionSpec& spec);
+Designs SynthesiseMotion(const MotionSpec& spec);
+
+// The two Roberts–Chebyshev cognates (Ersatzgetriebe, koppel cognates) of a four-bar of revolute
+// joints: four-bars whose coupler point traces the curve of `point` (a point output, "link.point"
+// or a point name). designs[0], pivots A0 and C0, has a crank that turns with the original
+// coupler (figures A0C0, A0A1, A1C1, C0C1, A1K, C1K [length], input_min, input_max [deg] over a
+// turn of the original); designs[1], pivots C0 and B0, is driven with the original's input (C0B0,
+// C0C2, C2B2, B0B2, B2K, C2K), and is proved against the original sample by sample over a turn
+// (kReanalysisFailed otherwise). kNoDesign when they degenerate (the point on a coupler joint);
+// InputError for a point that is not there or a mechanism that is not such a four-bar.
+Designs FindCognates(const Model& original, const std::string& point);
 
 }  // namespace koppel

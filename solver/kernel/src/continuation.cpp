@@ -137,7 +137,7 @@ double Continuation::ScaledPoseNorm(const Eigen::VectorXd& a, const Eigen::Vecto
   return norm;
 }
 
-double Continuation::ScaledTangentNorm(const Eigen::VectorXd& a, const Eigen::VectorXd* b) const {
+double Continuation::ScaledTangentNorm(Eigen::Ref<const Eigen::VectorXd> a, const Eigen::VectorXd* b) const {
   double norm = 0.0;
   for (int i = 0; i < a.size(); ++i) {
     const double d = b ? a(i) - (*b)(i) : a(i);

@@ -50,6 +50,7 @@ PositionSolver::PositionSolver(const Mechanism& mechanism, NewtonOptions options
     jacobian_values_.resize(system_.pattern_rows().size());
     trig_.resize(system_.TrigSize());
     trig_solved_.resize(system_.TrigSize());
+    for (size_t l = 0; l < trig_solved_.size(); l += 2) trig_solved_[l] = 1.0;  // cos and sin at q_solved_ = 0
     trig_series_.resize(system_.TrigSize() * (kMaxOrder + 1));
   } else if (square_) {
     lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
@@ -430,12 +431,17 @@ void PositionSolver::OutputDerivativesImpl(const Eigen::MatrixXd& coefficients, 
     qs[i] = Taylor<N>();
     for (int j = 0; j <= order; ++j) qs[i].c[j] = coefficients(i, j);
   }
-  // cos and sin of each link angle once, not once per point an output looks at
+  // cos and sin of each link angle once, not once per point an output looks at; at the pose
+  // Newton converged to (the common case: a walk's outputs) the last evaluation's values, the
+  // same numbers as a new sincos
+  const bool at_solved = use_blocks_ && coefficients.col(0) == q_solved_;
   for (int l = 0; l < static_cast<int>(mechanism_.links.size()); ++l) {
     const int i = system_.CoordinateOf(l);
     if (i < 0) {
       trig[2 * l] = Taylor<N>(1.0);
       trig[2 * l + 1] = Taylor<N>(0.0);
+    } else if (at_solved) {
+      SinCos(qs[i + 2], trig_solved_[2 * l + 1], trig_solved_[2 * l], trig[2 * l + 1], trig[2 * l]);
     } else {
       SinCos(qs[i + 2], trig[2 * l + 1], trig[2 * l]);
     }

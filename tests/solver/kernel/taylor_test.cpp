@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <random>
+#include <vector>
 
 namespace koppel {
 namespace {
@@ -56,6 +58,31 @@ TEST_CASE("wrapping an angle series shifts only its value", "[taylor]") {
   const Taylor<3> w = WrapAngle(x);
   CHECK(w.c[0] == Approx(7.0 - 2 * M_PI));
   CHECK(w.c[1] == 2.0);
+}
+
+}  // namespace koppel
+
+namespace koppel {
+
+// The wrap's shortcuts against the IEEE remainder they stand for (exact, so equal bit for bit):
+// seeded random angles over several turns, and the edges of each shortcut.
+TEST_CASE("WrapAngle gives std::remainder(x, 2 pi) exactly", "[taylor]") {
+  std::mt19937 random(16);
+  std::uniform_real_distribution<double> turns(-5.0, 5.0);
+  std::vector<double> xs;
+  for (int i = 0; i < 20000; ++i) xs.push_back(turns(random) * 2.0 * kPi);
+  for (double edge : {kPi, 2.0 * kPi, 3.0 * kPi, 5.0 * kPi}) {
+    for (double x : {edge, std::nextafter(edge, 0.0), std::nextafter(edge, 10.0 * kPi)}) {
+      xs.push_back(x);
+      xs.push_back(-x);
+    }
+  }
+  xs.push_back(0.0);
+  xs.push_back(1e300);
+  for (double x : xs) {
+    INFO("x = " << x);
+    CHECK(WrapAngle(x) == std::remainder(x, 2.0 * kPi));
+  }
 }
 
 }  // namespace koppel

@@ -111,7 +111,8 @@ class Continuation {
   // max |a - b| over the coordinates, in units of L (positions) and rad (angles)
   double ScaledPoseNorm(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
   // the same for first-order transfer functions dq/dinput (b may be null: |a| itself)
-  double ScaledTangentNorm(const Eigen::VectorXd& a, const Eigen::VectorXd* b) const;
+  // (a is taken by reference: a column of a series is read in place, not copied to the heap)
+  double ScaledTangentNorm(Eigen::Ref<const Eigen::VectorXd> a, const Eigen::VectorXd* b) const;
   enum class Crossing { kNotCrossed, kPassed, kFinished };
   StepResult TryStep(double next);
   void Accept(double next);

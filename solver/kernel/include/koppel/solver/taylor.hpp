@@ -57,10 +57,12 @@ Taylor<N> operator/(const Taylor<N>& a, const Taylor<N>& b) {
 
 inline void SinCos(double u, double& s, double& c) { s = std::sin(u); c = std::cos(u); }  // one sincos call
 
-// sin and cos together, from s' = c u', c' = -s u' (coefficient recurrences).
+// sin and cos of a series whose constant term's sin and cos are known (s0, c0): the
+// coefficient recurrences s' = c u', c' = -s u'.
 template <int N>
-void SinCos(const Taylor<N>& u, Taylor<N>& s, Taylor<N>& c) {
-  SinCos(u.c[0], s.c[0], c.c[0]);
+void SinCos(const Taylor<N>& u, double s0, double c0, Taylor<N>& s, Taylor<N>& c) {
+  s.c[0] = s0;
+  c.c[0] = c0;
   for (int k = 1; k <= N; ++k) {
     double ss = 0.0, cc = 0.0;
     for (int j = 1; j <= k; ++j) {
@@ -70,6 +72,13 @@ void SinCos(const Taylor<N>& u, Taylor<N>& s, Taylor<N>& c) {
     s.c[k] = ss / k;
     c.c[k] = cc / k;
   }
+}
+// sin and cos together.
+template <int N>
+void SinCos(const Taylor<N>& u, Taylor<N>& s, Taylor<N>& c) {
+  double s0, c0;
+  SinCos(u.c[0], s0, c0);
+  SinCos(u, s0, c0, s, c);
 }
 template <int N> Taylor<N> sin(const Taylor<N>& u) { Taylor<N> s, c; SinCos(u, s, c); return s; }
 template <int N> Taylor<N> cos(const Taylor<N>& u) { Taylor<N> s, c; SinCos(u, s, c); return c; }
@@ -118,8 +127,15 @@ template <int N> double Value(const Taylor<N>& x) { return x.c[0]; }
 
 // Folds the value into [-pi, pi] by a whole number of turns; higher coefficients are untouched
 // because a constant shift does not change derivatives.
-// (Inside [-pi, pi] remainder returns x itself, so the shortcut gives the same numbers.)
-inline double WrapAngle(double x) { return std::abs(x) <= kPi ? x : std::remainder(x, 2.0 * kPi); }
+// The shortcuts give remainder's numbers: inside [-pi, pi] it returns x itself, and for
+// pi < |x| < 3 pi it returns x -+ 2 pi, which is exact there (Sterbenz: x and 2 pi lie within a
+// factor of 2). One turn off is the common case (an angle row after the crank's first turn).
+inline double WrapAngle(double x) {
+  const double a = std::abs(x);
+  if (a <= kPi) return x;
+  if (a < 3.0 * kPi) return x > 0.0 ? x - 2.0 * kPi : x + 2.0 * kPi;
+  return std::remainder(x, 2.0 * kPi);
+}
 template <int N>
 Taylor<N> WrapAngle(Taylor<N> x) {
   x.c[0] = WrapAngle(x.c[0]);

@@ -131,17 +131,24 @@ Continuation::Continuation(PositionSolver& solver, ContinuationOptions options)
 
 Continuation::~Continuation() = default;
 
+// Both norms go link by link: (x, y) in units of L, theta in rad.
 double Continuation::ScaledPoseNorm(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {
+  const double per_length = 1.0 / length_scale_;
   double norm = 0.0;
-  for (int i = 0; i < a.size(); ++i) norm = std::max(norm, std::abs(a(i) - b(i)) * (i % 3 == 2 ? 1.0 : 1.0 / length_scale_));
+  for (int i = 0; i + 2 < a.size(); i += 3) {
+    norm = std::max(norm, std::abs(a(i) - b(i)) * per_length);
+    norm = std::max(norm, std::abs(a(i + 1) - b(i + 1)) * per_length);
+    norm = std::max(norm, std::abs(a(i + 2) - b(i + 2)));
+  }
   return norm;
 }
 
 double Continuation::ScaledTangentNorm(Eigen::Ref<const Eigen::VectorXd> a, const Eigen::VectorXd* b) const {
+  const double per_length = 1.0 / length_scale_;
   double norm = 0.0;
   for (int i = 0; i < a.size(); ++i) {
     const double d = b ? a(i) - (*b)(i) : a(i);
-    norm = std::max(norm, std::abs(d) * (i % 3 == 2 ? 1.0 : 1.0 / length_scale_) * input_scale_);
+    norm = std::max(norm, std::abs(d) * (i % 3 == 2 ? 1.0 : per_length) * input_scale_);
   }
   return norm;
 }

@@ -271,9 +271,13 @@ Continuation::StepResult Continuation::TryStep(double next) {
   StepResult out;
   const double h = next - input_;
   const Eigen::MatrixXd& c = Series(2);
-  predicted_ = c.col(0) + h * c.col(1) + (h * h) * c.col(2);
-  tangent_predicted_ = c.col(1) + (2.0 * h) * c.col(2);
-  q_trial_ = predicted_;
+  // the 2nd-order Taylor prediction of the pose and of its first derivative, in one pass
+  const double hh = h * h, h2 = 2.0 * h;
+  for (int i = 0; i < q_trial_.size(); ++i) {
+    predicted_(i) = c(i, 0) + h * c(i, 1) + hh * c(i, 2);
+    tangent_predicted_(i) = c(i, 1) + h2 * c(i, 2);
+    q_trial_(i) = predicted_(i);
+  }
   const SolveReport report = solver_.Correct(next, q_trial_);
   factorized_here_ = false;
   if (!report.ok() || report.iterations > options_.max_corrector_iterations) return out;

@@ -45,9 +45,9 @@ bool Range(YamlReader& r, const YAML::Node& node, const std::string& key, double
 
 }  // namespace
 
-MotionSpec ReadMotionSpec(const std::string& path) {
+MotionSpecFile ReadMotionSpec(const std::string& path) {
   const YAML::Node root = LoadRoot(path);
-  MotionSpec spec;
+  MotionSpecFile spec;
   spec.path = path;
   YamlReader r(path, nullptr);
   r.set_fallback(YAML::Mark());
@@ -77,9 +77,9 @@ MotionSpec ReadMotionSpec(const std::string& path) {
   return spec;
 }
 
-FunctionSpec ReadFunctionSpec(const std::string& path) {
+FunctionSpecFile ReadFunctionSpec(const std::string& path) {
   const YAML::Node root = LoadRoot(path);
-  FunctionSpec spec;
+  FunctionSpecFile spec;
   spec.path = path;
   YamlReader r(path, nullptr);
   r.set_fallback(YAML::Mark());

@@ -157,4 +157,29 @@ double LengthScale(const Mechanism& m) {
   return scale > 0.0 ? scale : 1.0;
 }
 
+Expected<PointRef> FindPointByText(const Mechanism& m, const std::string& text) {
+  const int output = m.FindOutput(text);
+  if (output >= 0 && m.outputs[output].kind == OutputKind::kPoint) return m.outputs[output].p;
+  const auto dot = text.find('.');
+  if (dot != std::string::npos) {
+    const int link = m.FindLink(text.substr(0, dot));
+    if (link >= 0) {
+      const int point = m.links[link].FindPoint(text.substr(dot + 1));
+      if (point >= 0) return PointRef{link, point};
+    }
+  } else {
+    std::vector<PointRef> found;
+    for (int l = 0; l < static_cast<int>(m.links.size()); ++l) {
+      if (const int p = m.links[l].FindPoint(text); p >= 0) found.push_back({l, p});
+    }
+    if (found.size() == 1) return found[0];
+    if (found.size() > 1) {
+      std::string links;
+      for (const PointRef& r : found) links += " " + m.links[r.link].name + "." + text;
+      return Expected<PointRef>::Error("point '" + text + "' is on several links; name one:" + links);
+    }
+  }
+  return Expected<PointRef>::Error("no point '" + text + "' (give a point output, link.point, or a point name)");
+}
+
 }  // namespace koppel

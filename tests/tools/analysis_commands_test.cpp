@@ -51,6 +51,22 @@ TEST_CASE("proportional reproduces seed 001's reading example", "[cli]") {
   CHECK(v.at("reference") == Approx(180).margin(1e-9));
 }
 
+// A parallelogram's coupler only translates: cognate 1's crank, which turns with that coupler,
+// stands still while K moves (its input range over a turn of the original is one value). Said on
+// stderr, and the file's sweep is that one pose rather than a reversed range.
+TEST_CASE("cognates of a parallelogram: cognate 1 cannot be driven, and says so", "[cli]") {
+  test::TempDir dir;
+  const test::RunResult r = test::RunKoppel("cognates " + test::CatalogEntryPath("parallel-crank") + " --point K -o " + dir.path().string());
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.err, Catch::Contains("cognate 1 cannot be driven"));
+  const auto v = test::ParseSummary(r.out);
+  CHECK(v.at("cognate1_input_min") == v.at("cognate1_input_max"));
+  const std::string first = test::ReadText((dir.path() / "parallel-crank-cognate-1.yaml").string());
+  CHECK_THAT(first, Catch::Contains("sweep:"));
+  // cognate 2 runs with the original's input and is checked sample by sample inside RobertsCognates
+  CHECK(test::RunKoppel("analyze " + (dir.path() / "parallel-crank-cognate-2.yaml").string() + " --step 30").exit_code == 0);
+}
+
 TEST_CASE("cognates writes two mechanism files that koppel analyses", "[cli]") {
   test::TempDir dir;
   const test::RunResult r = test::RunKoppel("cognates " + test::CatalogEntryPath("mzc-crank-rocker") + " --point K -o " + dir.path().string());

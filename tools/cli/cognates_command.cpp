@@ -24,7 +24,7 @@ void Run(const Args& args) {
   const Cognates c = RobertsCognates(file.mechanism, point);
   if (!c.ok()) {
     Complain(args.file + ": " + c.message);
-    throw Exit{kExitBadInput};
+    throw Exit{c.status == DesignStatus::kReanalysisFailed ? kExitFailed : kExitBadInput};
   }
   std::error_code ec;
   std::filesystem::create_directories(args.dir, ec);
@@ -32,7 +32,14 @@ void Run(const Args& args) {
   const SweepDefaults sweep = file.sweep;
   // cognate 1 is driven by a link that follows the original coupler: sweep its own input range,
   // a hundredth of a degree inside the dead centres at its ends
-  const double lo = RadToDeg(c.first_input_min) + 0.01, hi = RadToDeg(c.first_input_max) - 0.01;
+  double lo = RadToDeg(c.first_input_min) + 0.01, hi = RadToDeg(c.first_input_max) - 0.01;
+  if (!(hi > lo)) {
+    // a coupler that only translates (a parallelogram): cognate 1's crank stands still while K
+    // moves, so its own input cannot drive it along the curve
+    Complain(args.file + ": note: cognate 1's crank follows the original coupler, which does not turn here: cognate 1 "
+             "cannot be driven by its crank (its file's sweep is its one pose)");
+    lo = hi = RadToDeg(0.5 * (c.first_input_min + c.first_input_max));
+  }
   const SweepDefaults sweep_first{lo, hi, hi > lo ? (hi - lo) / 180 : 1.0};
   const std::string first = (std::filesystem::path(args.dir) / (c.first.name + ".yaml")).string();
   const std::string second = (std::filesystem::path(args.dir) / (c.second.name + ".yaml")).string();

@@ -19,7 +19,7 @@ struct Args {
 
 void Run(const Args& args) {
   CheckFormat(args.format);
-  FunctionSpec spec;
+  FunctionSpecFile spec;
   try {
     spec = ReadFunctionSpec(args.spec);
   } catch (const InputError& e) {

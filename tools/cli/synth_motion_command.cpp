@@ -5,6 +5,7 @@
 #include "koppel/catalog/mechanism_writer.hpp"
 #include "koppel/catalog/synthesis_spec.hpp"
 #include "koppel/core/angles.hpp"
+#include "koppel/synthesis/motion_dyads.hpp"
 #include "koppel/synthesis/motion_synthesis.hpp"
 
 #include <fmt/core.h>
@@ -54,53 +55,36 @@ std::vector<Eigen::Vector2d> Grid(const std::vector<Pose>& poses, int n) {
   return points;
 }
 
-// The dyads the request asks for, by the number of poses.
+// The dyads the request asks for, by the number of poses (motion_dyads.hpp).
 std::vector<Dyad> Dyads(const Args& args, const std::vector<Pose>& poses) {
   const int n = static_cast<int>(poses.size());
-  std::vector<Eigen::Vector2d> circle;
-  for (const std::string& c : args.circle_points) circle.push_back(ParsePoint("--circle-point", c));
+  DyadRequest request;
+  for (const std::string& c : args.circle_points) request.circle_points.push_back(ParsePoint("--circle-point", c));
   if (!args.grid.empty()) {
     if (n != 3) {
       Complain("--grid is for three poses (a family of dyads from a grid of circle points)");
       throw Exit{kExitBadInput};
     }
-    for (const Eigen::Vector2d& p : Grid(poses, Whole("--grid", args.grid, 1, 100))) circle.push_back(p);
+    for (const Eigen::Vector2d& p : Grid(poses, Whole("--grid", args.grid, 1, 100))) request.circle_points.push_back(p);
+    request.skip_unsolvable = true;
   }
-  std::vector<Dyad> dyads;
-  if (n == 5) {
-    if (!circle.empty()) {
-      Complain("five poses fix the dyads (the Ball-Burmester points): no --circle-point");
-      throw Exit{kExitBadInput};
-    }
-    const BallBurmester bb = BallBurmesterPoints(poses);
-    if (!bb.message.empty()) Complain(args.poses + ": " + bb.message);
-    return bb.dyads;
+  if (n == 5 && !request.circle_points.empty()) {
+    Complain("five poses fix the dyads (the Ball-Burmester points): no --circle-point");
+    throw Exit{kExitBadInput};
   }
-  if (n == 4 && circle.empty()) {
-    const BurmesterCurves curves = CentrePointCurve(poses, Whole("--samples", args.samples, 1, 1000), false);
-    if (!curves.ok()) {
-      Complain(args.poses + ": " + curves.message);
-      throw Exit{kExitFailed};
-    }
-    for (const BurmesterCurveSample& s : curves.samples) dyads.push_back(s.dyad);
-    return dyads;
-  }
-  if (circle.empty()) {
+  if ((n == 2 || n == 3) && request.circle_points.empty()) {
     Complain(n == 2 ? "two poses: give the circle points (--circle-point X,Y, twice for a four-bar)"
                     : "three poses: give --circle-point X,Y (twice for a four-bar) or --grid N");
     throw Exit{kExitBadInput};
   }
-  const double turn = n == 2 ? DegToRad(ParseNumberFlag("--crank-turn", args.crank_turn)) : 0;
-  for (const Eigen::Vector2d& c : circle) {
-    const CentrePointResult r = n == 2 ? CentrePointTwoPoses(poses, c, turn) : CentrePoint(poses, c);
-    if (r.ok()) {
-      dyads.push_back(r.dyad);
-    } else if (args.grid.empty() || r.status == BurmesterStatus::kInvalidRequest) {
-      Complain(fmt::format("circle point ({}, {}): {}", c.x(), c.y(), r.message));
-      throw Exit{r.status == BurmesterStatus::kInvalidRequest ? kExitBadInput : kExitFailed};
-    }
-  }
-  return dyads;
+  if (n == 4) request.curve_samples = Whole("--samples", args.samples, 1, 1000);
+  if (n == 2) request.crank_turn = DegToRad(ParseNumberFlag("--crank-turn", args.crank_turn));
+  const DyadChoice choice = DyadsForPoses(poses, request);
+  if (!choice.message.empty()) Complain(args.poses + ": " + choice.message);
+  if (choice.status == BurmesterStatus::kInvalidRequest) throw Exit{kExitBadInput};
+  // five poses without a real Ball-Burmester point: no dyad, reported below
+  if (!choice.ok() && n != 5) throw Exit{kExitFailed};
+  return choice.dyads;
 }
 
 // The four-poses curves as a CSV: one row per sample.
@@ -137,7 +121,7 @@ std::string Comment(const MotionFourBar& f, int rank, const std::string& poses) 
 }
 
 void Run(const Args& args) {
-  MotionSpec spec;
+  MotionSpecFile spec;
   try {
     spec = ReadMotionSpec(args.poses);
   } catch (const InputError& e) {

@@ -12,6 +12,7 @@
 
 #include <optional>
 #include <string>
+#include <tuple>
 
 namespace py = pybind11;
 using namespace koppel;
@@ -182,6 +183,28 @@ void BindResults(py::module_& m) {
       .def("__repr__", [](const Ranges& r) { return "<koppel.Ranges " + r.Brief() + ">"; });
 }
 
+py::object Designed(const Design& d) {
+  py::dict r;
+  r["status"] = ToString(d.status);
+  r["ok"] = d.ok();
+  r["message"] = d.message;
+  r["figures"] = Figures(d);
+  r["mechanism"] = d.model ? py::cast(*d.model) : py::none();
+  return r;
+}
+
+// Several designs: {"status", "ok", "message", "designs": [design dicts]}.
+py::dict DesignList(const Designs& r) {
+  py::dict out;
+  out["status"] = ToString(r.status);
+  out["ok"] = r.ok();
+  out["message"] = r.message;
+  py::list designs;
+  for (const Design& d : r.designs) designs.append(Designed(d));
+  out["designs"] = designs;
+  return out;
+}
+
 void BindModel(py::module_& m) {
   py::class_<Model>(m, "Mechanism",
                     "A mechanism from a mechanism file, with its parameters and a current pose. Inputs in degrees (R drive) "
@@ -237,6 +260,7 @@ void BindModel(py::module_& m) {
            "Drivable ranges of the hint's branch (or of every branch koppel finds).")
       .def("singular_positions", [](const Model& model) { return SingularList(model.SingularPositions()); },
            "Singular positions a sweep over the file's range meets.")
+      .def("_cognates", [](const Model& model, const std::string& point) { return DesignList(FindCognates(model, point)); })
       .def("to_yaml", &Model::ToYaml, "The mechanism as a mechanism file.")
       .def("__repr__", [](const Model& model) { return "<koppel.Mechanism '" + model.name() + "' from " + model.path() + ">"; });
 }
@@ -278,16 +302,6 @@ void BindCatalog(py::module_& m) {
     return FindInCatalog(q, directory);
   });
   m.def("_catalog_directory", &CatalogDirectory);
-}
-
-py::object Designed(const Design& d) {
-  py::dict r;
-  r["status"] = ToString(d.status);
-  r["ok"] = d.ok();
-  r["message"] = d.message;
-  r["figures"] = Figures(d);
-  r["mechanism"] = d.model ? py::cast(*d.model) : py::none();
-  return r;
 }
 
 void BindSynthesis(py::module_& m) {
@@ -337,6 +351,33 @@ void BindSynthesis(py::module_& m) {
     s.at = at;
     s.frame = frame;
     return Designed(SynthesiseFunction(s));
+  });
+  m.def("_fit", [](const std::string& problem, int threads) {
+    FitSpec s;
+    s.problem = problem;
+    s.threads = threads;
+    Design d;
+    {
+      py::gil_scoped_release unlocked;  // the starts run on threads of their own and call no Python
+      d = SynthesiseFit(s);
+    }
+    return Designed(d);
+  });
+  m.def("_motion", [](const std::vector<std::tuple<double, double, double>>& poses, const std::vector<std::pair<double, double>>& circle_points,
+                      double crank_turn, int curve_samples, bool require_crank, int threads) {
+    MotionSpec s;
+    for (const auto& [x, y, angle] : poses) s.poses.push_back({x, y, angle});
+    s.circle_points = circle_points;
+    s.crank_turn = crank_turn;
+    s.curve_samples = curve_samples;
+    s.require_crank = require_crank;
+    s.threads = threads;
+    Designs r;
+    {
+      py::gil_scoped_release unlocked;  // the four-bars are re-analysed on threads that call no Python
+      r = SynthesiseMotion(s);
+    }
+    return DesignList(r);
   });
 }
 

@@ -263,7 +263,11 @@ void Continuation::Accept(double next) {
   pivot_ratio_ = solver_.PivotRatio();
   rcond_ = -1.0;
   valid_order_ = kMaxOrder;
-  std::swap(series_, trial_series_);  // the trial's series (order 2) is the new pose's
+  // The trial's series (order 2) is the new pose's. Copied into series_'s first columns rather
+  // than swapped: a swap would hand the higher-order storage a sweep asks for to the trial, and
+  // both matrices would change shape (a malloc each) at every step.
+  if (series_.rows() != trial_series_.rows() || series_.cols() < trial_series_.cols()) series_.resize(trial_series_.rows(), trial_series_.cols());
+  series_.leftCols(trial_series_.cols()) = trial_series_;
   series_order_ = 2;
 }
 

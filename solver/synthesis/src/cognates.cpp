@@ -168,7 +168,12 @@ Cognates RobertsCognates(const Mechanism& m, const PointRef& point) {
   };
   coupler.p = on_coupler(f.a);
   coupler.q = on_coupler(f.b);
-  traced.outputs = {coupler};
+  Output traced_k;
+  traced_k.name = "K";
+  traced_k.kind = OutputKind::kPoint;
+  traced_k.p = point;
+  traced.outputs = {coupler, traced_k};
+  turn.order = 0;  // columns: the coupler's direction, K_x, K_y
   const SweepResult sweep = Sweep(traced, turn);
   c.first_input_min = c.first_input_max = std::arg(a1 - a0);
   double previous = std::arg(b - a), unwrapped = std::arg(a1 - a0);
@@ -179,6 +184,24 @@ Cognates RobertsCognates(const Mechanism& m, const PointRef& point) {
     unwrapped += d;
     c.first_input_min = std::min(c.first_input_min, unwrapped);
     c.first_input_max = std::max(c.first_input_max, unwrapped);
+  }
+  // Roberts' theorem says cognate 2, driven with the original's input, puts K where the original
+  // does; proved here on this mechanism, sample by sample (its hint could have picked the other
+  // assembly branch, which traces another curve).
+  const SweepResult second = Sweep(c.second, turn);
+  const double same = 1e-9 * std::max(1.0, LengthScale(m));
+  double worst = 0;
+  const size_t n = std::min(sweep.inputs.size(), second.inputs.size());
+  for (size_t i = 0; i < n; ++i) {
+    if (std::abs(sweep.inputs[i] - second.inputs[i]) > 1e-12) break;
+    const auto row = static_cast<Eigen::Index>(i);
+    worst = std::max({worst, std::abs(second.outputs(row, 0) - sweep.outputs(row, 1)), std::abs(second.outputs(row, 1) - sweep.outputs(row, 2))});
+  }
+  if (n < 2 || !(worst <= same)) {
+    c.status = DesignStatus::kReanalysisFailed;
+    c.message = n < 2 ? "cognate 2 could not be swept beside the original: " + second.message
+                      : "cognate 2 does not trace the original's coupler curve (off by " + std::to_string(worst) + "): not reported";
+    return c;
   }
   c.status = DesignStatus::kOk;
   c.message.clear();

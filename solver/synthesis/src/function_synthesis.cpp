@@ -254,9 +254,10 @@ FunctionDesign MeasureError(const FunctionRequest& r, const FunctionMap& map, co
   const double exact = 1e-6 * std::max(1.0, std::abs(r.output_to - r.output_from));
   if (phi.size() == 3 && !(design.error_at_precision <= exact))
     return Refused(design, FunctionStatus::kMissesPoints,
-                   fmt::format("the mechanism misses a precision point by {:.3g}: it assembles on another branch than the "
-                               "equations' solution (try other input or output ranges)",
-                               four_bar ? RadToDeg(design.error_at_precision) : design.error_at_precision));
+                   fmt::format("the mechanism misses a precision point by {:.3g}{}: the precision points lie on different assembly "
+                               "branches (a branch defect: turning the crank through the input range does not carry the linkage "
+                               "from one to the other). Try other input or output ranges",
+                               four_bar ? RadToDeg(design.error_at_precision) : design.error_at_precision, four_bar ? " deg" : ""));
   if (!s.complete())
     return Refused(design, FunctionStatus::kNotDrivable, "the mechanism does not run through the whole input range on its branch: " + s.message);
   design.status = FunctionStatus::kOk;

@@ -121,7 +121,7 @@ TEST_CASE("an exact design whose mechanism runs on another branch is refused, ne
   INFO(d.Brief());
   CHECK(d.status == FunctionStatus::kMissesPoints);
   CHECK(RadToDeg(d.error_at_precision) > 1.0);
-  CHECK_THAT(d.message, Catch::Matchers::Contains("another branch"));
+  CHECK_THAT(d.message, Catch::Matchers::Contains("different assembly branches"));
 }
 
 TEST_CASE("property: every 3-point design called ok passes through its precision points", "[function]") {

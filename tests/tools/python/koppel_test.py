@@ -16,6 +16,7 @@ import koppel
 
 CATALOG = os.environ["KOPPEL_CATALOG_DIR"]
 SLIDER_CRANK = os.path.join(CATALOG, "slider-crank-offset.yaml")
+DATA = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data"))
 L1, L2 = 1.0, 2.6
 
 
@@ -120,6 +121,57 @@ class MechanismTest(unittest.TestCase):
         self.assertLess(f.figures["error_at_precision"], 1e-7)
         psi = f.mechanism.move_to(45)["psi"]
         self.assertAlmostEqual(math.remainder(psi - (105 + 90 * math.log10(5.5)), 360), 0, delta=1e-6)
+
+    def test_fit_reanalysed(self):
+        # tests/data/fit-direction-three-points.yaml: exactly solvable, l1 = 1.674809355059234 from
+        # an independent Newton solve on closed-form four-bar geometry; the fitted mechanism,
+        # driven to each target's input, shows the target's direction
+        d = koppel.synth.fit(os.path.join(DATA, "fit-direction-three-points.yaml"))
+        self.assertTrue(d.ok, d.message)
+        self.assertAlmostEqual(d.figures["l1"], 1.674809355059234, delta=1e-9)
+        for phi, direction in ((100, 153), (225, 202), (270, 223)):
+            self.assertAlmostEqual(math.remainder(d.mechanism.move_to(phi)["dir"] - direction, 360), 0, delta=1e-6)
+        missed = koppel.synth.fit(os.path.join(DATA, "fit-direction-unmeetable.yaml"), threads=1)
+        self.assertEqual(missed.status, "no design")
+        self.assertIn("impossible", missed.message)
+        self.assertIsNone(missed.mechanism)
+        with self.assertRaises(koppel.InputError):
+            koppel.synth.fit(os.path.join(DATA, "no-such-problem.yaml"))
+
+    def test_motion_reanalysed(self):
+        # poses 1, 3 and 5 of tests/data/motion-five-poses.yaml with the circle points of the crank-rocker
+        # A0 (0, 0), A (1, 0.2), B (3.1, 2.4), B0 (4, 0.3) whose coupler made them: its pivots come back,
+        # and the model, driven to each pose's crank angle, puts P and theta on the pose
+        poses = [(2.2, 3.3, 15), (2.4665273929408, 3.50994854354389, -3.90644221239416),
+                 (1.42227564999058, 2.23224622167394, -11.1093603534674)]
+        r = koppel.synth.motion(poses, circle_points=[(1, 0.2), (3.1, 2.4)])
+        self.assertTrue(r["ok"], r["message"])
+        pivots = sorted((round(d.figures["A0_x"], 6), round(d.figures["A0_y"], 6)) for d in r["designs"])
+        self.assertEqual(pivots, [(0.0, 0.0), (4.0, 0.3)])
+        for d in r["designs"]:
+            if d.figures["branch_defect"]:
+                continue
+            for i, (x, y, angle) in enumerate(poses):
+                p = d.mechanism.move_to(d.figures[f"pose{i + 1}_input"])
+                self.assertAlmostEqual(p["P_x"], x, delta=1e-7)
+                self.assertAlmostEqual(p["P_y"], y, delta=1e-7)
+                self.assertAlmostEqual(math.remainder(p["theta"] - angle, 360), 0, delta=1e-6)
+        with self.assertRaises(koppel.InputError):
+            koppel.synth.motion(poses)  # three poses need circle points
+
+    def test_cognates_trace_the_same_curve(self):
+        # seed 003's straight-line four-bar: cognate 2, driven with the original's input, puts K
+        # where the original does (the reference is the original's own sweep)
+        original = koppel.Mechanism.load(os.path.join(CATALOG, "mzc-crank-rocker.yaml"))
+        r = koppel.synth.cognates(original, "K")
+        self.assertTrue(r["ok"], r["message"])
+        self.assertAlmostEqual(r["designs"][0].figures["A0C0"], 40 / 9 * math.sqrt(3), delta=1e-9)
+        a = original.sweep(0, 330, 30, order=0)
+        b = r["designs"][1].mechanism.sweep(0, 330, 30, order=0)
+        np.testing.assert_allclose(b["K_x"], a["K_x"], atol=1e-9)
+        np.testing.assert_allclose(b["K_y"], a["K_y"], atol=1e-9)
+        with self.assertRaises(koppel.InputError):
+            koppel.synth.cognates(original, "nowhere")
 
     def test_stubs_name_what_the_module_has(self):
         # every class, function and member of the compiled module is in _koppel.pyi and back

@@ -3,10 +3,16 @@
 
 #include "display.hpp"
 
+#include "koppel/catalog/fit_problem.hpp"
 #include "koppel/core/angles.hpp"
+#include "koppel/synthesis/cognates.hpp"
 #include "koppel/synthesis/deadcentre_synthesis.hpp"
 #include "koppel/synthesis/function_synthesis.hpp"
+#include "koppel/synthesis/motion_dyads.hpp"
+#include "koppel/synthesis/motion_synthesis.hpp"
 #include "koppel/synthesis/mzc_synthesis.hpp"
+
+#include <fmt/core.h>
 
 #include <cmath>
 
@@ -192,6 +198,137 @@ Design SynthesiseFunction(const FunctionSpec& spec) {
   design.figures = std::move(f.list);
   design.model = Model::FromMechanism(d.mechanism);
   return design;
+}
+
+Design SynthesiseFit(const FitSpec& spec) {
+  Require(spec.threads >= 0, "threads", "must be 0 (the file's or one per core) or more");
+  FitProblem problem = ReadFitProblem(spec.problem);
+  if (spec.threads > 0) problem.options.threads = spec.threads;
+  std::string why;
+  if (!problem.options.IsValid(&why)) BadInput(spec.problem, "options", why);
+  const FitReport r = Fit(problem.builder, problem.parameters, problem.targets, problem.options);
+  if (r.status == FitStatus::kInvalidOptions) BadInput(spec.problem, "parameters/targets", r.message);
+  Design design;
+  design.status = r.ok() ? DesignStatus::kOk : DesignStatus::kNoDesign;
+  design.message = r.ok() ? r.message : std::string(ToString(r.status)) + ": " + r.message;
+  if (!r.ok()) return design;
+  Figures f;
+  ParameterValues fitted;
+  for (size_t j = 0; j < r.values.size(); ++j) {
+    f.Add(problem.parameters[j].name, r.values[j], "parameter");
+    fitted.emplace_back(problem.parameters[j].name, fmt::format("{:.17g}", r.values[j]));
+  }
+  design.model = Model::Load(problem.mechanism_path, fitted);
+  const bool angle_input = design.model->input_is_angle();
+  for (size_t i = 0; i < r.targets.size(); ++i) {
+    const FitTargetResult& t = r.targets[i];
+    const bool angle = t.unit == FitUnit::kAngle;
+    f.Add(fmt::format("target{}_{}_residual", i + 1, t.name), angle ? RadToDeg(t.residual) : t.residual, angle ? "deg" : "length");
+    if (problem.targets[i].input_free)
+      f.Add(fmt::format("target{}_input", i + 1), angle_input ? RadToDeg(t.input) : t.input, angle_input ? "deg" : "length");
+  }
+  f.Add("cost", r.cost, "1");
+  f.Add("starts_at_best", r.starts_at_best, "1");
+  design.figures = std::move(f.list);
+  return design;
+}
+
+namespace {
+
+Design MotionDesign(const MotionFourBar& f) {
+  Figures figures;
+  const auto point = [&](const std::string& name, const Eigen::Vector2d& p) {
+    figures.Add(name + "_x", p.x(), "length");
+    figures.Add(name + "_y", p.y(), "length");
+  };
+  point("A0", f.crank.centre);
+  point("A", f.crank.circle);
+  point("B", f.rocker.circle);
+  point("B0", f.rocker.centre);
+  figures.Angle("mu_min", f.mu_min);
+  figures.Add("branch_defect", f.branch_defect ? 1 : 0, "bool");
+  figures.Add("order_defect", f.order_defect ? 1 : 0, "bool");
+  figures.Add("crank_turns_fully", f.crank_turns_fully ? 1 : 0, "bool");
+  figures.Add("pose_error", f.pose_error, "length");
+  for (size_t i = 0; i < f.pose_inputs.size(); ++i) figures.Angle(fmt::format("pose{}_input", i + 1), f.pose_inputs[i]);
+  Design d;
+  d.status = DesignStatus::kOk;
+  d.message = ToString(f.grashof);
+  d.figures = std::move(figures.list);
+  d.model = Model::FromMechanism(f.mechanism);
+  return d;
+}
+
+}  // namespace
+
+Designs SynthesiseMotion(const MotionSpec& spec) {
+  Require(spec.threads >= 0, "threads", "must be 0 (one per core) or more");
+  std::vector<Pose> poses;
+  for (const MotionPose& p : spec.poses) {
+    Require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.angle), "poses", "a pose is not finite");
+    poses.push_back({Eigen::Vector2d(p.x, p.y), DegToRad(p.angle)});
+  }
+  DyadRequest request;
+  for (const auto& [x, y] : spec.circle_points) request.circle_points.emplace_back(x, y);
+  request.crank_turn = DegToRad(spec.crank_turn);
+  request.curve_samples = spec.curve_samples;
+  const DyadChoice dyads = DyadsForPoses(poses, request);
+  if (dyads.status == BurmesterStatus::kInvalidRequest) BadInput("synthesis request", "poses/circle_points", dyads.message);
+  Designs out;
+  if (!dyads.ok() || dyads.dyads.empty()) {
+    out.status = DesignStatus::kNoDesign;
+    out.message = dyads.message.empty() ? "no dyad meets the poses" : dyads.message;
+    return out;
+  }
+  // every ordered pair is a four-bar to re-analyse: the CLI's bound on the work
+  Require(dyads.dyads.size() <= 2000, "curve_samples/circle_points",
+          fmt::format("{} dyads make {} four-bars: fewer, please", dyads.dyads.size(), dyads.dyads.size() * (dyads.dyads.size() - 1)));
+  MotionOptions options;
+  options.require_crank = spec.require_crank;
+  options.threads = spec.threads;
+  const MotionResult result = FourBarsFromDyads(poses, dyads.dyads, options);
+  if (result.failed > 0) {
+    out.status = DesignStatus::kReanalysisFailed;
+    out.message = fmt::format("{} four-bar(s) failed their re-analysis{}", result.failed, result.failures.empty() ? "" : ": " + result.failures.front());
+    return out;
+  }
+  if (result.four_bars.empty()) {
+    out.status = DesignStatus::kNoDesign;
+    out.message = "no four-bar meets the request";
+    return out;
+  }
+  out.status = DesignStatus::kOk;
+  for (const MotionFourBar& f : result.four_bars) out.designs.push_back(MotionDesign(f));
+  return out;
+}
+
+Designs FindCognates(const Model& original, const std::string& point) {
+  const Expected<PointRef> k = FindPointByText(original.mechanism(), point);
+  if (!k) BadInput(original.path(), "point", k.error());
+  const Cognates c = RobertsCognates(original.mechanism(), *k);
+  if (c.status == DesignStatus::kInvalidRequest) BadInput(original.path(), "mechanism", c.message);
+  Designs out;
+  out.status = c.status;
+  out.message = c.message;
+  if (!c.ok()) return out;
+  Figures first, second;
+  first.Add("A0C0", c.frame_first, "length");
+  first.Add("A0A1", c.crank_first, "length");
+  first.Add("A1C1", c.coupler_first, "length");
+  first.Add("C0C1", c.rocker_first, "length");
+  first.Add("A1K", c.k_first, "length");
+  first.Add("C1K", c.l_first, "length");
+  first.Angle("input_min", c.first_input_min);
+  first.Angle("input_max", c.first_input_max);
+  second.Add("C0B0", c.frame_second, "length");
+  second.Add("C0C2", c.crank_second, "length");
+  second.Add("C2B2", c.coupler_second, "length");
+  second.Add("B0B2", c.rocker_second, "length");
+  second.Add("B2K", c.k_second, "length");
+  second.Add("C2K", c.l_second, "length");
+  out.designs.push_back(Finished(c, first, c.first));
+  out.designs.push_back(Finished(c, second, c.second));
+  return out;
 }
 
 }  // namespace koppel

@@ -24,21 +24,22 @@
 
 namespace koppel {
 
-struct MotionSpec {
+// (the files' contents; the API's MotionSpec and FunctionSpec are requests made in code)
+struct MotionSpecFile {
   std::string path;
   std::vector<Pose> poses;  // angles in radians
 };
 
 // Throws InputError (mechanism_file.hpp).
-MotionSpec ReadMotionSpec(const std::string& path);
+MotionSpecFile ReadMotionSpec(const std::string& path);
 
-struct FunctionSpec {
+struct FunctionSpecFile {
   std::string path;
   std::string formula;
   FunctionRequest request;  // its function evaluates `formula` (angles in radians)
 };
 
 // Throws InputError; the formula is checked at both ends of the x range and at the precision points.
-FunctionSpec ReadFunctionSpec(const std::string& path);
+FunctionSpecFile ReadFunctionSpec(const std::string& path);
 
 }  // namespace koppel

@@ -16,6 +16,8 @@
 // A Mechanism is built once (by the catalog reader or by code) and never mutated by the solver.
 #pragma once
 
+#include "koppel/core/expected.hpp"
+
 #include <Eigen/Core>
 
 #include <string>
@@ -144,5 +146,9 @@ std::vector<std::string> CheckConsistency(const Mechanism& mechanism);
 // point sits at its origin). Every tolerance of the solver is relative to L, so a mechanism
 // scaled by 1e-6 or 1e6 gives the same dimensionless results.
 double LengthScale(const Mechanism& mechanism);
+
+// A point named as users name it: a point output ("K"), "link.point", or a point name found on
+// exactly one link. The error says which of these failed (or which links share the name).
+Expected<PointRef> FindPointByText(const Mechanism& mechanism, const std::string& text);
 
 }  // namespace koppel

@@ -89,8 +89,9 @@ class Continuation {
 
   double input() const { return input_; }
   const Eigen::VectorXd& q() const { return q_; }
-  // Taylor coefficients d^k q / d input^k / k! at the current pose (columns 0..order). Columns
-  // above ValidOrder() are zero: not computable here. Precondition 0 <= order <= kMaxOrder
+  // Taylor coefficients d^k q / d input^k / k! at the current pose in columns 0..order (the
+  // matrix may have more columns, left from a higher order asked for before: read only these,
+  // e.g. with leftCols(order + 1)). Columns above ValidOrder() are zero: not computable here. Precondition 0 <= order <= kMaxOrder
   // (std::out_of_range otherwise: the caller validated its options, e.g. SweepOptions::IsValid).
   const Eigen::MatrixXd& Series(int order);
   // kMaxOrder at a regular pose; 3 at a singular pose inside a branch-point window, where

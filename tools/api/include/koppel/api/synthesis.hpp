@@ -15,6 +15,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace koppel {
@@ -83,5 +84,65 @@ struct FunctionSpec {
   double frame = 1;
 };
 Design SynthesiseFunction(const FunctionSpec& spec);
+
+// Least-squares fitting of any mechanism file to targets (koppel synth fit): `problem` is a fit
+// problem file (catalog/include/koppel/catalog/fit_problem.hpp: the mechanism, the free
+// parameters with bounds and starts, the targets); `threads` for the starts (0: the file's, or
+// one per core). Figures: every free parameter (unit "parameter"), per target
+// `target<i>_<name>_residual` [deg | length] and `target<i>_input` for a free input, `cost`,
+// `starts_at_best`. kOk only when every target is within its tolerance and the design assembles
+// over `require`; otherwise kNoDesign, the message naming what was missed. The model is the
+// problem's mechanism file read with the fitted values, so its other parameters stay formulas.
+// A problem file that does not read throws InputError naming the file and line.
+struct FitSpec {
+  std::string problem;
+  int threads = 0;
+};
+Design SynthesiseFit(const FitSpec& spec);
+
+// Motion generation (koppel synth motion, Burmester): four-bars whose coupler carries a plane
+// through 2 to 5 poses, each pose the plane's reference point P (x, y [length]) and its angle
+// [deg, counter-clockwise]. The dyads by the number of poses: five fix them (Ball–Burmester
+// points: give no circle points); four give the centre-point curve sampled along
+// `curve_samples` lines unless circle points are given; three and two need circle points (global,
+// in the first pose), two also the crank's turn between the poses. Every pair of dyads is tried
+// with either one driven, and each four-bar is re-analysed by the solver through every pose.
+struct MotionPose {
+  double x = 0, y = 0, angle = 0;
+};
+struct MotionSpec {
+  std::vector<MotionPose> poses;
+  std::vector<std::pair<double, double>> circle_points;
+  double crank_turn = 90;    // [deg], two poses only
+  int curve_samples = 18;    // four poses without circle points
+  bool require_crank = false;  // keep only four-bars whose input turns fully
+  int threads = 0;           // 0: one per core
+};
+// The four-bars by mu_min, largest first. Each Design: figures A0_x, A0_y, A_x, A_y, B_x, B_y,
+// B0_x, B0_y (A0 A driven; A and B in the first pose), mu_min [deg] over the travel from the
+// first pose to the last, branch_defect, order_defect, crank_turns_fully (0/1), pose_error
+// [length], pose<i>_input (the crank angle at pose i [deg]); message: the Grashof type; model:
+// input phi at A0, outputs P, theta, psi, mu. status kOk with at least one four-bar; kNoDesign
+// when no dyad or no four-bar meets the request (message: why); kReanalysisFailed when a
+// four-bar did not pass its re-analysis (a defect of the synthesis: nothing is reported).
+// InputError for a malformed request (pose count, circle points where none belong, ...).
+// (Designs: several designs from one request, with the request's status; also FindCognates.)
+struct Designs {
+  DesignStatus status = DesignStatus::kNotRun;
+  std::string message;
+  std::vector<Design> designs;
+  bool ok() const { return status == DesignStatus::kOk; }
+};
+Designs SynthesiseMotion(const MotionSpec& spec);
+
+// The two Roberts–Chebyshev cognates (Ersatzgetriebe, koppel cognates) of a four-bar of revolute
+// joints: four-bars whose coupler point traces the curve of `point` (a point output, "link.point"
+// or a point name). designs[0], pivots A0 and C0, has a crank that turns with the original
+// coupler (figures A0C0, A0A1, A1C1, C0C1, A1K, C1K [length], input_min, input_max [deg] over a
+// turn of the original); designs[1], pivots C0 and B0, is driven with the original's input (C0B0,
+// C0C2, C2B2, B0B2, B2K, C2K), and is proved against the original sample by sample over a turn
+// (kReanalysisFailed otherwise). kNoDesign when they degenerate (the point on a coupler joint);
+// InputError for a point that is not there or a mechanism that is not such a four-bar.
+Designs FindCognates(const Model& original, const std::string& point);
 
 }  // namespace koppel

@@ -167,7 +167,10 @@ bool BlockLU::Analyse(int n, const std::vector<int>& rows, const std::vector<int
   lu_.assign(total, 0.0);
   off_values_.assign(off_.size(), 0.0);
   pivot_row_.assign(n, 0);
-  pivot_.assign(n, 0.0);
+  pivot_slot_.assign(n, 0);
+  for (const Block& block : blocks_) {
+    for (int c = 0; c < block.size; ++c) pivot_slot_[col_perm_[block.start + c]] = block.lu + c * block.size + c;
+  }
   work_.assign(n, 0.0);
   analysed_ = true;
   return true;
@@ -196,7 +199,6 @@ void BlockLU::Factorize(const double* values) {
       case 6: swaps += FactorizeBlock<6>(a, piv, 6); break;
       default: swaps += FactorizeBlock<0>(a, piv, block.size); break;
     }
-    for (int c = 0; c < block.size; ++c) pivot_[col_perm_[block.start + c]] = a[c * block.size + c];
   }
   sign_ = swaps % 2 == 0 ? permutation_sign_ : -permutation_sign_;
 }

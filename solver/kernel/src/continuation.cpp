@@ -131,17 +131,24 @@ Continuation::Continuation(PositionSolver& solver, ContinuationOptions options)
 
 Continuation::~Continuation() = default;
 
+// Both norms go link by link: (x, y) in units of L, theta in rad.
 double Continuation::ScaledPoseNorm(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {
+  const double per_length = 1.0 / length_scale_;
   double norm = 0.0;
-  for (int i = 0; i < a.size(); ++i) norm = std::max(norm, std::abs(a(i) - b(i)) * (i % 3 == 2 ? 1.0 : 1.0 / length_scale_));
+  for (int i = 0; i + 2 < a.size(); i += 3) {
+    norm = std::max(norm, std::abs(a(i) - b(i)) * per_length);
+    norm = std::max(norm, std::abs(a(i + 1) - b(i + 1)) * per_length);
+    norm = std::max(norm, std::abs(a(i + 2) - b(i + 2)));
+  }
   return norm;
 }
 
 double Continuation::ScaledTangentNorm(Eigen::Ref<const Eigen::VectorXd> a, const Eigen::VectorXd* b) const {
+  const double per_length = 1.0 / length_scale_;
   double norm = 0.0;
   for (int i = 0; i < a.size(); ++i) {
     const double d = b ? a(i) - (*b)(i) : a(i);
-    norm = std::max(norm, std::abs(d) * (i % 3 == 2 ? 1.0 : 1.0 / length_scale_) * input_scale_);
+    norm = std::max(norm, std::abs(d) * (i % 3 == 2 ? 1.0 : per_length) * input_scale_);
   }
   return norm;
 }
@@ -268,9 +275,13 @@ Continuation::StepResult Continuation::TryStep(double next) {
   StepResult out;
   const double h = next - input_;
   const Eigen::MatrixXd& c = Series(2);
-  predicted_ = c.col(0) + h * c.col(1) + (h * h) * c.col(2);
-  tangent_predicted_ = c.col(1) + (2.0 * h) * c.col(2);
-  q_trial_ = predicted_;
+  // the 2nd-order Taylor prediction of the pose and of its first derivative, in one pass
+  const double hh = h * h, h2 = 2.0 * h;
+  for (int i = 0; i < q_trial_.size(); ++i) {
+    predicted_(i) = c(i, 0) + h * c(i, 1) + hh * c(i, 2);
+    tangent_predicted_(i) = c(i, 1) + h2 * c(i, 2);
+    q_trial_(i) = predicted_(i);
+  }
   const SolveReport report = solver_.Correct(next, q_trial_);
   factorized_here_ = false;
   if (!report.ok() || report.iterations > options_.max_corrector_iterations) return out;

@@ -181,8 +181,13 @@ SolveReport PositionSolver::Correct(double input, Eigen::VectorXd& q) {
     // Divergence guard: Newton from a good predictor never grows the residual this much.
     if (it > 0 && norm > 1e3 * first_norm && norm > system_.length_scale())
       return Report(SolveStatus::kDidNotConverge, it, "Newton diverged");
-    rhs_ = -residual_;
-    SolveFactorized(rhs_, step_);
+    if (use_blocks_) {
+      step_ = -residual_;
+      blocks_.Solve(step_.data());
+    } else {
+      rhs_ = -residual_;
+      SolveFactorized(rhs_, step_);
+    }
     q_try_ += step_;
   }
   return Report(SolveStatus::kDidNotConverge, options_.max_iterations,
@@ -391,10 +396,18 @@ void PositionSolver::BlockSeries(int order, Eigen::MatrixXd& coefficients) {
   coefficients.col(0) = q_solved_;
   std::copy(trig_solved_.begin(), trig_solved_.end(), trig_series_.begin());
   for (int k = 1; k <= order; ++k) {
-    system_.TrigSeriesPartial(k, coefficients.data(), trig_series_.data());
     double* q_k = coefficients.data() + static_cast<std::ptrdiff_t>(n) * k;
-    system_.SeriesResidual(k, coefficients.data(), trig_series_.data(), rhs_.data());
-    for (int i = 0; i < n; ++i) q_k[i] = -rhs_(i);
+    if (k == 1) {
+      // with q's coefficient 1 taken as zero nothing in F moves but the input: the right-hand
+      // side is dF/dinput, the drive row's alone (the recurrences give exact zeros elsewhere)
+      std::fill(trig_series_.begin() + system_.TrigSize(), trig_series_.begin() + 2 * system_.TrigSize(), 0.0);
+      std::fill(q_k, q_k + n, 0.0);
+      q_k[system_.DriveRow()] = -system_.InputColumn();
+    } else {
+      system_.TrigSeriesPartial(k, coefficients.data(), trig_series_.data());
+      system_.SeriesResidual(k, coefficients.data(), trig_series_.data(), rhs_.data());
+      for (int i = 0; i < n; ++i) q_k[i] = -rhs_(i);
+    }
     blocks_.Solve(q_k);
     system_.TrigSeriesComplete(k, coefficients.data(), trig_series_.data());
   }
@@ -447,14 +460,23 @@ void PositionSolver::OutputDerivativesImpl(const Eigen::MatrixXd& coefficients, 
     }
   }
   int column = 0;
+  auto write = [&](const Taylor<N>& y) {
+    double factorial = 1.0;
+    for (int k = 0; k <= order; ++k) {
+      if (k > 1) factorial *= k;
+      out[column++] = y.c[k] * factorial;
+    }
+  };
   for (int o = 0; o < static_cast<int>(mechanism_.outputs.size()); ++o) {
-    for (int comp = 0; comp < mechanism_.outputs[o].Components(); ++comp) {
-      const Taylor<N> y = system_.Output(o, comp, qs.data(), trig.data());
-      double factorial = 1.0;
-      for (int k = 0; k <= order; ++k) {
-        if (k > 1) factorial *= k;
-        out[column++] = y.c[k] * factorial;
-      }
+    const Output& output = mechanism_.outputs[o];
+    if (output.kind == OutputKind::kPoint) {
+      // both coordinates from one evaluation of the point (Output gives one of them)
+      Taylor<N> xy[2];
+      system_.GlobalPoint(output.p, qs.data(), xy, trig.data());
+      write(xy[0]);
+      write(xy[1]);
+    } else {
+      write(system_.Output(o, 0, qs.data(), trig.data()));
     }
   }
 }

@@ -30,7 +30,7 @@ class BlockLU {
 
   // The pivots of the factorisation (U's diagonal, one per column of A): pivot(j) belongs to
   // column j of A. det A = DeterminantSign() * product of the pivots.
-  double Pivot(int column) const { return pivot_[column]; }
+  double Pivot(int column) const { return lu_[pivot_slot_[column]]; }
   int DeterminantSign() const { return sign_; }
 
  private:
@@ -57,7 +57,7 @@ class BlockLU {
   std::vector<double> lu_;
   std::vector<double> off_values_;
   std::vector<int> pivot_row_;            // per permuted row: the row (of its block) swapped with it at that step
-  std::vector<double> pivot_;             // per column of A
+  std::vector<int> pivot_slot_;           // per column of A: where its pivot (U's diagonal entry) lies in lu_
   int sign_ = 1;
   mutable std::vector<double> work_;
 };

@@ -41,6 +41,32 @@ TEST_CASE("curve --straight reproduces seed 003's reading example", "[cli]") {
   CHECK(test::RunKoppel("curve " + test::CatalogEntryPath("mzc-crank-rocker") + " --point B").exit_code == 2);  // on two links
 }
 
+// Issue 22 item 5: without --at the stretch was printed as phi_I = -180, phi_A = -261.66,
+// phi_E = -98.34; seed 003 writes phi_I = 180, phi_A = 98.3, phi_G = 163.3 deg.
+TEST_CASE("curve --straight prints seed 003's convention with and without --at", "[cli]") {
+  const std::string command = "curve " + test::CatalogEntryPath("mzc-crank-rocker") + " --point K --straight";
+  const test::RunResult plain = test::RunKoppel(command), at = test::RunKoppel(command + " --at 180"),
+                        turned = test::RunKoppel(command + " --at -180");
+  REQUIRE(plain.exit_code == 0);
+  REQUIRE(at.exit_code == 0);
+  REQUIRE(turned.exit_code == 0);
+  const auto v = test::ParseSummary(plain.out);
+  CHECK(v.at("phi_I") == Approx(180).margin(1e-9));
+  CHECK(v.at("phi_A") == Approx(98.3).margin(0.05));
+  CHECK(v.at("phi_E") == Approx(98.3 + 163.3).margin(0.1));
+  CHECK(v.at("phi_E") - v.at("phi_A") == Approx(v.at("phi_G")).margin(1e-9));
+  CHECK(at.out == plain.out);
+  CHECK(turned.out == plain.out);
+  // a stretch through 0 is written with its end beyond 360; a reversed one is bad input
+  const test::RunResult through_0 = test::RunKoppel(command + " --at 0 --stretch 340:380 --resolution 0.05");
+  REQUIRE(through_0.exit_code == 0);
+  CHECK(test::ParseSummary(through_0.out).at("phi_A") == Approx(340).margin(1e-9));
+  CHECK(test::ParseSummary(through_0.out).at("phi_E") == Approx(380).margin(1e-9));
+  const test::RunResult reversed = test::RunKoppel(command + " --at 180 --stretch 261.66:98.34");
+  CHECK(reversed.exit_code == 2);
+  CHECK_THAT(reversed.err, Catch::Contains("--stretch") && Catch::Contains("end after its start"));
+}
+
 TEST_CASE("proportional reproduces seed 001's reading example", "[cli]") {
   const test::RunResult r = test::RunKoppel("proportional " + test::CatalogEntryPath("proportional-linkage") +
                                             " --output s --from 112.5 --to 247.5");

@@ -84,6 +84,10 @@ void Run(const Args& args) {
     }
     const double a = DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(0, colon))),
                  e = DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(colon + 1)));
+    if (std::string why; !StretchIsValid(a, e, &why)) {
+      Complain("--stretch: " + why);
+      throw Exit{kExitBadInput};
+    }
     CheckSampleCount(std::min({a, e, *reference}), std::max({a, e, *reference}), resolution, "--stretch/--at/--resolution");
     s = StretchBand(m, point, *reference, a, e, resolution, continuation);
   } else {
@@ -125,7 +129,9 @@ void AddCurveCommand(CLI::App& app) {
       "reference point K_I (--at, default: the point of least curvature); Δy is the width of the band parallel to g that\n"
       "holds the stretch K_A..K_E, L its extent along g, Q_G = Δy/L. With --qg the longest stretch through K_I with\n"
       "Q_G <= qg (every end point is tried: Q_G is not monotonic); with --stretch A:E the band of that stretch.\n"
-      "Prints phi_I, K_I, the tangent's angle, phi_A, phi_E, phi_G = phi_E - phi_A, L, delta_y, Q_G.\n"
+      "Prints phi_I, K_I, the tangent's angle, phi_A, phi_E, phi_G = phi_E - phi_A, L, delta_y, Q_G, in the document's\n"
+      "convention whatever --at is: phi_I and phi_A in [0, 360), phi_E = phi_A + phi_G (beyond 360 only for a stretch\n"
+      "through 0).\n"
       "Example: koppel curve catalog/entries/mzc-crank-rocker.yaml --point K --straight --qg 0.005 --at 180");
   cmd->add_option("file", args->file, "Mechanism YAML file")->required();
   cmd->add_option("--point", args->point, "The point: a point output (K), link.point, or a point name")->required();

@@ -1,5 +1,7 @@
 #include "koppel/analysis/coupler_curve.hpp"
 
+#include "koppel/core/angles.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -131,6 +133,14 @@ Frame FrameAround(const Mechanism& m, const PointRef& point, double reference, d
   return f;
 }
 
+// Seed 003's convention (coupler_curve.hpp): phi_I and phi_A in [0, 2 pi), phi_E = phi_A + phi_G.
+void ReportInFullTurn(StraightStretch& s) {
+  const double phi_a = WrapToFullTurn(s.phi_a);
+  s.phi_e += phi_a - s.phi_a;
+  s.phi_a = phi_a;
+  s.reference = WrapToFullTurn(s.reference);
+}
+
 void Measure(const Frame& f, int a, int e, StraightStretch& s) {
   const auto [u_lo, u_hi] = std::minmax_element(f.u.begin() + a, f.u.begin() + e + 1);
   const auto [v_lo, v_hi] = std::minmax_element(f.v.begin() + a, f.v.begin() + e + 1);
@@ -144,10 +154,27 @@ void Measure(const Frame& f, int a, int e, StraightStretch& s) {
 
 }  // namespace
 
+bool StretchIsValid(double from, double to, std::string* why) {
+  std::string problem;
+  if (!std::isfinite(from) || !std::isfinite(to)) problem = "the stretch's ends must be finite";
+  else if (!(to > from)) problem = "the stretch must end after its start (a stretch through 0 ends beyond 360 deg: 300:420)";
+  else if (to - from > 2 * kPi) problem = "the stretch must not span more than one turn";
+  if (why) *why = problem;
+  return problem.empty();
+}
+
 StraightStretch StretchBand(const Mechanism& m, const PointRef& point, double reference, double from, double to, double resolution,
                             const ContinuationOptions& continuation) {
   StraightStretch s;
   s.reference = reference;
+  if (!StretchIsValid(from, to, &s.message)) {
+    s.status = AnalysisStatus::kFailed;
+    return s;
+  }
+  // the same stretch a whole number of turns on, around the reference
+  const double turns = std::round((reference - 0.5 * (from + to)) / (2 * kPi));
+  from += 2 * kPi * turns;
+  to += 2 * kPi * turns;
   const Frame f = FrameAround(m, point, reference, std::max(reference - from, resolution), std::max(to - reference, resolution),
                               resolution, continuation);
   if (!f.message.empty()) {
@@ -163,6 +190,7 @@ StraightStretch StretchBand(const Mechanism& m, const PointRef& point, double re
                             }) - f.inputs.begin());
   };
   Measure(f, index_of(from), index_of(to), s);
+  ReportInFullTurn(s);
   s.status = AnalysisStatus::kComplete;
   return s;
 }
@@ -217,6 +245,7 @@ StraightStretch LongestStraightStretch(const Mechanism& m, const PointRef& point
     return best;
   }
   Measure(f, best_a, best_e, best);
+  ReportInFullTurn(best);
   best.status = AnalysisStatus::kComplete;
   return best;
 }

@@ -8,6 +8,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <optional>
+#include <string>
 
 namespace koppel {
 namespace {
@@ -61,6 +63,73 @@ TEST_CASE("seed 003 reading example: Q_G = 0.005", "[curve]") {
   const StraightStretch tight = LongestStraightStretch(Seed003(), {2, 2}, 0.001, kPi, kPi, DegToRad(0.1));
   REQUIRE(tight.ok());
   CHECK(tight.phi_g < s.phi_g);
+}
+
+// Issue 22 item 5: the stretch is reported in seed 003's convention (phi_I = 180 deg, phi_A =
+// 98.3 deg, phi_G = 163.3 deg, so phi_E = 261.6 deg), whatever reference the search starts
+// from: the default (least curvature, found at -180 deg) and +-180 or 540 deg are one point of
+// the crank circle, so they must give the same numbers.
+TEST_CASE("a stretch is reported with phi_I and phi_A in [0, 360) and phi_E = phi_A + phi_G, whatever --at", "[curve]") {
+  // the same stretch sampled from a reference a whole turn away: equal to roundoff of the sweep
+  constexpr double kSameStretch = 1e-9;
+  const Mechanism m = Seed003();
+  const StraightStretch at_180 = LongestStraightStretch(m, {2, 2}, 0.005, kPi, kPi, DegToRad(0.02));
+  REQUIRE(at_180.ok());
+  CHECK(RadToDeg(at_180.reference) == Approx(180).margin(1e-12));
+  CHECK(RadToDeg(at_180.phi_a) == Approx(98.3).margin(0.05));
+  CHECK(RadToDeg(at_180.phi_e) == Approx(98.3 + 163.3).margin(0.1));
+  for (const std::optional<double> reference : {std::optional<double>(), std::optional<double>(-kPi), std::optional<double>(3 * kPi)}) {
+    const StraightStretch s = LongestStraightStretch(m, {2, 2}, 0.005, reference, kPi, DegToRad(0.02));
+    INFO("reference " << (reference ? RadToDeg(*reference) : -1.0) << " deg: " << s.Brief());
+    REQUIRE(s.ok());
+    CHECK(s.reference == Approx(at_180.reference).margin(kSameStretch));
+    CHECK(s.phi_a == Approx(at_180.phi_a).margin(kSameStretch));
+    CHECK(s.phi_e == Approx(at_180.phi_e).margin(kSameStretch));
+    CHECK(s.phi_g == Approx(at_180.phi_g).margin(kSameStretch));
+    CHECK(s.length == Approx(at_180.length).margin(kSameStretch));
+    CHECK(s.band == Approx(at_180.band).margin(kSameStretch));
+  }
+}
+
+TEST_CASE("a stretch through input 0 ends beyond 360 deg; its band does not depend on how it is written", "[curve]") {
+  constexpr double kSameStretch = 1e-9;  // as above: the same points, sampled a turn apart
+  const Mechanism m = Seed003();
+  // K_II at phi = 0 (seed 003): the stretch -20..20 deg around it, written three ways
+  const StraightStretch around_0 = StretchBand(m, {2, 2}, 0, DegToRad(-20), DegToRad(20), DegToRad(0.05));
+  REQUIRE(around_0.ok());
+  CHECK(RadToDeg(around_0.reference) == Approx(0).margin(1e-12));
+  CHECK(RadToDeg(around_0.phi_a) == Approx(340).margin(1e-9));
+  CHECK(RadToDeg(around_0.phi_e) == Approx(380).margin(1e-9));
+  CHECK(RadToDeg(around_0.phi_g) == Approx(40).margin(1e-9));
+  const StraightStretch shifted = StretchBand(m, {2, 2}, 2 * kPi, DegToRad(340), DegToRad(380), DegToRad(0.05));
+  const StraightStretch turned = StretchBand(m, {2, 2}, 0, DegToRad(340), DegToRad(380), DegToRad(0.05));
+  for (const StraightStretch* s : {&shifted, &turned}) {
+    REQUIRE(s->ok());
+    CHECK(s->reference == Approx(around_0.reference).margin(kSameStretch));
+    CHECK(s->phi_a == Approx(around_0.phi_a).margin(kSameStretch));
+    CHECK(s->phi_e == Approx(around_0.phi_e).margin(kSameStretch));
+    CHECK(s->band == Approx(around_0.band).margin(kSameStretch));
+    CHECK(s->length == Approx(around_0.length).margin(kSameStretch));
+  }
+  // K_II is the point farthest from B0 on the symmetry axis (seed 003): the tangent there is
+  // normal to B0 K_II, so the reference point's position is the document's
+  CHECK((around_0.reference_point - Eigen::Vector2d(4, 0)).norm() ==
+        Approx(10.0 / 3 * std::sqrt(6.0) + std::sqrt(2.0) / 3 * (5 * std::sqrt(11.0) - 9 * std::sqrt(3.0))).margin(1e-12));
+  CHECK(std::abs(around_0.tangent.dot((around_0.reference_point - Eigen::Vector2d(4, 0)).normalized())) < 1e-9);
+}
+
+TEST_CASE("a stretch must end after its start, within a turn", "[curve]") {
+  std::string why;
+  CHECK(StretchIsValid(DegToRad(300), DegToRad(420), &why));
+  CHECK(why.empty());
+  CHECK_FALSE(StretchIsValid(DegToRad(20), DegToRad(-20), &why));
+  CHECK_THAT(why, Catch::Contains("end after its start"));
+  CHECK_FALSE(StretchIsValid(DegToRad(0), DegToRad(361), &why));
+  CHECK_THAT(why, Catch::Contains("more than one turn"));
+  // reversed ends are refused, not measured over an empty range
+  const StraightStretch reversed = StretchBand(Seed003(), {2, 2}, kPi, DegToRad(261.66), DegToRad(98.34), DegToRad(0.05));
+  CHECK(reversed.status == AnalysisStatus::kFailed);
+  CHECK_THAT(reversed.message, Catch::Contains("end after its start"));
 }
 
 }  // namespace koppel

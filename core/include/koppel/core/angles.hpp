@@ -13,4 +13,12 @@ inline constexpr double RadToDeg(double radians) { return radians * (180.0 / kPi
 // The signed difference a - b folded into [-pi, pi]: the only way koppel compares angles.
 inline double AngleDifference(double a, double b) { return std::remainder(a - b, 2.0 * kPi); }
 
+// The angle folded into [0, 2 pi): how an input angle of a revolute drive is reported (a
+// rounding that would give 2 pi gives 0).
+inline double WrapToFullTurn(double radians) {
+  double wrapped = std::fmod(radians, 2.0 * kPi);
+  if (wrapped < 0) wrapped += 2.0 * kPi;
+  return wrapped < 2.0 * kPi ? wrapped : 0.0;
+}
+
 }  // namespace koppel

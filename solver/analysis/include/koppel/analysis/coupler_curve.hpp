@@ -38,14 +38,19 @@ Mechanism WithPointOutput(const Mechanism& mechanism, const PointRef& point);
 // 3-point Gauss on the cubic Hermite interpolant of the exact positions and derivatives.
 CouplerCurve TraceCurve(const Mechanism& mechanism, const PointRef& point, const SweepOptions& range);
 
+// A stretch is reported in seed 003's convention, whatever reference the search started from:
+// the inputs of an R drive (radians) with reference (phi_I) and phi_a in [0, 2 pi) and phi_e =
+// phi_a + phi_g > phi_a. A stretch that runs through input 0 is the one case with phi_e >= 2 pi
+// (then phi_I may read less than phi_a: phi_I + 2 pi lies in the stretch). Seed 003's example:
+// phi_I = 180 deg, phi_A = 98.3 deg, phi_G = 163.3 deg, so phi_E = 261.6 deg.
 struct StraightStretch {
   AnalysisStatus status = AnalysisStatus::kNotRun;  // kComplete: a stretch was measured
   std::string message;
-  double reference = 0;                // input of K_I
+  double reference = 0;                // phi_I: input of K_I, in [0, 2 pi)
   Eigen::Vector2d reference_point = Eigen::Vector2d::Zero();
   Eigen::Vector2d tangent = Eigen::Vector2d::UnitX();  // unit direction of g
-  double phi_a = 0, phi_e = 0;         // start and end of the stretch (inputs)
-  double phi_g = 0;                    // phi_e - phi_a
+  double phi_a = 0, phi_e = 0;         // start (in [0, 2 pi)) and end (phi_a + phi_g) of the stretch
+  double phi_g = 0;                    // phi_e - phi_a: the input swept along the stretch, > 0
   double length = 0;                   // L: extent of the stretch along g
   double band = 0;                     // Δy: width of the band parallel to g that holds the stretch
   double qg = 0;                       // band / length
@@ -53,7 +58,13 @@ struct StraightStretch {
   std::string Brief() const;
 };
 
-// Band of a given stretch [from, to] against the tangent at `reference`.
+// A stretch [from, to] of inputs: from < to <= from + 2 pi. *why says what is wrong.
+bool StretchIsValid(double from, double to, std::string* why);
+
+// Band of a given stretch [from, to] against the tangent at `reference`: from < to <= from + 2 pi
+// (a stretch through input 0 is written with to beyond 2 pi, or from below 0), moved by whole
+// turns to lie around `reference`. kFailed (with StretchIsValid's reason) when the stretch is not
+// one.
 StraightStretch StretchBand(const Mechanism& mechanism, const PointRef& point, double reference, double from, double to,
                             double resolution, const ContinuationOptions& continuation = {});
 

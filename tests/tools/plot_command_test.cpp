@@ -4,7 +4,7 @@
 #include "support/run.hpp"
 #include "support/temp_file.hpp"
 #include "support/text.hpp"
-#include "tools/plot/svg_reading.hpp"
+#include "tools/plot/scheme_reading.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -84,6 +84,9 @@ TEST_CASE("draw: scheme, dead centres and trace for the seed mechanisms", "[cli]
   auto doc = Svg(out);
   CHECK(test::Find(doc, "g", "overlay").size() == 2);
   CHECK_THAT(std::string(test::Find(doc, "text", "caption")[0].child_value()), Catch::Contains("φ_a = 102.84°") && Catch::Contains("φ_i = 300.00°"));
+  // issue 22 item 15: "B" and "B_a" printed on top of each other, F without its guide line
+  test::CheckLabelsLegible(doc);
+  CHECK(test::Find(doc, "line", "guide-axis").size() == 1);
   REQUIRE(test::RunKoppel("draw " + test::CatalogEntryPath("proportional-linkage") + " --at 150 -o " + out).exit_code == 0);
   doc = Svg(out);
   CHECK(test::Find(doc, "g", "link").size() == 5);

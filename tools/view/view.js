@@ -35,8 +35,9 @@
       const c = base + +l.dataset.coord, x = q[c], y = q[c + 1], t = q[c + 2];
       const px = +l.dataset.px, py = +l.dataset.py;
       const gx = x + Math.cos(t) * px - Math.sin(t) * py, gy = y + Math.sin(t) * px + Math.cos(t) * py;
-      l.setAttribute('x', (ox + scale * gx + 7).toFixed(2));
-      l.setAttribute('y', (oy - scale * gy - 7).toFixed(2));
+      // the offset koppel's label layout chose for the first pose
+      l.setAttribute('x', (ox + scale * gx + +l.dataset.dx).toFixed(2));
+      l.setAttribute('y', (oy - scale * gy + +l.dataset.dy).toFixed(2));
     }
   }
 

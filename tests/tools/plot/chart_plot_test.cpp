@@ -6,7 +6,31 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <string>
+
 namespace koppel {
+namespace {
+
+// CIE L*a*b* (D65) of an sRGB colour "#rrggbb": IEC 61966-2-1's transfer function, then CIE 1976.
+std::array<double, 3> Lab(const std::string& hex) {
+  REQUIRE(hex.size() == 7);
+  double rgb[3];
+  for (int c = 0; c < 3; ++c) {
+    const double v = std::strtol(hex.substr(1 + 2 * c, 2).c_str(), nullptr, 16) / 255.0;
+    rgb[c] = v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  }
+  const double x = (0.4124 * rgb[0] + 0.3576 * rgb[1] + 0.1805 * rgb[2]) / 0.95047,
+               y = 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2],
+               z = (0.0193 * rgb[0] + 0.1192 * rgb[1] + 0.9505 * rgb[2]) / 1.08883;
+  auto f = [](double t) { return t > 216.0 / 24389 ? std::cbrt(t) : (24389.0 / 27 * t + 16) / 116; };
+  return {116 * f(y) - 16, 500 * (f(x) - f(y)), 200 * (f(y) - f(z))};
+}
+
+}  // namespace
 
 TEST_CASE("crank-rocker chart: one curve per psi0, labelled, a missing design breaks its curve", "[plot]") {
   std::string csv = "phi0,psi0,beta,mu_min,l1,l2,l3,l4\n";
@@ -62,6 +86,44 @@ TEST_CASE("tables that are not charts are refused, naming the file and line", "[
   CHECK_THAT(plot::ChartPlot("phi0,psi0,beta,mu_min\n1,2,3\n", "c.csv").message, Catch::StartsWith("c.csv:2:"));
   CHECK(plot::ChartPlot("a,b\n1,2\n", "c.csv").status == plot::PlotStatus::kFailed);
   CHECK(plot::ChartPlot("", "c.csv").status == plot::PlotStatus::kFailed);
+}
+
+// Issue 22 item 15: with `synth chart`'s default psi0 = 20:100:2 the chart draws nine curves
+// (20, 30, ..., 100 deg) and gave 20 and 100 deg the same colour (an eight-colour palette again).
+TEST_CASE("crank-rocker chart: every psi0 its own colour, lightness rising with psi0", "[plot]") {
+  // a difference of 10 CIE76 units is plain at a glance (2.3 is the just noticeable difference)
+  constexpr double kDistinct = 10;
+  std::string csv = "phi0,psi0,beta,mu_min,l1,l2,l3,l4\n";
+  for (int psi = 20; psi <= 100; psi += 2)
+    for (int phi = 160; phi <= 200; phi += 10) csv += std::to_string(phi) + "," + std::to_string(psi) + ",30,40,1,2,3,4\n";
+  const plot::PlotResult r = plot::ChartPlot(csv, "chart.csv");
+  REQUIRE(r.status == plot::PlotStatus::kComplete);
+  const auto doc = test::ParseSvg(r.svg);
+  for (const auto& panel : test::Find(doc, "g", "panel")) {
+    std::map<double, std::string> colour;  // by psi0
+    for (const auto& c : test::Find(panel, "path", "curve")) {
+      const std::string name = c.attribute("data-name").as_string();  // "ψ0 = 20°"
+      colour[std::stod(name.substr(name.find('=') + 1))] = c.attribute("stroke").as_string();
+    }
+    REQUIRE(colour.size() == 9);
+    CHECK(colour.begin()->first == 20);
+    CHECK(colour.rbegin()->first == 100);
+    for (auto a = colour.begin(); a != colour.end(); ++a) {
+      for (auto b = std::next(a); b != colour.end(); ++b) {
+        const auto la = Lab(a->second), lb = Lab(b->second);
+        INFO("psi0 " << a->first << " (" << a->second << ") and " << b->first << " (" << b->second << ")");
+        CHECK(std::hypot(la[0] - lb[0], la[1] - lb[1], la[2] - lb[2]) >= kDistinct);
+        CHECK(lb[0] > la[0]);  // ordered: a larger psi0 is lighter
+      }
+    }
+    // the legend shows the curves' colours
+    std::map<std::string, std::string> legend;
+    const auto lines = test::Find(panel, "line", "legend-line");
+    const auto labels = test::Find(panel, "text", "legend-label");
+    REQUIRE(lines.size() == labels.size());
+    for (size_t i = 0; i < lines.size(); ++i) legend[labels[i].child_value()] = lines[i].attribute("stroke").as_string();
+    for (const auto& c : test::Find(panel, "path", "curve")) CHECK(legend[c.attribute("data-name").as_string()] == c.attribute("stroke").as_string());
+  }
 }
 
 }  // namespace koppel

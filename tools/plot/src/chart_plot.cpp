@@ -127,14 +127,15 @@ Panel FamilyPanel(const CsvTable& t, int phi0, int y, int family, const std::str
     const size_t n = std::min(kMaxFamily, all.size());
     for (size_t i = 0; i < n; ++i) members.push_back(all[n == 1 ? 0 : i * (all.size() - 1) / (n - 1)]);
   }
-  int colour = 0;
-  for (double member : members) {
+  for (size_t k = 0; k < members.size(); ++k) {
+    const double member = members[k];
     std::vector<Eigen::Vector2d> points;
     for (const auto& r : t.rows)
       if (family < 0 || r[family] == member) points.emplace_back(r[phi0], r[y]);
     Curve c;
     c.name = family < 0 ? "" : family_label + " = " + FormatValue(member) + "°";
-    c.colour = colour++;
+    // a family is ordered: a ramp gives each member its own colour, in the members' order
+    if (family >= 0) c.stroke = RampColour(members.size() == 1 ? 0.0 : static_cast<double>(k) / static_cast<double>(members.size() - 1));
     c.runs = GridRuns(points, step);
     panel.curves.push_back(std::move(c));
   }

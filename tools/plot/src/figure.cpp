@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 namespace koppel::plot {
 namespace {
@@ -26,6 +27,8 @@ const char* kStyle =
     ".marker circle{fill:#fff;stroke:#111;stroke-width:1.4}"
     ".marker.singular circle{fill:#c0392b}.marker.minimum circle{fill:#111}"
         "</style>";
+
+std::string StrokeOf(const Curve& curve) { return curve.stroke.empty() ? kPalette[curve.colour % kPalette.size()] : curve.stroke; }
 
 // Decimals that show every tick exactly (0.25 -> 2, 30 -> 0).
 int DecimalsFor(const Axis& axis) {
@@ -82,7 +85,7 @@ void DrawLegend(Svg& svg, const Mapping& map, const std::vector<Curve>& curves) 
   svg.OpenGroup({{"class", "legend"}});
   for (size_t i = 0; i < named.size(); ++i) {
     const double row = y + 12 + 17.0 * static_cast<double>(i);
-    Attrs style = {{"class", "legend-line"}, {"stroke", kPalette[named[i]->colour % kPalette.size()]}, {"stroke-width", "2"}};
+    Attrs style = {{"class", "legend-line"}, {"stroke", StrokeOf(*named[i])}, {"stroke-width", "2"}};
     if (named[i]->dashed) style.push_back({"stroke-dasharray", "6 3"});
     svg.Line({x, row - 4}, {x + 20, row - 4}, style);
     svg.Text({x + 25, row}, named[i]->name, {{"class", "legend-label"}});
@@ -122,7 +125,7 @@ void DrawPanel(Svg& svg, const Panel& panel, const Mapping& map, int index) {
       runs.emplace_back();
       for (const auto& p : run) runs.back().push_back(map(p));
     }
-    Attrs style = {{"class", "curve"}, {"data-name", curve.name}, {"stroke", kPalette[curve.colour % kPalette.size()]}};
+    Attrs style = {{"class", "curve"}, {"data-name", curve.name}, {"stroke", StrokeOf(curve)}};
     if (curve.dashed) style.push_back({"stroke-dasharray", "6 3"});
     svg.Path(runs, style);
   }
@@ -176,6 +179,21 @@ Axis NiceAxis(const std::string& label, double low, double high, bool degrees, i
   axis.max = std::ceil((high - slack) / step) * step;
   for (double t = axis.min; t <= axis.max + slack; t += step) axis.ticks.push_back(std::abs(t) < slack ? 0.0 : t);
   return axis;
+}
+
+std::string RampColour(double t) {
+  // viridis (matplotlib, van der Walt and Smith 2015) at t = 0, 0.1, ..., 0.8
+  static constexpr std::array<std::array<int, 3>, 9> kViridis = {{{0x44, 0x01, 0x54}, {0x48, 0x24, 0x75}, {0x41, 0x44, 0x87},
+                                                                  {0x35, 0x5f, 0x8d}, {0x2a, 0x78, 0x8e}, {0x21, 0x91, 0x8c},
+                                                                  {0x22, 0xa8, 0x84}, {0x44, 0xbf, 0x70}, {0x7a, 0xd1, 0x51}}};
+  const double at = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * (kViridis.size() - 1);
+  const size_t i = std::min(static_cast<size_t>(at), kViridis.size() - 2);
+  const double f = at - static_cast<double>(i);
+  char hex[8];
+  int rgb[3];
+  for (int c = 0; c < 3; ++c) rgb[c] = static_cast<int>(std::lround((1 - f) * kViridis[i][c] + f * kViridis[i + 1][c]));
+  std::snprintf(hex, sizeof hex, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
+  return hex;
 }
 
 std::string RenderFigure(const Figure& figure) {

@@ -27,8 +27,9 @@ Axis NiceAxis(const std::string& label, double low, double high, bool degrees = 
 struct Curve {
   std::string name;                                // legend entry; empty: no legend entry
   std::vector<std::vector<Eigen::Vector2d>> runs;  // data coordinates; one subpath each
-  int colour = 0;                                  // index into the palette
+  int colour = 0;                                  // index into the palette (8 colours, then again)
   bool dashed = false;
+  std::string stroke;                              // "#rrggbb" instead of the palette (a ramp)
 };
 
 struct Marker {
@@ -67,5 +68,10 @@ struct Figure {
 };
 
 std::string RenderFigure(const Figure& figure);
+
+// The colour at t in [0, 1] (clamped) of an ordered family of curves: viridis, perceptually
+// uniform with lightness rising with t, its lightest tenths (yellow on white) left out. For a
+// family parameter, unlike the palette, whose ninth colour is its first again.
+std::string RampColour(double t);
 
 }  // namespace koppel::plot

@@ -68,7 +68,9 @@
     const axes = [{ label: data.input_label }, { scale: 'y', label: chart.series[0].label }];
     if (chart.series.length > 1) axes.push({ scale: 'd', side: 1, grid: { show: false }, label: 'derivatives' });
     const u = new uPlot({
-      width: 560, height: 200, series: series, axes: axes, legend: { show: true },
+      // height: the whole chart; the x axis with its label takes about 100 px of it, leaving the
+      // plot area about 260 px (the floor: 240)
+      width: 560, height: 360, series: series, axes: axes, legend: { show: true },
       scales: { x: { time: false } },
       cursor: { drag: { x: false, y: false } },
     }, columns, box);

@@ -2,7 +2,8 @@
 // slider-crank (seed 000), the six-link proportional linkage with three sliders (seed 001) and
 // the crank-rocker with a coupler curve (seed 003): the page is small, makes no network request,
 // logs no error, the animation moves the drawn mechanism, the screenshot is not blank, and the
-// input slider moves the charts' cursors to the input it shows.
+// input slider moves the charts' cursors to the input it shows; every chart's plot area is at
+// least 240 px tall.
 //
 // usage: node page_test.mjs KOPPEL NODE_MODULES_DIR CHROMIUM CATALOG_DIR
 import { createRequire } from 'node:module';
@@ -64,6 +65,13 @@ try {
     }
     const share = ink / (png.width * png.height);
     check(share > 0.02 && colours.size > 20, `${id}: screenshot looks blank (${(100 * share).toFixed(2)} % ink, ${colours.size} colours)`);
+
+    // issue 22 item 15: the charts' plot areas were about 100 px tall; at least 240 px
+    const kMinPlotHeight = 240;
+    const heights = await page.evaluate(() =>
+      Array.from(document.querySelectorAll('.chart .u-over')).map((o) => o.getBoundingClientRect().height));
+    check(heights.length > 0, `${id}: no chart on the page`);
+    for (const h of heights) check(h >= kMinPlotHeight, `${id}: a chart's plot area is ${h} px tall, less than ${kMinPlotHeight}`);
 
     // moving the slider moves the cursor to the input it shows
     await page.click('#play');  // pause

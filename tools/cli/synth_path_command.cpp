@@ -97,28 +97,30 @@ void Run(const Args& args) {
   t.columns = {"rank", "error", "A0_x", "A0_y", "B0_x", "B0_y", "crank", "coupler", "rocker", "frame", "K_along", "K_left"};
   std::string csv;
   for (size_t i = 0; i < t.columns.size(); ++i) csv += t.columns[i] + ",";
-  csv += "grashof\n";
+  csv += "grashof,cognate_of\n";
   if (!args.dir.empty()) std::filesystem::create_directories(args.dir);
   for (size_t i = 0; i < result.linkages.size(); ++i) {
     const PathLinkage& l = result.linkages[i];
     for (double v : {static_cast<double>(i + 1), l.error, l.geometry.a0.x(), l.geometry.a0.y(), l.geometry.b0.x(), l.geometry.b0.y(), l.crank, l.coupler,
                      l.rocker, l.frame, l.coupler_point.x(), l.coupler_point.y()})
       csv += FormatNumber(v) + ",";
-    csv += std::string(ToString(l.grashof)) + "\n";
+    // a Roberts cognate of a better row: that row's rank
+    csv += std::string(ToString(l.grashof)) + "," + (l.cognate_of >= 0 ? std::to_string(l.cognate_of + 1) : "") + "\n";
     if (!args.dir.empty()) {
       Mechanism m = l.mechanism;
       m.name = fmt::format("path-{}", i + 1);
       const std::string comment = fmt::format(
           "Linkage {} of koppel synth path {} --atlas {}: its coupler point P passes the points with an RMS distance of {:.6g}\n"
-          "(atlas curve {} of seed {}, polished by the fit through this mechanism: {}). Grashof type {}.",
-          i + 1, args.points, args.atlas, l.error, l.source.index, l.source.seed, l.fit.substr(0, 200), ToString(l.grashof));
+          "(atlas curve {} of seed {}, polished by the fit through this mechanism: {}). Grashof type {}.{}",
+          i + 1, args.points, args.atlas, l.error, l.source.index, l.source.seed, l.fit.substr(0, 200), ToString(l.grashof),
+          l.cognate_of >= 0 ? fmt::format("\nA Roberts cognate of linkage {}: the same coupler curve from another four-bar.", l.cognate_of + 1) : "");
       const double from = RadToDeg(m.hint.input);
       WriteOutput((std::filesystem::path(args.dir) / (m.name + ".yaml")).string(), WriteMechanismYaml(m, comment, {from, from + 360, 1}));
     }
   }
   WriteOutput(args.out, csv);
-  std::cerr << fmt::format("koppel synth path: {} points, {} atlas curves; best RMS distance {:.3g}\n", request.points.size(), atlas.entries().size(),
-                           result.linkages.front().error);
+  std::cerr << fmt::format("koppel synth path: {} points, {} atlas curves; best RMS distance {:.3g}; {} repeats of a better design dropped\n",
+                           request.points.size(), atlas.entries().size(), result.linkages.front().error, result.duplicates);
 }
 
 }  // namespace
@@ -133,7 +135,10 @@ void AddPathSubcommand(CLI::App& synth) {
       "pre-polished in closed form, and the best --top are polished by the least-squares fit through the real mechanism\n"
       "with each point's crank angle free. One CSV row per linkage, best first: rank, error (the RMS distance of the\n"
       "points from the polished coupler curve, in the points' unit), the pivots, crank A0A, coupler AB, rocker B0B,\n"
-      "frame A0B0, the coupler point K in the coupler's frame (along A -> B, and left of it), the Grashof type.\n"
+      "frame A0B0, the coupler point K in the coupler's frame (along A -> B, and left of it), the Grashof type, and\n"
+      "cognate_of: the rank of the better row whose Roberts cognate this is (the same curve from another four-bar).\n"
+      "Each row is a distinct design: one found again from another atlas curve (the same joints where K passes the\n"
+      "first point, to 1e-4 of the points' size, either pivot as the crank's) is dropped and the next candidate polished.\n"
       "--open matches an open stretch against the arcs of rocker-driven four-bars. -o DIR writes each as a mechanism file.\n"
       "Example: koppel synth path points.csv --atlas atlas.bin --top 5 -o linkages");
   cmd->add_option("points", args->points, "POINTS.csv (header x,y)")->required();

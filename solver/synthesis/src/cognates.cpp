@@ -91,6 +91,19 @@ Expected<FourBarJoints> IdentifyFourBar(const Mechanism& m) {
   return joints;
 }
 
+std::optional<std::array<FourBarPose, 2>> CognatePoses(const FourBarPose& o) {
+  auto z = [](const Eigen::Vector2d& v) { return Complex(v.x(), v.y()); };
+  const Complex a0 = z(o.a0), a = z(o.a), b = z(o.b), b0 = z(o.b0), k = z(o.k);
+  if (std::abs(b - a) == 0) return std::nullopt;
+  // K = A + r (B - A); the frame triangle A0 B0 C0 is similar to A B K
+  const Complex r = (k - a) / (b - a);
+  if (std::abs(1.0 - r) < 1e-12 || std::abs(r) < 1e-12) return std::nullopt;
+  const Complex c0 = a0 + r * (b0 - a0);
+  const Complex a1 = a0 + r * (b - a), c1 = a1 + r * (a - a0);
+  const Complex c2 = c0 + (1.0 - r) * (a - a0), b2 = b0 + (r - 1.0) * (b - a);
+  return std::array<FourBarPose, 2>{FourBarPose{o.a0, V(a1), V(c1), V(c0), o.k}, FourBarPose{V(c0), V(c2), V(b2), o.b0, o.k}};
+}
+
 Cognates RobertsCognates(const Mechanism& m, const PointRef& point) {
   Cognates c;
   c.status = DesignStatus::kInvalidRequest;
@@ -127,14 +140,14 @@ Cognates RobertsCognates(const Mechanism& m, const PointRef& point) {
     c.message = "the coupler joints coincide";
     return c;
   }
-  const Complex r = (k - a) / (b - a);
-  const Complex c0 = a0 + r * (b0 - a0);
-  const Complex a1 = a0 + r * (b - a), c1 = a1 + r * (a - a0);
-  const Complex c2 = c0 + (1.0 - r) * (a - a0), b2 = b0 + (r - 1.0) * (b - a);
-  if (std::abs(1.0 - r) < 1e-12 || std::abs(r) < 1e-12) {
+  const std::optional<std::array<FourBarPose, 2>> poses = CognatePoses({V(a0), V(a), V(b), V(b0), V(k)});
+  if (!poses) {
     c.message = "the coupler point coincides with a coupler joint: its cognates degenerate";
     return c;
   }
+  auto z = [](const Eigen::Vector2d& v) { return Complex(v.x(), v.y()); };
+  const Complex c0 = z((*poses)[0].b0), a1 = z((*poses)[0].a), c1 = z((*poses)[0].b);
+  const Complex c2 = z((*poses)[1].a), b2 = z((*poses)[1].b);
   const double input = m.hint.input;
   // cognate 1's crank turns with the original coupler: its input is that coupler's direction
   c.first = BuildFourBar(m.name + "-cognate-1", "A0", a0, "A1", a1, "C1", c1, "C0", c0, k, std::arg(a1 - a0));

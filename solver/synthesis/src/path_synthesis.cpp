@@ -216,7 +216,12 @@ std::optional<PathLinkage> Polish(const Placed& placed, const Candidate& c, cons
   options.length_tolerance = 1e-9 * scale;  // only the report's verdict: the error is what counts
   const FitReport fit = Fit(builder, parameters, targets, options);
   if (fit.values.empty()) return std::nullopt;
-  const std::optional<FourBarGeometry> g = placement.Geometry(fit.values);
+  // the pose where K passes nearest the first point (the fit moved its crank angle there on the
+  // assembly's branch): the same pose for the same design, whichever candidate it came from
+  Placement at_first = placement;
+  if (!fit.targets.empty()) at_first.phi = fit.targets.front().input;
+  std::optional<FourBarGeometry> g = at_first.Geometry(fit.values);
+  if (!g) g = placement.Geometry(fit.values);
   if (!g) return std::nullopt;
   PathLinkage l;
   double sum = 0;
@@ -250,7 +255,51 @@ void OnEveryCore(size_t n, int threads_wanted, const std::function<void(size_t)>
   for (std::thread& t : pool) t.join();
 }
 
+// The candidates in `order` polished from `next` on, `count` of them, on every core.
+void PolishBatch(const AtlasIndex& atlas, const PathRequest& request, double scale, const std::vector<Candidate>& candidates,
+                 const std::vector<std::optional<Placed>>& placed, const std::vector<size_t>& order, size_t next, size_t count,
+                 std::vector<PathLinkage>* polished) {
+  std::vector<std::optional<PathLinkage>> batch(count);
+  OnEveryCore(count, request.threads, [&](size_t i) {
+    const Candidate& c = candidates[order[next + i]];
+    batch[i] = Polish(*placed[order[next + i]], c, atlas.entries()[c.entry], request, scale);
+  });
+  for (auto& l : batch)
+    if (l) polished->push_back(std::move(*l));
+}
+
 }  // namespace
+
+FourBarPose PathLinkage::Pose() const { return {geometry.a0, geometry.a, geometry.b, geometry.b0, geometry.plane_origin}; }
+
+bool SameFourBar(const FourBarPose& x, const FourBarPose& y, double tolerance) {
+  auto close = [&](const Eigen::Vector2d& p, const Eigen::Vector2d& q) { return (p - q).norm() <= tolerance; };
+  if (!close(x.k, y.k)) return false;
+  const bool in_order = close(x.a0, y.a0) && close(x.a, y.a) && close(x.b, y.b) && close(x.b0, y.b0);
+  const bool reversed = close(x.a0, y.b0) && close(x.a, y.b) && close(x.b, y.a) && close(x.b0, y.a0);
+  return in_order || reversed;
+}
+
+std::vector<PathLinkage> DistinctLinkages(std::vector<PathLinkage> by_error, double tolerance, int* dropped) {
+  std::vector<PathLinkage> kept;
+  int repeats = 0;
+  for (PathLinkage& l : by_error) {
+    const FourBarPose pose = l.Pose();
+    const bool repeat = std::any_of(kept.begin(), kept.end(), [&](const PathLinkage& k) { return SameFourBar(pose, k.Pose(), tolerance); });
+    if (repeat) {
+      ++repeats;
+      continue;
+    }
+    l.cognate_of = -1;
+    for (size_t i = 0; i < kept.size() && l.cognate_of < 0; ++i)
+      if (const auto cognates = CognatePoses(kept[i].Pose()))
+        for (const FourBarPose& c : *cognates)
+          if (SameFourBar(pose, c, tolerance)) l.cognate_of = static_cast<int>(i);
+    kept.push_back(std::move(l));
+  }
+  if (dropped) *dropped = repeats;
+  return kept;
+}
 
 const char* ToString(PathStatus status) {
   switch (status) {
@@ -329,16 +378,19 @@ PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
   for (size_t i = 0; i < placed.size(); ++i)
     if (placed[i]) order.push_back(i);
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return placed[a]->error < placed[b]->error; });
-  if (order.size() > static_cast<size_t>(request.top)) order.resize(request.top);
-  std::vector<std::optional<PathLinkage>> polished(order.size());
-  OnEveryCore(order.size(), request.threads, [&](size_t i) {
-    const Candidate& c = candidates[order[i]];
-    polished[i] = Polish(*placed[order[i]], c, atlas.entries()[c.entry], request, scale);
-  });
-  for (auto& l : polished)
-    if (l) result.linkages.push_back(std::move(*l));
-  std::stable_sort(result.linkages.begin(), result.linkages.end(), [](const PathLinkage& a, const PathLinkage& b) { return a.error < b.error; });
-  if (result.linkages.size() > static_cast<size_t>(request.top)) result.linkages.resize(request.top);
+  // the best `top` polished through the mechanism; where some repeat a better design, the next
+  // ones too (twice as many as are missing, to need few rounds), until `top` distinct designs
+  const size_t top = static_cast<size_t>(request.top);
+  std::vector<PathLinkage> polished;
+  for (size_t next = 0, missing = top; missing > 0 && next < order.size();) {
+    const size_t count = std::min(order.size() - next, next == 0 ? top : 2 * missing);
+    PolishBatch(atlas, request, scale, candidates, placed, order, next, count, &polished);
+    next += count;
+    std::stable_sort(polished.begin(), polished.end(), [](const PathLinkage& a, const PathLinkage& b) { return a.error < b.error; });
+    result.linkages = DistinctLinkages(polished, kSameDesign * scale, &result.duplicates);
+    missing = top - std::min(top, result.linkages.size());
+  }
+  if (result.linkages.size() > top) result.linkages.resize(top);
   if (result.linkages.empty()) {
     result.status = PathStatus::kNoCandidate;
     result.message = fmt::format("none of the {} nearest atlas curves could be polished onto the points", candidates.size());

@@ -11,7 +11,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <complex>
 #include <random>
 
 namespace koppel {
@@ -137,6 +140,103 @@ TEST_CASE("path requests without enough points are refused", "[path]") {
   CHECK(SynthesisePath(CiAtlas(), r).status == PathStatus::kInvalidRequest);
   r.points = {{0, 0}, {0, 0}, {0, 0}, {0, 0}};
   CHECK_FALSE(SynthesisePath(CiAtlas(), r).ok());
+}
+
+// Issue 22 item 15: `synth path --top 3` listed the same four-bar three times (candidates from
+// different atlas curves polish to the same linkage). The result holds distinct designs: checked
+// here on what tells two four-bars apart whatever their pose (the frame pivots as a pair and the
+// link lengths); a row named a cognate traces the same curve from other pivots: C0 = A0 + r (B0 -
+// A0) with K = A + r (B - A) (Roberts-Chebyshev), and it passes the points (independent trace).
+TEST_CASE("path synthesis returns distinct designs and names the cognates", "[path]") {
+  constexpr double kDistinct = 1e-6;  // far above the polish's agreement (1e-11 for exact points)
+  PathRequest r;
+  r.points = CurvePoints(HandPicked(), 24);
+  r.top = 3;
+  const PathResult result = SynthesisePath(CiAtlas(), r);
+  REQUIRE(result.ok());
+  REQUIRE(result.linkages.size() == 3);
+  CHECK(result.duplicates > 0);  // the repro: the same four-bar was found more than once
+  auto lengths = [](const PathLinkage& l) {
+    std::array<double, 4> v = {l.crank, l.coupler, l.rocker, l.frame};
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  for (size_t i = 0; i < result.linkages.size(); ++i)
+    for (size_t j = i + 1; j < result.linkages.size(); ++j) {
+      const PathLinkage &a = result.linkages[i], &b = result.linkages[j];
+      const double pivots = std::min(std::max((a.geometry.a0 - b.geometry.a0).norm(), (a.geometry.b0 - b.geometry.b0).norm()),
+                                     std::max((a.geometry.a0 - b.geometry.b0).norm(), (a.geometry.b0 - b.geometry.a0).norm()));
+      double size = 0;
+      for (int k = 0; k < 4; ++k) size = std::max(size, std::abs(lengths(a)[k] - lengths(b)[k]));
+      INFO("rows " << i + 1 << " and " << j + 1);
+      CHECK(std::max(pivots, size) > kDistinct);
+    }
+  // the original comes first; its cognate on B0 (a crank-rocker too) is named as such
+  const PathLinkage& best = result.linkages.front();
+  CHECK(best.cognate_of < 0);
+  CHECK((best.geometry.a0 - HandPicked().a0).norm() < kDistinct);
+  CHECK((best.geometry.b0 - HandPicked().b0).norm() < kDistinct);
+  int named = 0;
+  for (const PathLinkage& l : result.linkages) {
+    if (l.cognate_of < 0) continue;
+    ++named;
+    REQUIRE(l.cognate_of < static_cast<int>(&l - result.linkages.data()));
+    const FourBarGeometry& o = result.linkages[l.cognate_of].geometry;
+    const std::complex<double> a0(o.a0.x(), o.a0.y()), a(o.a.x(), o.a.y()), b(o.b.x(), o.b.y()), b0(o.b0.x(), o.b0.y()),
+        k(o.plane_origin.x(), o.plane_origin.y());
+    const std::complex<double> c0 = a0 + (k - a) / (b - a) * (b0 - a0);
+    const Eigen::Vector2d c0v(c0.real(), c0.imag());
+    const bool on_c0 = (l.geometry.a0 - c0v).norm() < kDistinct || (l.geometry.b0 - c0v).norm() < kDistinct;
+    CHECK(on_c0);
+    CHECK(WorstDistance(l.mechanism, r.points) <= kMatched);
+  }
+  CHECK(named == 1);
+}
+
+namespace {
+
+// A linkage of the hand-picked four-bar in the pose given, for the de-duplication rule.
+PathLinkage Linkage(const FourBarPose& p) {
+  PathLinkage l;
+  l.geometry.a0 = p.a0;
+  l.geometry.a = p.a;
+  l.geometry.b = p.b;
+  l.geometry.b0 = p.b0;
+  l.geometry.plane_origin = p.k;
+  return l;
+}
+
+}  // namespace
+
+TEST_CASE("the same design: joints in order or reversed; a mirror image or a shifted joint is another", "[path]") {
+  const FourBarGeometry g = HandPicked();
+  const FourBarPose original{g.a0, g.a, g.b, g.b0, g.plane_origin};
+  const double tolerance = 1e-6;
+  FourBarPose nudged = original;
+  nudged.b += Eigen::Vector2d(3e-7, -2e-7);  // within the tolerance
+  const FourBarPose reversed{g.b0, g.b, g.a, g.a0, g.plane_origin};  // the rocker's pivot as the crank's
+  auto mirror = [](Eigen::Vector2d v) { return Eigen::Vector2d(v.x(), -v.y()); };
+  const FourBarPose mirrored{mirror(g.a0), mirror(g.a), mirror(g.b), mirror(g.b0), mirror(g.plane_origin)};
+  FourBarPose moved = original;
+  moved.a += Eigen::Vector2d(1e-3, 0);
+  CHECK(SameFourBar(original, nudged, tolerance));
+  CHECK(SameFourBar(original, reversed, tolerance));
+  CHECK_FALSE(SameFourBar(original, mirrored, tolerance));
+  CHECK_FALSE(SameFourBar(original, moved, tolerance));
+  const auto cognates = CognatePoses(original);
+  REQUIRE(cognates);
+  CHECK_FALSE(SameFourBar(original, (*cognates)[1], tolerance));
+
+  // best first: original, its repeat, its reversed repeat, a cognate, the mirror image
+  int dropped = -1;
+  const std::vector<PathLinkage> kept = DistinctLinkages(
+      {Linkage(original), Linkage(nudged), Linkage(reversed), Linkage((*cognates)[1]), Linkage(mirrored)}, tolerance, &dropped);
+  CHECK(dropped == 2);
+  REQUIRE(kept.size() == 3);
+  CHECK(kept[0].cognate_of == -1);
+  CHECK(kept[1].cognate_of == 0);   // the cognate on C0 and B0
+  CHECK(kept[2].cognate_of == -1);  // the mirror image traces the mirrored curve
+  CHECK((kept[1].geometry.a0 - (*cognates)[1].a0).norm() == 0);
 }
 
 }  // namespace koppel

@@ -16,6 +16,10 @@
 #include "koppel/core/mechanism.hpp"
 #include "koppel/synthesis/design_status.hpp"
 
+#include <Eigen/Core>
+
+#include <array>
+#include <optional>
 #include <string>
 
 namespace koppel {
@@ -46,5 +50,16 @@ struct Cognates {
 
 // `point` is the coupler point (on the coupler link). Assembles the original at its hint.
 Cognates RobertsCognates(const Mechanism& m, const PointRef& point);
+
+// A four-bar in one pose: the joints in loop order (crank pivot, crank-coupler, coupler-rocker,
+// rocker pivot) and the coupler point K, global.
+struct FourBarPose {
+  Eigen::Vector2d a0 = Eigen::Vector2d::Zero(), a = Eigen::Vector2d::Zero(), b = Eigen::Vector2d::Zero(),
+                  b0 = Eigen::Vector2d::Zero(), k = Eigen::Vector2d::Zero();
+};
+
+// The two cognates in the same pose (the formulas above): {A0 A1 C1 C0, C0 C2 B2 B0}, each with
+// the original's K. nullopt where they degenerate (K on A or B, or A on B).
+std::optional<std::array<FourBarPose, 2>> CognatePoses(const FourBarPose& original);
 
 }  // namespace koppel

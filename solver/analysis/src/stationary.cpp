@@ -65,4 +65,36 @@ StationaryPoint RefineStationary(const Mechanism& m, int output, int component, 
   return Failed(result, "Newton on the first-order transfer function did not converge");
 }
 
+StationaryPoint RefineFold(const Mechanism& m, int output, double fold, double input, const Eigen::VectorXd& q, double bracket_low,
+                           double bracket_high, const StationaryOptions& options) {
+  StationaryPoint result;
+  std::string why;
+  if (!options.IsValid(&why)) return Failed(result, "invalid options: " + why);
+  PositionSolver solver(m);
+  Continuation path(solver, options.continuation);
+  if (!path.Start(input, q).ok()) return Failed(result, "the starting pose does not solve");
+  const int column = OutputColumn(m, output, 0, 1);
+  std::vector<double> derivatives(solver.OutputWidth(1));
+  for (int it = 0; it < options.max_iterations; ++it) {
+    solver.OutputDerivatives(path.Series(1), 1, derivatives.data());
+    const double y = derivatives[column], y1 = derivatives[column + 1];
+    result.iterations = it;
+    if (y1 == 0.0) return Failed(result, "the output is stationary here: no fold");
+    // Newton on h = sign(y') (y - fold) with h' = |y'|
+    const double step = -(y1 > 0 ? y - fold : fold - y) / std::abs(y1);
+    if (std::abs(step) <= options.input_tolerance) {
+      result.status = AnalysisStatus::kComplete;
+      result.input = path.input();
+      result.value = y;
+      result.q = path.q();
+      return result;
+    }
+    const double next = path.input() + step;
+    if (next < bracket_low || next > bracket_high) return Failed(result, "no fold in the bracket");
+    const WalkReport moved = path.AdvanceTo(next, options.max_step);
+    if (!moved.ok()) return Failed(result, "the branch ends before the fold: " + moved.message);
+  }
+  return Failed(result, "Newton on the folded output did not converge");
+}
+
 }  // namespace koppel

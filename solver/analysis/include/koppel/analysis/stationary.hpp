@@ -41,4 +41,13 @@ struct StationaryOptions {
 StationaryPoint RefineStationary(const Mechanism& mechanism, int output, int component, double input,
                                  const Eigen::VectorXd& q, const StationaryOptions& options = {});
 
+// Refines a fold of an output that is folded onto a bound: a transmission angle, folded to
+// 0..90 deg, has a kink where the angle it folds passes 90 deg (a maximum, y' jumps from + to -)
+// or 0 (a minimum, at a singular position). There y = `fold` and y' changes sign without
+// vanishing: Newton on h = sign(y') (y - fold), whose slope |y'| is regular on both sides,
+// starting from a converged pose q at `input`. Found only within `bracket_low` .. `bracket_high`
+// (a step of Newton leaving that interval ends the search); `second` is 0 in the result.
+StationaryPoint RefineFold(const Mechanism& mechanism, int output, double fold, double input, const Eigen::VectorXd& q,
+                           double bracket_low, double bracket_high, const StationaryOptions& options = {});
+
 }  // namespace koppel

@@ -41,6 +41,7 @@ struct Case {
   std::vector<double> dead_centres, dead_values;  // extended, folded
   std::function<double(double)> mu;
   std::vector<double> mu_places;  // where mu is stationary (0, 180 deg) or folds at 90 deg
+  std::array<double, 4> bars{};   // crank-rocker: a, b, c, d
 };
 
 // Away from the change point and from two extremes of mu within a few search steps.
@@ -67,6 +68,7 @@ bool RandomCrankRocker(std::mt19937& rng, Case& c) {
   c.stroke_output = 1;
   c.mu_output = 3;
   c.output_is_angle = true;
+  c.bars = {a, b, cc, d};
   const test::CrankRockerDeadCentre ext = test::CrankRockerExtended(a, b, cc, d), fold = test::CrankRockerFolded(a, b, cc, d);
   c.dead_centres = {ext.phi, fold.phi};
   c.dead_values = {ext.psi, fold.psi};
@@ -197,6 +199,33 @@ void CheckTransmissionExtremes(const Case& c, const Placement& p) {
 }
 
 }  // namespace
+
+// The references themselves against the independent circle-intersection four-bar
+// (test::FourBarRocker): mu is the angle between coupler and rocker folded to 0..90 deg, the
+// rocker stands still (psi' = 0) at the dead centres with the rocker angle given.
+TEST_CASE("the crank-rocker closed forms agree with the circle-intersection four-bar", "[stationary]") {
+  std::mt19937 rng(7);
+  for (int tested = 0; tested < 50;) {
+    Case c;
+    if (!RandomCrankRocker(rng, c)) continue;
+    ++tested;
+    const auto [a, b, cc, d] = c.bars;
+    for (double phi = 0; phi < kTurn; phi += 0.37) {
+      const auto r = test::FourBarRocker(a, b, cc, d, phi, 1);
+      REQUIRE(r);
+      const Eigen::Vector2d a_point(a * std::cos(phi), a * std::sin(phi)), b0(d, 0);
+      const double between = std::acos((r->b - a_point).normalized().dot((r->b - b0).normalized()));
+      CHECK(c.mu(phi) == Approx(std::min(between, kPi - between)).margin(1e-12));
+    }
+    for (size_t k = 0; k < 2; ++k) {
+      const auto r = test::FourBarRocker(a, b, cc, d, c.dead_centres[k], 1);
+      REQUIRE(r);
+      CHECK(std::abs(r->psi1) < 1e-7);  // psi' = 0 there (the acos of a near-tangent loses digits)
+      CHECK(std::abs(AngleDifference(r->psi, c.dead_values[k])) < 1e-12);
+    }
+    for (double fold : test::CrankRockerMuFolds(a, b, cc, d)) CHECK(c.mu(fold) == Approx(kPi / 2).margin(1e-7));
+  }
+}
 
 TEST_CASE("dead centres and transmission extremes on the search boundary: 1000 random crank-rockers and slider-cranks",
           "[stationary][property]") {

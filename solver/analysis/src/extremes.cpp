@@ -14,6 +14,10 @@ namespace {
 // Extremes closer in value than this (rad, or times the length scale) are one extreme: the
 // refinement leaves roundoff of ~1e-15 in the value, ties of a symmetric mechanism are exact.
 constexpr double kSameValue = 1e-12;
+// A sample may lie this far (rad, or times the length scale) beyond a refined extreme by roundoff:
+// samples inside a branch-point window are the window's interpolant (~1e-10). A missed extreme
+// lies beyond by about y'' step^2 / 8, orders of magnitude more.
+constexpr double kSampleSlack = 1e-9;
 
 std::string Where(const Mechanism& m, double input) {
   char text[96];
@@ -54,6 +58,7 @@ const char* ToString(ExtremeKind kind) {
     case ExtremeKind::kStationary: return "stationary";
     case ExtremeKind::kFold: return "fold";
     case ExtremeKind::kRangeEnd: return "range end";
+    case ExtremeKind::kConstant: return "constant";
   }
   return "stationary";
 }
@@ -69,22 +74,29 @@ OutputExtremes ExtremesOf(const Mechanism& m, int output, const StationarySearch
   r.sweep = EventsOf(s.sweep);
   r.message = s.sweep.message;
   if (s.sweep.inputs.empty()) return Failed(r, s.sweep.message.empty() ? "no sample to search" : s.sweep.message);
+  const double same = kSameValue * (m.OutputIsAngle(output) ? 1.0 : LengthScale(m));
+  r.status = s.sweep.complete() ? AnalysisStatus::kComplete : AnalysisStatus::kPartial;
+  if (s.constant) {
+    r.minimum = r.maximum = {s.sweep.inputs[0], s.sweep.outputs(0, s.column), ExtremeKind::kConstant};
+    return r;
+  }
+  if (s.period > 0 && std::abs(s.turn_gain) > same)
+    return Failed(r, "the output turns with the drive: over whole turns it has no least and largest value");
   if (!s.unresolved.empty())
     return Failed(r, "y' changes sign near " + Where(m, s.unresolved.front()) + " at neither a stationary point nor a fold: " +
                          s.unresolved_message);
   const std::vector<OutputExtreme> all = Candidates(s);
-  if (all.empty()) return Failed(r, "the output has no extreme over whole turns of the drive (it turns with it)");
-  const double same = kSameValue * (m.OutputIsAngle(output) ? 1.0 : LengthScale(m));
+  if (all.empty()) return Failed(r, "the output has no extreme over whole turns of the drive");
   Choose(all, same, r);
   // every sample lies between the extremes, or one was missed (a root of y' between two samples
   // with y' of one sign at both): then say so rather than give a wrong extreme
+  const double slack = kSampleSlack * (m.OutputIsAngle(output) ? 1.0 : LengthScale(m));
   const Eigen::Index rows = s.sweep.outputs.rows();
   for (Eigen::Index i = 0; i < rows; ++i) {
     const double v = s.sweep.outputs(i, s.column);
-    if (v < r.minimum.value - same || v > r.maximum.value + same)
+    if (v < r.minimum.value - slack || v > r.maximum.value + slack)
       return Failed(r, "the sample at " + Where(m, s.sweep.inputs[i]) + " lies beyond the extremes found: refine the step");
   }
-  r.status = s.sweep.complete() ? AnalysisStatus::kComplete : AnalysisStatus::kPartial;
   return r;
 }
 

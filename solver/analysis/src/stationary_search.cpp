@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace koppel {
 namespace {
@@ -16,6 +17,9 @@ namespace {
 constexpr double kSameInput = 1e-9;
 // Neighbouring samples are one step apart; this much more is roundoff of from + i step, not a gap.
 constexpr double kStepSlack = 1e-6;
+// An output whose samples all lie within this of each other (rad; a length: times the length
+// scale) is constant: solver roundoff is ~1e-13 of the size.
+constexpr double kConstantOutput = 1e-12;
 // Whole turns tried for the period of a rotating drive (as ranges.hpp's max_turns).
 constexpr int kMaxTurns = 4;
 
@@ -60,6 +64,8 @@ class Searcher {
     s_.period = Period();
     s_.window = direction_ > 0 ? range_.from : range_.from - s_.period;
     const int used = UsedSamples();
+    s_.constant = Constant(used);
+    if (s_.constant) return;
     for (int i = 0; i + 1 < used; ++i) {
       if (Adjacent(i, i + 1) && SignChange(Slope(i), Slope(i + 1))) Resolve({i, i + 1, false});
     }
@@ -84,8 +90,9 @@ class Searcher {
   bool Adjacent(int i, int j) const { return std::abs(Input(j) - Input(i)) <= s_.step * (1 + kStepSlack); }
 
   // The period of the pose when the range covers whole turns of a rotating drive: the pose one
-  // turn (or k turns) on from the first sample is the first sample's pose. 0 otherwise.
-  double Period() const {
+  // turn (or k turns) on from the first sample is the first sample's pose. 0 otherwise. Records
+  // what the output gains over the period (an output that turns with the drive gains 2 pi k).
+  double Period() {
     const SweepResult& sweep = s_.sweep;
     if (!m_.InputIsAngle() || !sweep.complete() || sweep.inputs.empty()) return 0.0;
     PositionSolver solver(m_);
@@ -96,9 +103,20 @@ class Searcher {
       Continuation path(solver, range_.continuation);
       if (!path.Start(Input(last), Pose(last)).ok()) return 0.0;
       if (!path.AdvanceTo(range_.from + direction_ * turn, s_.step).ok()) return 0.0;
-      if (SamePose(path.q(), Pose(0), solver.system().length_scale())) return turn;
+      if (SamePose(path.q(), Pose(0), solver.system().length_scale())) {
+        std::vector<double> y(solver.OutputWidth(0));
+        solver.OutputDerivatives(path.Series(0), 0, y.data());
+        s_.turn_gain = y[OutputColumn(m_, output_, component_, 0)] - s_.sweep.outputs(0, s_.column);
+        return turn;
+      }
     }
     return 0.0;
+  }
+
+  bool Constant(int used) const {
+    const auto y = s_.sweep.outputs.col(s_.column).head(used);
+    const double scale = m_.OutputIsAngle(output_) ? 1.0 : LengthScale(m_);
+    return y.maxCoeff() - y.minCoeff() <= kConstantOutput * scale;
   }
 
   // The samples searched: a periodic search stops before the first sample's repeat.

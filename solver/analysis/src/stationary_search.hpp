@@ -32,6 +32,10 @@ struct StationarySearch {
   // > 0: the range covers whole turns of a pose that repeats after `period`; every input below
   // is then reported in [window, window + period) (modulo the period).
   double period = 0, window = 0;
+  double turn_gain = 0;  // periodic: y one period on minus y at the start (2 pi k for an output that turns)
+  // The output does not change over the range (within 1e-12 rad, or of the length scale): it
+  // has no isolated stationary point, and none is searched for.
+  bool constant = false;
   std::vector<StationaryPoint> points;  // the stationary points in the range, each once, by input
   std::vector<StationaryPoint> folds;   // a transmission angle's folds in the range, by input
   std::vector<int> ends;                // not periodic: the samples that end a run of samples

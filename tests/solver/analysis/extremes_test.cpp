@@ -90,7 +90,61 @@ TEST_CASE("an output that turns with the drive has no extremes over whole turns"
   // output 2 of the four-bar is the crank's own joint angle: y' = 1 everywhere
   const OutputExtremes r = FindOutputExtremes(CrankRocker(1, 3.5, 3, 4), 2, 0, Range(0, 360, 5));
   CHECK(r.status == AnalysisStatus::kFailed);
-  CHECK_THAT(r.message, Catch::Contains("no extreme"));
+  CHECK_THAT(r.message, Catch::Contains("turns with the drive"));
+}
+
+}  // namespace koppel
+
+namespace koppel {
+
+// A parallelogram's coupler only translates: its angle is constant, with no isolated extreme.
+TEST_CASE("a constant output has itself as its extremes", "[extremes]") {
+  const Mechanism m = test::PlainFourBar(1, 3, 1, 3, kPi / 2, {3, 1});  // B above B0: the parallelogram
+  // output 1: the coupler's angle theta, 0 throughout (A -> B parallel to A0 -> B0)
+  const OutputExtremes r = FindOutputExtremes(m, 1, 0, Range(10, 170, 5));
+  REQUIRE(r.status == AnalysisStatus::kComplete);
+  CHECK(r.minimum.kind == ExtremeKind::kConstant);
+  CHECK(r.maximum.kind == ExtremeKind::kConstant);
+  CHECK(r.minimum.value == Approx(0).margin(1e-12));
+}
+
+}  // namespace koppel
+
+#include "extremes_of_search.hpp"
+
+namespace koppel {
+
+// The rule itself on a search made by hand: a sample beyond every candidate means an extreme was
+// missed between two samples (no sign change of y' showed it): no number rather than a wrong one.
+TEST_CASE("extremes: a sample beyond the candidates fails the search", "[extremes]") {
+  const Mechanism m = test::SliderCrank(1, 2.6, 0.8);  // output 1: mu, an angle
+  StationarySearch s;
+  s.column = 0;
+  s.sweep.status = SweepStatus::kComplete;
+  s.sweep.inputs = {0.0, 0.1, 0.2};
+  s.sweep.singular = {0, 0, 0};
+  s.sweep.valid_order = {2, 2, 2};
+  s.sweep.outputs = Table::Zero(3, 3);
+  s.sweep.outputs(0, 0) = 0.5;
+  s.sweep.outputs(1, 0) = 0.9;  // above both ends, and no stationary point found
+  s.sweep.outputs(2, 0) = 0.6;
+  s.ends = {0, 2};
+  const OutputExtremes missed = ExtremesOf(m, 1, s);
+  CHECK(missed.status == AnalysisStatus::kFailed);
+  CHECK_THAT(missed.message, Catch::Contains("lies beyond the extremes found"));
+  // with the maximum found between them the same samples are consistent
+  StationaryPoint top;
+  top.status = AnalysisStatus::kComplete;
+  top.input = 0.09;
+  top.value = 0.95;
+  top.second = -1;
+  s.points = {top};
+  const OutputExtremes found = ExtremesOf(m, 1, s);
+  REQUIRE(found.status == AnalysisStatus::kComplete);
+  CHECK(found.maximum.kind == ExtremeKind::kStationary);
+  CHECK(found.maximum.value == 0.95);
+  CHECK(found.minimum.kind == ExtremeKind::kRangeEnd);
+  CHECK(found.minimum.input == 0.0);
 }
 
 }  // namespace koppel

@@ -17,8 +17,10 @@
 
 namespace koppel {
 
-enum class ExtremeKind { kStationary, kFold, kRangeEnd };
-const char* ToString(ExtremeKind kind);  // "stationary", "fold", "range end"
+// kConstant: the output does not change over the range (within 1e-12 rad or of the length
+// scale); minimum and maximum are then its value at the first sample.
+enum class ExtremeKind { kStationary, kFold, kRangeEnd, kConstant };
+const char* ToString(ExtremeKind kind);  // "stationary", "fold", "range end", "constant"
 
 struct OutputExtreme {
   double input = 0;  // radians (R drive) or length; over whole turns within the range's first turn
@@ -28,8 +30,9 @@ struct OutputExtreme {
 
 struct OutputExtremes {
   // kComplete: over the whole range; kPartial: over the drivable part (the gaps are in `sweep`);
-  // kFailed: no sample, the output turns without extremes, or a sign change of y' that is
-  // neither a stationary point nor a fold (then minimum and maximum are not to be used).
+  // kFailed: no sample, an output that turns with the drive over whole turns (it has no least
+  // and largest value there), a sign change of y' that is neither a stationary point nor a fold,
+  // or a sample beyond the extremes found (then minimum and maximum are not to be used).
   AnalysisStatus status = AnalysisStatus::kNotRun;
   std::string message;
   SweepEvents sweep;

@@ -24,6 +24,8 @@ bool StationaryOptions::IsValid(std::string* why) const {
   };
   if (!(input_tolerance > 0) || !std::isfinite(input_tolerance)) return fail("input_tolerance must be positive and finite");
   if (max_iterations < 1) return fail("max_iterations must be at least 1");
+  if (order < 1 || order + 1 > kMaxOrder) return fail("order must be between 1 and kMaxOrder - 1");
+  if (!std::isfinite(target)) return fail("target must be finite");
   if (!(max_step > 0) || !std::isfinite(max_step)) return fail("max_step must be positive and finite");
   return continuation.IsValid(why);
 }
@@ -41,14 +43,15 @@ StationaryPoint RefineStationary(const Mechanism& m, int output, int component, 
   PositionSolver solver(m);
   Continuation path(solver, options.continuation);
   if (!path.Start(input, q).ok()) return Failed(result, "the starting pose does not solve");
-  const int column = OutputColumn(m, output, component, 2);
-  std::vector<double> derivatives(solver.OutputWidth(2));
+  const int k = options.order;
+  const int column = OutputColumn(m, output, component, k + 1);
+  std::vector<double> derivatives(solver.OutputWidth(k + 1));
   for (int it = 0; it < options.max_iterations; ++it) {
-    solver.OutputDerivatives(path.Series(2), 2, derivatives.data());
-    const double y1 = derivatives[column + 1], y2 = derivatives[column + 2];
+    solver.OutputDerivatives(path.Series(k + 1), k + 1, derivatives.data());
+    const double y1 = derivatives[column + k] - options.target, y2 = derivatives[column + k + 1];
     result.iterations = it;
-    if (y2 == 0.0) return Failed(result, "the second derivative vanishes: no isolated stationary point");
-    // Newton on y'(input) = 0, its step capped so that the search stays near its start
+    if (y2 == 0.0) return Failed(result, "the next derivative vanishes: no isolated root");
+    // Newton on y^(k)(input) = target, its step capped so that the search stays near its start
     double step = -y1 / y2;
     if (std::abs(step) <= options.input_tolerance) {
       result.status = AnalysisStatus::kComplete;

@@ -23,27 +23,6 @@ constexpr double kConstantOutput = 1e-12;
 // Whole turns tried for the period of a rotating drive (as ranges.hpp's max_turns).
 constexpr int kMaxTurns = 4;
 
-// The sweep's samples stop at the last from + k step not beyond `to`: the rest of the range (less
-// than a step) is walked to and added as a sample, so that the search and the range's end value
-// cover all of it. Nothing is added when the branch cannot be driven there.
-void AddRangeEnd(const Mechanism& m, const SweepOptions& options, double tolerance, SweepResult& sweep) {
-  if (sweep.inputs.empty()) return;
-  const double last = sweep.inputs.back(), rest = std::abs(options.to - last);
-  if (rest <= tolerance || rest > std::abs(options.step) * (1 + kStepSlack)) return;
-  PositionSolver solver(m);
-  Continuation path(solver, options.continuation);
-  const Eigen::VectorXd q = sweep.poses.row(sweep.poses.rows() - 1).transpose();
-  if (!path.Start(last, q).ok() || !path.AdvanceTo(options.to, std::abs(options.step)).ok()) return;
-  const Eigen::Index n = sweep.outputs.rows();
-  sweep.outputs.conservativeResize(n + 1, Eigen::NoChange);
-  solver.OutputDerivatives(path.Series(2), 2, sweep.outputs.row(n).data());
-  sweep.poses.conservativeResize(n + 1, Eigen::NoChange);
-  sweep.poses.row(n) = path.q().transpose();
-  sweep.inputs.push_back(options.to);
-  sweep.singular.push_back(path.AtSingularPose() ? 1 : 0);
-  sweep.valid_order.push_back(static_cast<std::int8_t>(std::min(path.ValidOrder(), 2)));
-}
-
 bool SignChange(double d0, double d1) { return d0 == 0.0 || (d0 > 0) != (d1 > 0); }
 
 // A sign change of y' between two samples; `closing`: the second is sample 0 one period on.
@@ -197,6 +176,26 @@ class Searcher {
 
 }  // namespace
 
+double SameInputTolerance(const Mechanism& m) { return kSameInput * (m.InputIsAngle() ? 1.0 : LengthScale(m)); }
+
+void SampleRangeEnd(const Mechanism& m, const SweepOptions& options, SweepResult& sweep) {
+  if (sweep.inputs.empty()) return;
+  const double last = sweep.inputs.back(), rest = std::abs(options.to - last);
+  if (rest <= SameInputTolerance(m) || rest > std::abs(options.step) * (1 + kStepSlack)) return;
+  PositionSolver solver(m);
+  Continuation path(solver, options.continuation);
+  const Eigen::VectorXd q = sweep.poses.row(sweep.poses.rows() - 1).transpose();
+  if (!path.Start(last, q).ok() || !path.AdvanceTo(options.to, std::abs(options.step)).ok()) return;
+  const Eigen::Index n = sweep.outputs.rows();
+  sweep.outputs.conservativeResize(n + 1, Eigen::NoChange);
+  solver.OutputDerivatives(path.Series(std::max(sweep.order, 2)), sweep.order, sweep.outputs.row(n).data());
+  sweep.poses.conservativeResize(n + 1, Eigen::NoChange);
+  sweep.poses.row(n) = path.q().transpose();
+  sweep.inputs.push_back(options.to);
+  sweep.singular.push_back(path.AtSingularPose() ? 1 : 0);
+  sweep.valid_order.push_back(static_cast<std::int8_t>(std::min(path.ValidOrder(), sweep.order)));
+}
+
 double StationarySearch::Distance(double a, double b) const {
   return period > 0 ? std::abs(std::remainder(a - b, period)) : std::abs(a - b);
 }
@@ -219,8 +218,8 @@ StationarySearch SearchStationaryPoints(const Mechanism& m, int output, int comp
   s.step = std::abs(options.step);
   s.low = std::min(range.from, range.to);
   s.high = std::max(range.from, range.to);
-  s.tolerance = kSameInput * (m.InputIsAngle() ? 1.0 : LengthScale(m));
-  AddRangeEnd(m, options, s.tolerance, s.sweep);
+  s.tolerance = SameInputTolerance(m);
+  SampleRangeEnd(m, options, s.sweep);
   if (s.sweep.inputs.empty()) return s;
   Searcher(m, output, component, options, s).Run();
   return s;

@@ -48,6 +48,16 @@ struct StationarySearch {
   double Canonical(double input) const;
 };
 
+// Inputs closer than this are one input: kSameInput, 1e-9 rad (a sliding drive: times the length
+// scale), far above the refinement's 1e-12, far below two distinct stationary points.
+double SameInputTolerance(const Mechanism& mechanism);
+
+// A sweep's samples stop at the last from + k step not beyond `to`: the rest of the range (less
+// than a step) is walked to from the last sample and added as a row of the sweep's order, so that
+// a search or a band over the range covers all of it. Nothing is added when the branch cannot be
+// driven there, or when the last sample is `to` (within SameInputTolerance).
+void SampleRangeEnd(const Mechanism& mechanism, const SweepOptions& options, SweepResult& sweep);
+
 // Sweeps `range` (its step is the search resolution) and finds every stationary point (and fold)
 // of output `output` (component 0/1 for a point) in it. An empty sweep finds nothing.
 StationarySearch SearchStationaryPoints(const Mechanism& mechanism, int output, int component, const SweepOptions& range);

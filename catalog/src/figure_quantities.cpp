@@ -5,8 +5,8 @@
 
 #include "figures.hpp"
 #include "koppel/analysis/coupler_curve.hpp"
+#include "koppel/analysis/extremes.hpp"
 #include "koppel/analysis/proportionality.hpp"
-#include "koppel/analysis/stationary.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/core/structure.hpp"
 #include "koppel/solver/constraints.hpp"
@@ -21,64 +21,28 @@ namespace {
 FigureValue Value(double v) { return {v, ""}; }
 FigureValue NotComputed(std::string why) { return {std::nullopt, std::move(why)}; }
 
-struct Extremum {
-  double input;
-  double value;
-};
-
-// The sampled extreme of a sweep column, refined where it lies inside the range by Newton on
-// the first-order transfer function (stationary.hpp), so figures are exact, not sampled.
-std::optional<Extremum> FindExtremum(const Mechanism& m, const SweepResult& sweep, int output, int component, int column,
-                                     bool maximum, std::string* why_not) {
-  const int n = static_cast<int>(sweep.inputs.size());
-  int best = 0;
-  for (int i = 1; i < n; ++i) {
-    const double v = sweep.outputs(i, column), b = sweep.outputs(best, column);
-    if (maximum ? v > b : v < b) best = i;
-  }
-  // a constant output (an exact straight line's other coordinate) has no isolated extreme
-  const double lo_sample = sweep.outputs.col(column).minCoeff(), hi_sample = sweep.outputs.col(column).maxCoeff();
-  if (hi_sample - lo_sample <= 1e-12 * std::max(1.0, LengthScale(m))) return Extremum{sweep.inputs[best], sweep.outputs(best, column)};
-  const Eigen::VectorXd q = sweep.poses.row(best).transpose();
-  StationaryPoint p = RefineStationary(m, output, component, sweep.inputs[best], q);
-  const bool interior = best > 0 && best < n - 1;
-  // an extreme at a singular position (a change point where the output turns back): no path
-  // starts on a singular pose, but one from a regular neighbour walks onto it
-  for (int neighbour : {best - 1, best + 1}) {
-    if (p.ok() || !sweep.singular[best] || neighbour < 0 || neighbour >= n || sweep.singular[neighbour]) continue;
-    p = RefineStationary(m, output, component, sweep.inputs[neighbour], sweep.poses.row(neighbour).transpose());
-  }
-  if (!p.ok()) {
-    if (interior) {
-      *why_not = p.message;
-      return std::nullopt;
-    }
-    return Extremum{sweep.inputs[best], sweep.outputs(best, column)};  // an end of the range
-  }
-  // a stationary point outside the range (or the wrong kind) leaves the end sample as the extreme
-  const double lo = std::min(sweep.inputs.front(), sweep.inputs.back()), hi = std::max(sweep.inputs.front(), sweep.inputs.back());
-  const bool inside = p.input >= lo - 1e-12 && p.input <= hi + 1e-12;
-  const bool better = maximum ? p.value >= sweep.outputs(best, column) : p.value <= sweep.outputs(best, column);
-  if (inside && better) return Extremum{p.input, p.value};
-  return Extremum{sweep.inputs[best], sweep.outputs(best, column)};
-}
-
-// min, max, argmin, argmax, stroke: the extremes of an output over the card's range (or from..to)
+// min, max, argmin, argmax, stroke: the extremes of an output over the card's range (or from..to),
+// refined (extremes.hpp: stationary points, a transmission angle's folds, the ends of a range that
+// is not whole turns), so figures are exact, not sampled
 FigureValue Extremes(FigureContext& c, const FigureCheck& f) {
-  const SweepResult& sweep = c.RangeSweep(f);
-  if (!sweep.complete()) return NotComputed(sweep.message);
   const int output = c.Output(f);
-  const int column = OutputColumn(c.mechanism(), f.output, f.component, 0, 0);
-  std::string why_not;
-  const std::optional<Extremum> lo = FindExtremum(c.mechanism(), sweep, output, f.component, column, false, &why_not);
-  const std::optional<Extremum> hi = FindExtremum(c.mechanism(), sweep, output, f.component, column, true, &why_not);
-  if (!lo || !hi) return NotComputed(why_not);
+  const bool own_range = c.Has(f, "from") || c.Has(f, "to");
+  OutputExtremes found;
+  if (own_range) {
+    SweepOptions range = c.CardRange();
+    if (c.Has(f, "from")) range.from = c.Input(f, "from");
+    if (c.Has(f, "to")) range.to = c.Input(f, "to");
+    found = FindOutputExtremes(c.mechanism(), output, f.component, range);
+  }
+  const OutputExtremes& e = own_range ? found : c.DeadCentres(output, f.component).extremes;
+  if (!e.sweep.complete()) return NotComputed(e.sweep.message);
+  if (!Usable(e.status)) return NotComputed(e.message);
   switch (f.quantity) {
-    case FigureQuantity::kMin: return Value(lo->value);
-    case FigureQuantity::kMax: return Value(hi->value);
-    case FigureQuantity::kArgMin: return Value(lo->input);
-    case FigureQuantity::kArgMax: return Value(hi->input);
-    default: return Value(hi->value - lo->value);
+    case FigureQuantity::kMin: return Value(e.minimum.value);
+    case FigureQuantity::kMax: return Value(e.maximum.value);
+    case FigureQuantity::kArgMin: return Value(e.minimum.input);
+    case FigureQuantity::kArgMax: return Value(e.maximum.input);
+    default: return Value(e.maximum.value - e.minimum.value);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "support/closed_forms.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace koppel::test {
@@ -88,6 +89,39 @@ std::vector<double> SliderCrankLimits(double l1, double l2, double e) {
     limits.push_back(2 * M_PI - phi);
   }
   return limits;
+}
+
+namespace {
+
+// phi and 2 pi - phi where cos phi = x; none outside (-1, 1)
+std::vector<double> BothCrankAngles(double x) {
+  if (!(std::abs(x) < 1)) return {};
+  const double phi = std::acos(x);
+  return {phi, 2 * M_PI - phi};
+}
+
+}  // namespace
+
+std::vector<double> SliderCrankMuFolds(double l1, double e) { return BothCrankAngles(-e / l1); }
+
+double CrankRockerMu(double a, double b, double c, double d, double phi) {
+  const double e2 = a * a + d * d - 2 * a * d * std::cos(phi);
+  const double gamma = std::acos((b * b + c * c - e2) / (2 * b * c));
+  return std::min(gamma, M_PI - gamma);
+}
+
+std::vector<double> CrankRockerMuFolds(double a, double b, double c, double d) {
+  return BothCrankAngles((a * a + d * d - b * b - c * c) / (2 * a * d));
+}
+
+CrankRockerDeadCentre CrankRockerExtended(double a, double b, double c, double d) {
+  const double r = a + b;
+  return {std::acos((r * r + d * d - c * c) / (2 * r * d)), M_PI - std::acos((c * c + d * d - r * r) / (2 * c * d))};
+}
+
+CrankRockerDeadCentre CrankRockerFolded(double a, double b, double c, double d) {
+  const double r = b - a;
+  return {M_PI + std::acos((r * r + d * d - c * c) / (2 * r * d)), M_PI - std::acos((c * c + d * d - r * r) / (2 * c * d))};
 }
 
 }  // namespace koppel::test

@@ -58,5 +58,27 @@ struct SlideValues {
 std::optional<SlideValues> SliderCrankBranch(double l1, double l2, double e, double phi, int side);
 // Crank angles in [0, 2 pi) of its limit points (|A_y| = l2).
 std::vector<double> SliderCrankLimits(double l1, double l2, double e);
+// Seed 000's transmission angle mu = 90 deg - |psi|, sin psi = -lambda cos phi - eps, folds at
+// 90 deg where lambda cos phi + eps = 0: cos phi = -e/l1 (both crank angles in [0, 2 pi); none
+// for |e| >= l1). Its stationary points are phi = 0 and 180 deg (d/dphi of lambda cos phi + eps).
+std::vector<double> SliderCrankMuFolds(double l1, double e);
+
+// Crank-rocker (Grashof, crank a shortest) A0 = 0, B0 = (d, 0), crank a, coupler b, rocker c, B
+// above the frame line (Kerle, Corves, Hüsing: Getriebetechnik, 5th ed., ch. 3 "Übertragungswinkel",
+// "Totlagen"; the law of cosines in the triangles A B0 B and A0 B0 B). The diagonal
+// e^2 = a^2 + d^2 - 2 a d cos phi, the coupler-rocker angle cos gamma = (b^2 + c^2 - e^2)/(2 b c),
+// mu = min(gamma, 180 deg - gamma); e is extreme at phi = 0 and 180 deg, so mu is stationary there.
+double CrankRockerMu(double a, double b, double c, double d, double phi);
+// Where gamma passes 90 deg (e^2 = b^2 + c^2) mu folds at 90 deg: cos phi = (a^2 + d^2 - b^2 - c^2)/(2 a d),
+// both crank angles in [0, 2 pi); none when gamma stays on one side of 90 deg.
+std::vector<double> CrankRockerMuFolds(double a, double b, double c, double d);
+// The rocker's dead centres: A0B = a + b (extended) at phi_a = acos(((a+b)^2 + d^2 - c^2)/(2 (a+b) d)),
+// A0B = b - a (folded) at phi_i = 180 deg + acos(((b-a)^2 + d^2 - c^2)/(2 (b-a) d)); the rocker angle
+// there psi = 180 deg - acos((c^2 + d^2 - A0B^2)/(2 c d)) (the angle at B0 of triangle A0 B0 B).
+struct CrankRockerDeadCentre {
+  double phi, psi;
+};
+CrankRockerDeadCentre CrankRockerExtended(double a, double b, double c, double d);
+CrankRockerDeadCentre CrankRockerFolded(double a, double b, double c, double d);
 
 }  // namespace koppel::test

@@ -73,6 +73,16 @@ py::list GapList(const std::vector<InputGap>& gaps) {
   return l;
 }
 
+// {at, input, value}, or None when the extremes were not found
+py::object ExtremeDict(bool found, const OutputExtremePoint& e) {
+  if (!found) return py::none();
+  py::dict d;
+  d["at"] = e.at;
+  d["input"] = e.input;
+  d["value"] = e.value;
+  return d;
+}
+
 py::dict Figures(const Design& d) {
   py::dict f;
   for (const DesignFigure& figure : d.figures) f[py::str(figure.name)] = figure.value;
@@ -129,7 +139,8 @@ void BindResults(py::module_& m) {
   py::class_<DeadCentres>(m, "DeadCentres",
                           "Dead centres of a scalar output (koppel deadcentres): points [{kind, input, value, d2}], and where "
                           "they pair up the stroke, input_a/input_i (extended/folded), value_a/value_i, forward_angle and "
-                          "phase_ratio.")
+                          "phase_ratio; the output's minimum and maximum {at, input, value} (a transmission angle's mu_min "
+                          "and mu_max; at: stationary, fold or range end), None when not found (extremes_message).")
       .def_property_readonly("status", [](const DeadCentres& d) { return ToString(d.status); })
       .def_readonly("message", &DeadCentres::message)
       .def_property_readonly("points", [](const DeadCentres& d) {
@@ -152,6 +163,11 @@ void BindResults(py::module_& m) {
       .def_readonly("value_i", &DeadCentres::value_i)
       .def_readonly("forward_angle", &DeadCentres::forward_angle)
       .def_readonly("phase_ratio", &DeadCentres::phase_ratio)
+      .def_readonly("has_extremes", &DeadCentres::has_extremes)
+      .def_property_readonly("minimum", [](const DeadCentres& d) { return ExtremeDict(d.has_extremes, d.minimum); })
+      .def_property_readonly("maximum", [](const DeadCentres& d) { return ExtremeDict(d.has_extremes, d.maximum); })
+      .def_readonly("extremes_message", &DeadCentres::extremes_message)
+      .def_readonly("unresolved", &DeadCentres::unresolved)
       .def_property_readonly("singular_points", [](const DeadCentres& d) { return SingularList(d.singular_points); })
       .def_property_readonly("gaps", [](const DeadCentres& d) { return GapList(d.gaps); })
       .def("brief", &DeadCentres::Brief)

@@ -1,7 +1,8 @@
 #include "koppel/analysis/dead_centres.hpp"
 #include "koppel/core/angles.hpp"
 
-#include "koppel/analysis/stationary.hpp"
+#include "extremes_of_search.hpp"
+#include "stationary_search.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -52,44 +53,10 @@ DeadCentreKind ClassifyLineUp(const Mechanism& m, const Eigen::VectorXd& q) {
   return u.dot(v) > 0 ? DeadCentreKind::kExtended : DeadCentreKind::kFolded;
 }
 
-DeadCentreReport FindDeadCentres(const Mechanism& m, int output, int component, const SweepOptions& range) {
-  DeadCentreReport report;
-  SweepOptions options = range;
-  options.order = 2;
-  const SweepResult sweep = Sweep(m, options);
-  report.sweep = EventsOf(sweep);  // dead centres are searched over the part swept
-  report.message = sweep.message;
-  if (sweep.inputs.empty()) {
-    report.status = AnalysisStatus::kFailed;
-    return report;
-  }
-  report.status = sweep.complete() ? AnalysisStatus::kComplete : AnalysisStatus::kPartial;
-  const int column = OutputColumn(m, output, component, 2);
-  const int n = static_cast<int>(sweep.inputs.size());
-  const double resolution = std::abs(options.step);
-  for (int i = 0; i + 1 < n; ++i) {
-    const double d0 = sweep.outputs(i, column + 1), d1 = sweep.outputs(i + 1, column + 1);
-    if (!(d0 == 0.0 || (d0 > 0) != (d1 > 0))) continue;
-    int start = std::abs(d0) <= std::abs(d1) ? i : i + 1;
-    // no path starts on a singular pose (a dead centre at a change point): start beside it
-    if (sweep.singular[start]) start = start == i ? i + 1 : i;
-    StationaryOptions stationary;
-    stationary.max_step = resolution;
-    stationary.continuation = options.continuation;
-    const StationaryPoint p = RefineStationary(m, output, component, sweep.inputs[start], sweep.poses.row(start).transpose(), stationary);
-    if (!p.ok()) continue;
-    // one dead centre per sign change: drop a repeat found from the neighbouring interval
-    const bool repeat = std::any_of(report.points.begin(), report.points.end(),
-                                    [&](const DeadCentre& d) { return std::abs(d.input - p.input) < 1e-9; });
-    const bool full_turn_repeat = m.InputIsAngle() && std::any_of(report.points.begin(), report.points.end(), [&](const DeadCentre& d) {
-      return std::abs(std::abs(d.input - p.input) - kTwoPi) < 1e-9;
-    });
-    if (repeat || full_turn_repeat) continue;
-    report.points.push_back({p.input, p.value, p.second, ClassifyLineUp(m, p.q)});
-  }
-  std::sort(report.points.begin(), report.points.end(), [](const DeadCentre& a, const DeadCentre& b) { return a.input < b.input; });
+namespace {
 
-  // stroke summary: one extended and one folded, else the overall maximum and minimum
+// One extended and one folded dead centre, else the overall maximum and minimum: the stroke.
+void Stroke(const Mechanism& m, DeadCentreReport& report) {
   const DeadCentre* a = nullptr;
   const DeadCentre* i = nullptr;
   int extended = 0, folded = 0;
@@ -102,18 +69,40 @@ DeadCentreReport FindDeadCentres(const Mechanism& m, int output, int component, 
     a = &*std::max_element(report.points.begin(), report.points.end(), [](const DeadCentre& x, const DeadCentre& y) { return x.value < y.value; });
     i = &*std::min_element(report.points.begin(), report.points.end(), [](const DeadCentre& x, const DeadCentre& y) { return x.value < y.value; });
   }
-  if (a && i && a != i) {
-    report.has_stroke = true;
-    report.phi_a = a->input;
-    report.phi_i = i->input;
-    report.s_a = a->value;
-    report.s_i = i->value;
-    report.stroke = std::abs(a->value - i->value);
-    if (m.InputIsAngle()) {
-      report.phi_h = std::fmod(std::fmod(i->input - a->input, kTwoPi) + kTwoPi, kTwoPi);
-      report.phase_ratio = report.phi_h / (kTwoPi - report.phi_h);
-    }
+  if (!a || !i || a == i) return;
+  report.has_stroke = true;
+  report.phi_a = a->input;
+  report.phi_i = i->input;
+  report.s_a = a->value;
+  report.s_i = i->value;
+  report.stroke = std::abs(a->value - i->value);
+  if (m.InputIsAngle()) {
+    report.phi_h = std::fmod(std::fmod(i->input - a->input, kTwoPi) + kTwoPi, kTwoPi);
+    report.phase_ratio = report.phi_h / (kTwoPi - report.phi_h);
   }
+}
+
+}  // namespace
+
+DeadCentreReport FindDeadCentres(const Mechanism& m, int output, int component, const SweepOptions& range) {
+  DeadCentreReport report;
+  const StationarySearch search = SearchStationaryPoints(m, output, component, range);
+  report.sweep = EventsOf(search.sweep);  // dead centres are searched over the part swept
+  report.message = search.sweep.message;
+  report.extremes = ExtremesOf(m, output, search);
+  if (search.sweep.inputs.empty()) {
+    report.status = AnalysisStatus::kFailed;
+    return report;
+  }
+  report.status = search.sweep.complete() ? AnalysisStatus::kComplete : AnalysisStatus::kPartial;
+  for (const StationaryPoint& p : search.points) report.points.push_back({p.input, p.value, p.second, ClassifyLineUp(m, p.q)});
+  report.unresolved = search.unresolved;
+  if (!search.unresolved.empty()) {
+    const std::string why = std::to_string(search.unresolved.size()) + " sign change" + (search.unresolved.size() == 1 ? "" : "s") +
+                            " of the first-order transfer function not refined to a dead centre: " + search.unresolved_message;
+    report.message = report.message.empty() ? why : report.message + "; " + why;
+  }
+  Stroke(m, report);
   return report;
 }
 

@@ -1,5 +1,7 @@
 #include "koppel/analysis/ranges.hpp"
 
+#include "same_pose.hpp"
+
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/assembly.hpp"
 
@@ -11,20 +13,9 @@
 namespace koppel {
 namespace {
 
-// Poses closer than this (units of L for positions, rad for angles, angles modulo 2 pi) are the
-// same pose: far above Newton's 1e-13, far below the distance between two assemblies.
-constexpr double kSamePose = 1e-7;
 // Probe inputs: every 30 degrees of a rotating drive, every L/4 of a sliding one.
 constexpr int kProbesPerTurn = 12;
 constexpr double kProbeSpacingOfL = 0.25;
-
-bool SamePose(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double scale) {
-  for (int i = 0; i < a.size(); ++i) {
-    const double d = i % 3 == 2 ? std::abs(AngleDifference(a(i), b(i))) : std::abs(a(i) - b(i)) / scale;
-    if (d > kSamePose) return false;
-  }
-  return true;
-}
 
 RangeEnd EndOf(WalkStatus status) {
   switch (status) {

@@ -1,10 +1,10 @@
 #include "design_proof.hpp"
 
 #include "koppel/analysis/dead_centres.hpp"
+#include "koppel/analysis/extremes.hpp"
 #include "koppel/core/angles.hpp"
 
 #include <cmath>
-#include <limits>
 
 namespace koppel {
 namespace {
@@ -42,22 +42,16 @@ CrankReanalysis ReanalyseCrank(const Mechanism& m, int stroke_output, int mu_out
   }
   r.phi0 = Mod2Pi(dc.phi_a - dc.phi_i);
   r.turn = m.OutputIsAngle(stroke_output) ? AngleDifference(dc.s_a, dc.s_i) : dc.s_a - dc.s_i;
-  // mu's minima are stationary points with y'' > 0 (the fold at 90 deg is a maximum); the turn
-  // for them starts a radian away from the crank-along-the-frame positions where they sit
-  const DeadCentreReport mu = FindDeadCentres(m, mu_output, 0, FullTurn(1.0));
+  // mu_min over the turn (extremes.hpp: a stationary point at the crank along the frame)
+  const OutputExtremes mu = FindOutputExtremes(m, mu_output, 0, FullTurn(quiet_input));
   if (!mu.sweep.complete()) {
     return Failed(r, "the solver cannot drive the crank through a full turn: " + mu.sweep.message);
   }
-  r.mu_min = std::numeric_limits<double>::infinity();
-  for (const DeadCentre& p : mu.points) {
-    if (p.second > 0 && p.value < r.mu_min) {
-      r.mu_min = p.value;
-      r.mu_min_at = std::remainder(p.input, 2 * kPi);
-    }
+  if (!Usable(mu.status)) {
+    return Failed(r, "the solver finds no smallest transmission angle over the turn: " + mu.message);
   }
-  if (!std::isfinite(r.mu_min)) {
-    return Failed(r, "the solver finds no smallest transmission angle over the turn");
-  }
+  r.mu_min = mu.minimum.value;
+  r.mu_min_at = std::remainder(mu.minimum.input, 2 * kPi);
   r.status = AnalysisStatus::kComplete;
   return r;
 }

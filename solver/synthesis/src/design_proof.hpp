@@ -22,8 +22,8 @@ struct CrankReanalysis {
 
 // Drives the crank through a full turn with the solver and finds the extended and folded dead
 // centres of output `stroke_output` and the smallest value of the transmission angle output
-// `mu_output`. `quiet_input` is an input where the stroke output is far from a dead centre (the
-// turn starts there, so that no dead centre sits at the ends of the sweep).
+// `mu_output`, over the turn from `quiet_input` (any input serves: over a full turn the search
+// is periodic, a dead centre at its start is found like any other).
 CrankReanalysis ReanalyseCrank(const Mechanism& mechanism, int stroke_output, int mu_output, double quiet_input);
 
 }  // namespace koppel

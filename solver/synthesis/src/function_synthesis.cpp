@@ -2,6 +2,7 @@
 
 #include "bar_linkages.hpp"
 
+#include "koppel/analysis/sampled_maximum.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
 #include "koppel/synthesis/fit.hpp"
@@ -216,6 +217,34 @@ void PolishByFit(const FunctionRequest& r, const std::vector<double>& phi, const
   }
 }
 
+// The largest |structural error| over the sampled range, refined between the samples (the
+// largest sample is not the maximum): the mechanism is solved at inputs between two samples by
+// continuation from the nearer one. `design.error_curve` holds the samples of `s`, in its order.
+// False when it cannot be solved there.
+bool RefineErrorMaximum(const FunctionRequest& r, const FunctionMap& map, const SweepResult& s, FunctionDesign& design) {
+  const bool four_bar = r.type == FunctionGenerator::kFourBar;
+  std::vector<double> errors;
+  for (const StructuralErrorSample& e : design.error_curve) errors.push_back(std::abs(e.error));
+  PositionSolver solver(design.mechanism);
+  std::vector<double> output(solver.OutputWidth(0));
+  const double step = s.inputs.size() > 1 ? std::abs(s.inputs[1] - s.inputs[0]) : 1.0;
+  const auto evaluate = [&](double input) -> std::optional<double> {
+    const auto nearest = std::min_element(s.inputs.begin(), s.inputs.end(), [&](double a, double b) { return std::abs(a - input) < std::abs(b - input); });
+    const Eigen::Index k = nearest - s.inputs.begin();
+    Continuation path(solver);
+    if (!path.Start(s.inputs[k], s.poses.row(k).transpose()).ok() || !path.AdvanceTo(input, step).ok()) return std::nullopt;
+    solver.OutputDerivatives(path.Series(0), 0, output.data());
+    const std::optional<double> wanted = map.Output(map.X(input));
+    if (!wanted) return std::nullopt;
+    return std::abs(four_bar ? AngleDifference(output[0], *wanted) : output[0] - *wanted);
+  };
+  const SampledMaximum maximum = RefineSampledMaximum(s.inputs, errors, evaluate);
+  if (!maximum.ok) return false;
+  design.error_max = maximum.value;
+  design.error_max_x = map.X(maximum.input);
+  return true;
+}
+
 // The structural error over the whole input range and at the precision points, by the solver;
 // the design's status says whether the mechanism runs through the range.
 FunctionDesign MeasureError(const FunctionRequest& r, const FunctionMap& map, const std::vector<double>& phi,
@@ -237,9 +266,10 @@ FunctionDesign MeasureError(const FunctionRequest& r, const FunctionMap& map, co
     e.desired = *wanted;
     e.generated = s.outputs(static_cast<Eigen::Index>(i), 0);
     e.error = difference(e.generated, e.desired);
-    design.error_max = std::max(design.error_max, std::abs(e.error));
     design.error_curve.push_back(e);
   }
+  if (!s.inputs.empty() && !RefineErrorMaximum(r, map, s, design))
+    return Refused(design, FunctionStatus::kNotDrivable, "the structural error cannot be evaluated between its samples");
   std::sort(design.error_curve.begin(), design.error_curve.end(), [&](const auto& u, const auto& v) { return (u.x < v.x) == (r.x_from < r.x_to); });
   for (size_t i = 0; i < phi.size(); ++i) {
     SweepOptions at;

@@ -1,5 +1,6 @@
 #include "koppel/synthesis/motion_synthesis.hpp"
 
+#include "koppel/analysis/extremes.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/core/build.hpp"
 #include "koppel/solver/position.hpp"
@@ -19,8 +20,9 @@ namespace {
 
 // The 1e-9 of the mechanism's size for the poses; links shorter than this are degenerate.
 constexpr double kPoseTolerance = 1e-9;
-// Samples of the transmission angle over the travel: at most this step [rad] (0.25 deg).
-constexpr double kMuStep = kPi / 720;
+// The search step of the transmission angle's extremes over the travel [rad] (1 deg): brackets
+// them (a four-bar's mu has at most two stationary points and two folds a turn), Newton refines.
+constexpr double kMuStep = kPi / 180;
 
 double Angle(const Eigen::Vector2d& v) { return std::atan2(v.y(), v.x()); }
 double Positive(double angle) {
@@ -171,12 +173,15 @@ MotionFourBar AnalyseMotionFourBar(const std::vector<Pose>& poses, const Dyad& c
   sweep.to = travel[n - 1];
   const double span = std::abs(sweep.to - sweep.from);
   sweep.step = span > 0 ? span / std::ceil(span / kMuStep) : kMuStep;
-  sweep.order = 0;
-  const SweepResult s = Sweep(m, sweep);
-  const int mu_column = OutputColumn(m, 3, 0, 0);
-  f.mu_min = kPi / 2;
-  for (Eigen::Index r = 0; r < s.outputs.rows(); ++r) f.mu_min = std::min(f.mu_min, s.outputs(r, mu_column));
-  if (!s.complete() && f.message.empty()) f.message = "mu_min only over the part of the travel the branch reaches: " + s.message;
+  const OutputExtremes mu = FindOutputExtremes(m, 3, 0, sweep);
+  if (!Usable(mu.status)) {  // no number rather than a wrong one: the four-bar is reported as failed
+    f.message = "the transmission angle over the travel cannot be evaluated: " + mu.message;
+    return f;
+  }
+  f.mu_min = mu.minimum.value;
+  if (mu.status == AnalysisStatus::kPartial && f.message.empty()) {
+    f.message = "mu_min only over the part of the travel the branch reaches: " + mu.sweep.message;
+  }
   f.passes = true;
   return f;
 }

@@ -3,6 +3,7 @@
 #include "koppel/analysis/dead_centres.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/build.hpp"
 #include "support/closed_forms.hpp"
 #include "support/mechanisms.hpp"
 
@@ -90,6 +91,81 @@ TEST_CASE("a crank-rocker's rocker dead centres are classified", "[deadcentres]"
   // swing angle psi_0 from the law of cosines at A0B = l2 + l1 and l2 - l1
   auto psi = [&](double a0b) { return kPi - std::acos((16 + l23 * l23 - a0b * a0b) / (8 * l23)); };
   CHECK(r.stroke == Approx(std::abs(psi(l23 + 1) - psi(l23 - 1))).margin(1e-11));
+}
+
+}  // namespace koppel
+
+namespace koppel {
+
+// issue 22 item 1: the extended dead centre of a crank-rocker at input 0, put there by the drive's
+// zero (zero = phi_a from the law of cosines, the issue's repro-psi file): it was dropped.
+TEST_CASE("a dead centre exactly at the start of a whole turn is kept, once", "[deadcentres]") {
+  const double a = 1, b = 3, c = 2.5, d = 3;
+  const test::CrankRockerDeadCentre extended = test::CrankRockerExtended(a, b, c, d), folded = test::CrankRockerFolded(a, b, c, d);
+  Mechanism m = test::FourBar(a, b, c, d, 1.0, 0.0, 1);  // output 1: psi
+  m.hint.points.clear();
+  HintPoint(m, "coupler", "B", test::FourBarRocker(a, b, c, d, 0.0, 1)->b);
+  m.drive.zero = extended.phi;
+  m.hint.input = -extended.phi;  // the hint's pose is at crank angle 0
+  for (const auto& [from, to] : {std::pair{0.0, 2 * kPi}, std::pair{2 * kPi, 0.0}, std::pair{-2 * kPi, 0.0}}) {
+    INFO("from " << from << " to " << to);
+    SweepOptions range;
+    range.from = from;
+    range.to = to;
+    range.step = DegToRad(1);
+    const DeadCentreReport r = FindDeadCentres(m, 1, 0, range);
+    REQUIRE(r.status == AnalysisStatus::kComplete);
+    REQUIRE(r.points.size() == 2);
+    REQUIRE(r.classified);
+    // reported in the range's first turn: the extended one at its start (within 1e-9 below it)
+    const double start = std::min(from, to);
+    CHECK(std::abs(r.phi_a - start) < 1e-9);
+    CHECK(std::abs(r.phi_i - (start + folded.phi - extended.phi)) < kRefined);
+    // psi_a = 87.1340160174 deg, stroke 51.4563618 deg (the issue's truth, by the law of cosines)
+    CHECK(std::abs(r.s_a - extended.psi) < kRefined);
+    CHECK(std::abs(r.stroke - std::abs(folded.psi - extended.psi)) < kRefined);
+    CHECK(RadToDeg(r.s_a) == Approx(87.1340160174).margin(1e-9));
+    CHECK(RadToDeg(r.stroke) == Approx(51.4563618).margin(1e-6));
+  }
+}
+
+// The same dead centre at the start and at the end of a part of the turn.
+TEST_CASE("a dead centre exactly at either end of part of a turn is kept", "[deadcentres]") {
+  const double l1 = 1, l2 = 2.6, e = 0.8;
+  const Mechanism m = test::SliderCrank(l1, l2, e);
+  const double phi_a = test::SliderCrankPhiA(l1, l2, e);
+  for (const auto& [from, to] : {std::pair{phi_a, phi_a + 2.0}, std::pair{phi_a - 2.0, phi_a}, std::pair{phi_a, phi_a - 1.0}}) {
+    INFO("from " << from << " to " << to);
+    SweepOptions range;
+    range.from = from;
+    range.to = to;
+    range.step = DegToRad(3);  // 2 rad is not a whole number of steps: the end is searched too
+    const DeadCentreReport r = FindDeadCentres(m, 0, 0, range);
+    REQUIRE(r.status == AnalysisStatus::kComplete);
+    REQUIRE(r.points.size() == 1);
+    CHECK(std::abs(r.points[0].input - phi_a) < 1e-9);
+    CHECK(r.points[0].kind == DeadCentreKind::kExtended);
+  }
+}
+
+// A sign change of y' that is no dead centre: the distance |A X| from a frame point X on the
+// crank circle has a kink (|A X| = 2 a |sin(phi/2)|) at phi = 0, where y' jumps from -a to +a.
+TEST_CASE("a sign change of y' that does not refine is reported, not dropped", "[deadcentres]") {
+  Mechanism m = test::PlainFourBar(1, 3.5, 3, 4, 0.5, test::FourBarRocker(1, 3.5, 3, 4, 0.5, 1)->b);
+  m.links[0].points.push_back({"X", {1, 0}});  // on the frame, where the crank's A passes at phi = 0
+  DistanceOutput(m, "AX", "crank", "A", "frame", "X");  // output 2
+  SweepOptions range;
+  range.from = DegToRad(0.5);  // no sample on the kink itself
+  range.to = range.from + 2 * kPi;
+  range.step = DegToRad(1);
+  const DeadCentreReport r = FindDeadCentres(m, 2, 0, range);
+  // the maximum 2a at phi = 180 deg is a dead centre; the kink is not, and is named
+  REQUIRE(r.points.size() == 1);
+  CHECK(std::abs(AngleDifference(r.points[0].input, kPi)) < kRefined);
+  REQUIRE(r.unresolved.size() == 1);
+  CHECK(std::abs(AngleDifference(r.unresolved[0], 0.0)) < DegToRad(1));
+  CHECK_THAT(r.message, Catch::Contains("not refined"));
+  CHECK(r.extremes.status == AnalysisStatus::kFailed);
 }
 
 }  // namespace koppel

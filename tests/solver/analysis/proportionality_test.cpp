@@ -32,4 +32,28 @@ TEST_CASE("proportional linkage reading example", "[proportionality]") {
   CHECK(p.chord_deviation < 0.006);
 }
 
+// A resolution that does not divide the range: the band still covers it up to `to`, the flat
+// point and the band's extremes are refined between samples (they were the samples': phi_P 133
+// deg instead of 135, delta_s 0.01678 instead of 0.01812).
+TEST_CASE("proportionality over the whole range whatever the resolution", "[proportionality]") {
+  const Mechanism m = test::ProportionalLinkage(1.0, 0.5, 1.83);
+  const Proportionality p = ProportionalityDeviation(m, 0, DegToRad(112.5), DegToRad(247.5), 0.5, std::nullopt, DegToRad(7));
+  REQUIRE(p.status == AnalysisStatus::kComplete);
+  CHECK(RadToDeg(p.phi_p) == Approx(135).margin(1e-12));
+  // s'' = -c sin phi (1 - 2 lambda^2 + lambda cos phi)/(1 - lambda cos phi)^3 vanishes at 180 deg
+  // (seed 001), a triple root here: located to where the sign of s'' is roundoff (~1e-5 rad),
+  // where the tangent's slope differs from s'(180 deg) by ~(1e-5)^3 s''''
+  CHECK(RadToDeg(p.reference) == Approx(180).margin(1e-3));
+  CHECK(p.slope == Approx(test::Proportional(1.0, 0.5, 1.83, kPi).s1).margin(1e-12));
+  // the closed form's band about its tangent at 180 deg, 0.001 deg samples
+  double lo = 0, hi = 0;
+  for (int i = 0; i <= 135000; ++i) {
+    const double phi = DegToRad(112.5 + i * 0.001);
+    const double d = test::ProportionalS(1.0, 0.5, 1.83, phi) - test::ProportionalS(1.0, 0.5, 1.83, kPi) - p.slope * (phi - kPi);
+    lo = std::min(lo, d);
+    hi = std::max(hi, d);
+  }
+  CHECK(p.delta_s == Approx(hi - lo).margin(1e-9));
+}
+
 }  // namespace koppel

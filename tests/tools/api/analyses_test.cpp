@@ -79,6 +79,27 @@ TEST_CASE("Model::FindDeadCentres: stroke, dead-centre angles and phase ratio of
   CHECK_THROWS_AS(m.FindDeadCentres("no_such_output"), InputError);
 }
 
+// issue 22 item 2: a transmission angle's extremes through the API, in degrees (seed 000, e = 0.8:
+// mu_min = 90 deg - arcsin(lambda + eps) at phi = 0; mu folds at 90 deg where cos phi = -e/l1)
+TEST_CASE("Model::FindDeadCentres: mu_min and mu_max of seed 000 and where they are", "[api]") {
+  const Model m = Model::Load(test::CatalogEntryPath("slider-crank-offset"));
+  const DeadCentres d = m.FindDeadCentres("mu");
+  REQUIRE(d.has_extremes);
+  CHECK(d.minimum.at == "stationary");
+  CHECK_THAT(d.minimum.input, WithinAbs(0, kDeadCentre));
+  CHECK_THAT(d.minimum.value, WithinAbs(90 - RadToDeg(std::asin(kL1 / kL2 + 0.8 / kL2)), kDeadCentre));
+  CHECK(d.maximum.at == "fold");
+  CHECK_THAT(d.maximum.input, WithinAbs(RadToDeg(test::SliderCrankMuFolds(kL1, 0.8)[0]), kDeadCentre));
+  CHECK_THAT(d.maximum.value, WithinAbs(90, kDeadCentre));
+  // over part of the turn from 30 deg the least is at that end
+  const DeadCentres part = m.FindDeadCentres("mu", 30, 120);
+  REQUIRE(part.has_extremes);
+  CHECK(part.minimum.at == "range end");
+  CHECK_THAT(part.minimum.input, WithinAbs(30, 1e-12));
+  CHECK_THAT(part.minimum.value, WithinAbs(RadToDeg(test::SliderCrank(kL1, kL2, 0.8, DegToRad(30)).mu), kClosedForm));
+  CHECK(d.unresolved.empty());
+}
+
 TEST_CASE("Model::DrivableRanges: the triple rocker swings between its two limits; the slider-crank turns fully", "[api]") {
   const Model rocker = Model::Load(test::TestDataPath("triple-rocker.yaml"));
   const Ranges r = rocker.DrivableRanges();

@@ -63,6 +63,18 @@ class MechanismTest(unittest.TestCase):
             self.assertAlmostEqual(d.stroke, stroke, delta=1e-9)
             self.assertEqual([p["kind"] for p in d.points], ["extended", "folded"])
 
+    def test_transmission_extremes(self):
+        # seed 000, e = 0.8: mu_min = 90 deg - asin((l1 + e)/l2) at phi = 0; mu folds at 90 deg
+        # where cos phi = -e/l1
+        d = koppel.Mechanism.load(SLIDER_CRANK).dead_centres("mu")
+        self.assertTrue(d.has_extremes)
+        self.assertEqual(d.minimum["at"], "stationary")
+        self.assertAlmostEqual(d.minimum["input"], 0, delta=1e-9)
+        self.assertAlmostEqual(d.minimum["value"], 90 - math.degrees(math.asin((L1 + 0.8) / L2)), delta=1e-9)
+        self.assertEqual(d.maximum["at"], "fold")
+        self.assertAlmostEqual(d.maximum["input"], math.degrees(math.acos(-0.8 / L1)), delta=1e-9)
+        self.assertAlmostEqual(d.maximum["value"], 90, delta=1e-9)
+
     def test_range_and_pose(self):
         m = koppel.Mechanism.load(SLIDER_CRANK)
         r = m.range()

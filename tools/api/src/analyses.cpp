@@ -141,6 +141,13 @@ DeadCentres Model::FindDeadCentres(const std::string& output, std::optional<doub
     d.forward_angle = m.InputIsAngle() ? RadToDeg(r.phi_h) : 0.0;
     d.phase_ratio = m.InputIsAngle() ? r.phase_ratio : 0.0;
   }
+  d.has_extremes = Usable(r.extremes.status);
+  d.extremes_message = r.extremes.message;
+  if (d.has_extremes) {
+    d.minimum = {ToString(r.extremes.minimum.kind), InputShown(m, r.extremes.minimum.input), value(r.extremes.minimum.value)};
+    d.maximum = {ToString(r.extremes.maximum.kind), InputShown(m, r.extremes.maximum.input), value(r.extremes.maximum.value)};
+  }
+  for (double input : r.unresolved) d.unresolved.push_back(InputShown(m, input));
   d.singular_points = Shown(m, r.sweep.singular_points);
   d.gaps = Shown(m, r.sweep.gaps);
   return d;

@@ -5,6 +5,7 @@
 #include "plot_support.hpp"
 
 #include "koppel/analysis/dead_centres.hpp"
+#include "koppel/analysis/extremes.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/position.hpp"
 
@@ -131,17 +132,8 @@ PlotResult MuPlot(const Mechanism& m, const MuPlotOptions& options) {
   const SampledRun run = SampleMechanism(m, sweep);
   if (run.size() == 0) return Failed(run.message);
   const int column = run.Column(m, options.output, 0, 0);
-  // μ_min: the least sample, unless a refined stationary minimum lies lower.
-  int least = 0;
-  for (int i = 1; i < run.size(); ++i)
-    if (run.outputs(i, column) < run.outputs(least, column)) least = i;
-  double mu_min = run.outputs(least, column), at = run.inputs[least];
-  const DeadCentreReport stationary = FindDeadCentres(m, options.output, 0, options.range);
-  for (const DeadCentre& d : stationary.points)
-    if (d.second > 0 && d.value < mu_min) {
-      mu_min = d.value;
-      at = d.input;
-    }
+  // μ_min and where: a stationary point, a fold or an end of the range (extremes.hpp)
+  const OutputExtremes extremes = FindOutputExtremes(m, options.output, 0, options.range);
   Panel panel;
   panel.x = InputAxis(m, options.range);
   panel.title = "transmission angle " + DerivativeLabel(m, options.output, "", 0);
@@ -152,11 +144,14 @@ PlotResult MuPlot(const Mechanism& m, const MuPlotOptions& options) {
   panel.y = NiceAxis(DerivativeLabel(m, options.output, "", 0), std::min(0.0, low), std::max(90.0, high), true);
   panel.curves.push_back(std::move(curve));
   MarkGaps(m, run, panel, true);
-  const std::string input = m.drive.input_name == "phi" ? "φ" : m.drive.input_name;
-  char label[96];
-  std::snprintf(label, sizeof label, "μ_min = %.2f° at %s = %.2f%s", RadToDeg(mu_min), input.c_str(), ShownInput(m, at),
-                m.InputIsAngle() ? "°" : "");
-  panel.markers.push_back({{ShownInput(m, at), RadToDeg(mu_min)}, label, "minimum"});
+  if (Usable(extremes.status)) {
+    const double mu_min = extremes.minimum.value, at = extremes.minimum.input;
+    const std::string input = m.drive.input_name == "phi" ? "φ" : m.drive.input_name;
+    char label[96];
+    std::snprintf(label, sizeof label, "μ_min = %.2f° at %s = %.2f%s", RadToDeg(mu_min), input.c_str(), ShownInput(m, at),
+                  m.InputIsAngle() ? "°" : "");
+    panel.markers.push_back({{ShownInput(m, at), RadToDeg(mu_min)}, label, "minimum"});
+  }
   Figure figure;
   figure.title = m.name + ": transmission angle " + m.outputs[options.output].name;
   figure.panels.push_back(std::move(panel));
@@ -165,6 +160,9 @@ PlotResult MuPlot(const Mechanism& m, const MuPlotOptions& options) {
   if (!run.complete) {
     result.status = PlotStatus::kPartial;
     result.message = run.message + " (μ_min over the computed part)";
+  } else if (!Usable(extremes.status)) {
+    result.status = PlotStatus::kPartial;
+    result.message = "μ_min not found: " + extremes.message;
   }
   return result;
 }

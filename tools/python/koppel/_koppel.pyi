@@ -57,6 +57,11 @@ class DeadCentres:
     value_i: float
     forward_angle: float
     phase_ratio: float
+    has_extremes: bool
+    minimum: Optional[Dict[str, Any]]
+    maximum: Optional[Dict[str, Any]]
+    extremes_message: str
+    unresolved: List[float]
     singular_points: List[Dict[str, Any]]
     gaps: List[Tuple[float, float]]
     def brief(self) -> str: ...

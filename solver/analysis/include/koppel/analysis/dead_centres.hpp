@@ -1,9 +1,11 @@
 // Dead centres (Totlagen) of a scalar output: the inputs where its first-order transfer
-// function vanishes, found along a sweep (sign changes of y') and refined by Newton on y' with
-// y'' to 1e-12. Where the drive link (crank) and the link it drives (coupler) line up, the dead
-// centre is classified extended (Strecklage, äußere Totlage) or folded (Decklage, innere).
+// function vanishes, found along a sweep (sign changes of y', cyclically over whole turns, and
+// the range's ends; stationary_search.hpp) and refined by Newton on y' with y'' to 1e-12. Where
+// the drive link (crank) and the link it drives (coupler) line up, the dead centre is classified
+// extended (Strecklage, äußere Totlage) or folded (Decklage, innere).
 #pragma once
 
+#include "koppel/analysis/extremes.hpp"
 #include "koppel/analysis/status.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/position.hpp"
@@ -30,7 +32,15 @@ struct DeadCentreReport {
   AnalysisStatus status = AnalysisStatus::kNotRun;
   std::string message;
   SweepEvents sweep;  // of the sweep searched
-  std::vector<DeadCentre> points;  // in input order
+  // in input order; over whole turns of a rotating drive each once, its input within the first
+  // turn from `from` (a dead centre at the start within 1e-9 of it, possibly just below)
+  std::vector<DeadCentre> points;
+  // Sign changes of y' that are neither a dead centre nor a transmission angle's fold (their
+  // input, and why not refined in `message`): a dead centre may be missing there.
+  std::vector<double> unresolved;
+  // The output's least and largest value over the range, from the same search (extremes.hpp):
+  // for a transmission angle mu_min and mu_max.
+  OutputExtremes extremes;
   // For an output with one extended and one folded dead centre per turn (the classic crank
   // mechanisms; otherwise the maximum and minimum stand in for them): phi_a, phi_i, s_a, s_i,
   // stroke s_H = |s_a - s_i|, the crank angle of the forward stroke phi_H from phi_a to phi_i in

@@ -2,8 +2,10 @@
 // input range phi_P, how far an output s departs from proportionality to the input.
 //
 // Reference line: the tangent of s at the reference input (by default the flattest point of s',
-// i.e. the least |s''| in the range: the Flachpunkt). Δs is the width of the band parallel to
-// that line that holds s over the range (max - min of s - tangent). This is the definition that
+// i.e. the least |s''| in the range: the Flachpunkt, refined to the root of s'' where s'' changes
+// sign there). Δs is the width of the band parallel to that line that holds s over the range
+// (max - min of s - tangent; the extremes between samples refined by Newton on s' = slope, the
+// range sampled up to `to` whatever the resolution). This is the definition that
 // reproduces the document's reading example (112.5..247.5 deg: Δs = 0.018, Q_P = 1.5e-2); the
 // deviation from the chord (0.0050) or from the best minimax line (0.0030) do not.
 // Q_P = (Δs / l) / phi_P with phi_P in radians and l the reference length.

@@ -16,6 +16,7 @@
 //
 // The structural error (generated - desired output, radians or length) is evaluated by the
 // solver over the whole input range; it vanishes at the precision points of an exact design.
+// Its maximum is refined between the samples of the error curve (Brent's method).
 #pragma once
 
 #include "koppel/core/mechanism.hpp"
@@ -70,7 +71,10 @@ struct FunctionDesign {
   Mechanism mechanism;  // four-bar: four_bar_design.hpp (output "psi"); slider-crank: output "s"
   int output = 0;       // index of that output
   std::vector<StructuralErrorSample> error_curve;
-  double error_max = 0;           // max |error| over the curve
+  // max |error| over the input range: the largest sample refined between its neighbours
+  // (sampled_maximum.hpp), at x = error_max_x
+  double error_max = 0;
+  double error_max_x = 0;
   double error_at_precision = 0;  // max |error| at the precision points (solver)
 };
 

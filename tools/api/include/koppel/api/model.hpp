@@ -89,6 +89,13 @@ struct DeadCentrePoint {
   double second = 0; // its 2nd-order transfer function there: < 0 a maximum, > 0 a minimum
 };
 
+// The least or largest value of an output over the searched range, and where it is.
+struct OutputExtremePoint {
+  std::string at;    // "stationary" (a stationary point), "fold" (a transmission angle's 90 deg), "range end"
+  double input = 0;  // [deg | length]
+  double value = 0;  // [deg | length]
+};
+
 // The dead centres of a scalar output and, where they pair up, the stroke (koppel deadcentres).
 struct DeadCentres {
   AnalysisStatus status = AnalysisStatus::kNotRun;
@@ -99,6 +106,13 @@ struct DeadCentres {
   // output there; stroke = |value_a - value_i|; forward_angle: the crank's turn from input_a to
   // input_i (R drive, [deg]); phase_ratio = forward_angle / (360 - forward_angle).
   double input_a = 0, input_i = 0, value_a = 0, value_i = 0, stroke = 0, forward_angle = 0, phase_ratio = 0;
+  // The output's least and largest value over the range, from the same search (a transmission
+  // angle's mu_min and mu_max; koppel deadcentres --summary); false when they could not be had
+  // (extremes_message says why).
+  bool has_extremes = false;
+  OutputExtremePoint minimum, maximum;
+  std::string extremes_message;
+  std::vector<double> unresolved;  // [deg | length]: sign changes of y' not refined (a dead centre may be missing)
   std::vector<SingularPosition> singular_points;
   std::vector<InputGap> gaps;
   std::string Brief() const;

@@ -51,14 +51,7 @@ void Run(const Args& args) {
     Complain("--size/--fps/--frames: " + why);
     throw Exit{kExitBadInput};
   }
-  const plot::ExportResult r = plot::AnimateGif(file.mechanism, options, gif);
-  if (r.status == plot::PlotStatus::kFailed) {
-    Complain(args.file + ": " + r.message);
-    throw Exit{kExitFailed};
-  }
-  WriteOutput(args.out, r.bytes);
-  if (!r.message.empty()) Complain(args.file + ": " + r.message);
-  if (r.status == plot::PlotStatus::kPartial) throw Exit{kExitFailed};
+  WriteExportResult(args.file, args.out, plot::AnimateGif(file.mechanism, options, gif));
 }
 
 }  // namespace

@@ -36,4 +36,14 @@ plot::CycleOptions ReadCycleFlags(const MechanismFile& file, const CycleFlags& f
   return options;
 }
 
+void WriteExportResult(const std::string& file, const std::string& out, const plot::ExportResult& result) {
+  if (result.status == plot::PlotStatus::kFailed) {
+    Complain(file + ": " + result.message);
+    throw Exit{kExitFailed};
+  }
+  WriteOutput(out, result.bytes);
+  if (!result.message.empty()) Complain(file + ": " + result.message);
+  if (result.status == plot::PlotStatus::kPartial) throw Exit{kExitFailed};
+}
+
 }  // namespace koppel::cli

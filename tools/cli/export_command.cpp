@@ -26,15 +26,8 @@ void Run(const Args& args) {
   plot::WorkshopOptions options;
   options.cycle = ReadCycleFlags(file, args.cycle);
   if (!args.at.empty()) options.at = ParseNumberFlag("--at", args.at) * (m.InputIsAngle() ? DegToRad(1.0) : 1.0);
-  const plot::ExportResult r =
-      plot::ExportDxf(m, options, plot::DxfUnits(file.loads.metres_per_unit, file.loads.length_unit_given));
-  if (r.status == plot::PlotStatus::kFailed) {
-    Complain(args.file + ": " + r.message);
-    throw Exit{kExitFailed};
-  }
-  WriteOutput(args.out, r.bytes);
-  if (!r.message.empty()) Complain(args.file + ": " + r.message);
-  if (r.status == plot::PlotStatus::kPartial) throw Exit{kExitFailed};
+  const int units = plot::DxfUnits(file.loads.metres_per_unit, file.loads.length_unit_given);
+  WriteExportResult(args.file, args.out, plot::ExportDxf(m, options, units));
 }
 
 }  // namespace

@@ -2,28 +2,17 @@
 // Reference: the double rocker's limit positions (49.2 and 97.2 deg: no pose at 120 deg).
 #include "koppel/export/export.hpp"
 
-#include "support/mechanisms.hpp"
+#include "tools/plot/cycle_fixtures.hpp"
 
 #include "koppel/core/angles.hpp"
 
 #include <catch2/catch.hpp>
 
 namespace koppel {
-namespace {
-
-plot::CycleOptions Cycle(const Mechanism& m) {
-  plot::CycleOptions o;
-  o.sizes = plot::DefaultPartSizes(m);
-  o.sweep.to = 2 * kPi;
-  return o;
-}
-
-}  // namespace
-
 TEST_CASE("export: a DXF, or no file and why", "[export]") {
-  const Mechanism m = test::PlainFourBar(3, 1, 3.5, 3, DegToRad(70), {2, 3.4});
+  const Mechanism m = test::DoubleRocker();
   plot::WorkshopOptions o;
-  o.cycle = Cycle(m);
+  o.cycle = test::CycleOptionsFor(m);
   o.at = DegToRad(60);
   const plot::ExportResult ok = plot::ExportDxf(m, o, 0);
   CHECK(ok.status == plot::PlotStatus::kComplete);
@@ -37,9 +26,9 @@ TEST_CASE("export: a DXF, or no file and why", "[export]") {
 }
 
 TEST_CASE("animate: a GIF of the frames asked for", "[export]") {
-  const Mechanism m = test::PlainFourBar(3, 1, 3.5, 3, DegToRad(70), {2, 3.4});
+  const Mechanism m = test::DoubleRocker();
   plot::AnimationOptions o;
-  o.cycle = Cycle(m);
+  o.cycle = test::CycleOptionsFor(m);
   o.frames = 4;
   plot::GifOptions gif;
   gif.width = gif.height = 64;

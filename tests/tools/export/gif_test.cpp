@@ -4,7 +4,7 @@
 // a four-bar (seed 003) whose frames must differ where the links move and nowhere else.
 #include "koppel/export/gif.hpp"
 
-#include "support/mechanisms.hpp"
+#include "tools/plot/cycle_fixtures.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "koppel/core/limits.hpp"
@@ -18,8 +18,6 @@
 
 namespace koppel {
 namespace {
-
-const double kL2 = 2.5 * std::sqrt(3.0), kK = 25.0 / 3, kKappa = std::acos(5.0 / 9 * std::sqrt(3.0));
 
 // Each frame has its own colour table (a median cut of its changed pixels): the same picture in
 // two frames differs by a few levels in most pixels, and by more in a few rare colours (edge
@@ -76,13 +74,8 @@ Decoded Decode(const std::string& bytes) {
 }
 
 plot::AnimationScene Scene(int frames) {
-  const Mechanism m = test::FourBar(1, kL2, kL2, 4, kK, kKappa, +1);
-  plot::AnimationOptions o;
-  o.cycle.traced = plot::PointOutputs(m);
-  o.cycle.sizes = plot::DefaultPartSizes(m);
-  o.cycle.sweep.to = 2 * kPi;
-  o.frames = frames;
-  return plot::AnimateCycle(m, o);
+  const Mechanism m = test::MzcCrankRocker();
+  return plot::AnimateCycle(m, {test::CycleOptionsFor(m), frames});
 }
 
 }  // namespace

@@ -3,8 +3,7 @@
 // (tests/support/closed_forms) at each frame's crank angle.
 #include "koppel/plot/animation.hpp"
 
-#include "support/closed_forms.hpp"
-#include "support/mechanisms.hpp"
+#include "tools/plot/cycle_fixtures.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "koppel/core/limits.hpp"
@@ -19,21 +18,14 @@ namespace {
 // The solver converges to 1e-12 of the length scale.
 constexpr double kTolerance = 1e-9;
 
-const double kL2 = 2.5 * std::sqrt(3.0), kK = 25.0 / 3, kKappa = std::acos(5.0 / 9 * std::sqrt(3.0));
-
 plot::AnimationOptions Options(const Mechanism& m, int frames) {
-  plot::AnimationOptions o;
-  o.cycle.traced = plot::PointOutputs(m);
-  o.cycle.sizes = plot::DefaultPartSizes(m);
-  o.cycle.sweep.to = 2 * kPi;
-  o.frames = frames;
-  return o;
+  return {test::CycleOptionsFor(m), frames};
 }
 
 }  // namespace
 
 TEST_CASE("animation of seed 003: 36 frames, 10 deg apart, the crank at its angle", "[plot][animation]") {
-  const Mechanism m = test::FourBar(1, kL2, kL2, 4, kK, kKappa, +1);
+  const Mechanism m = test::MzcCrankRocker();
   const plot::AnimationScene scene = plot::AnimateCycle(m, Options(m, 36));
   REQUIRE(scene.status == plot::PlotStatus::kComplete);
   REQUIRE(scene.frames.size() == 36);
@@ -42,18 +34,16 @@ TEST_CASE("animation of seed 003: 36 frames, 10 deg apart, the crank at its angl
     const double phi = DegToRad(10.0 * i);
     CHECK_THAT(f.input, Catch::Matchers::WithinAbs(phi, 1e-12));
     CHECK(f.traced_up_to == f.input);
-    const auto rocker = test::FourBarRocker(1, kL2, kL2, 4, phi, +1);
-    REQUIRE(rocker);
     bool b = false;
     for (const plot::Part& p : f.parts)
-      for (const plot::Hole& h : p.holes) b |= p.link == "rocker" && (h.centre - rocker->b).norm() < kTolerance;
+      for (const plot::Hole& h : p.holes) b |= p.link == "rocker" && (h.centre - test::MzcB(phi)).norm() < kTolerance;
     CHECK(b);
   }
   CHECK_THAT(scene.frames[3].caption, Catch::Contains("φ = 30°"));
 }
 
 TEST_CASE("animation options: frames within the limit", "[plot][animation]") {
-  const Mechanism m = test::FourBar(1, kL2, kL2, 4, kK, kKappa, +1);
+  const Mechanism m = test::MzcCrankRocker();
   std::string why;
   CHECK_FALSE(Options(m, 0).IsValid(&why));
   CHECK_THAT(why, Catch::Contains("kMaxAnimationFrames"));

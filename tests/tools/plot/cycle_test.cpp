@@ -4,8 +4,7 @@
 // in equal steps; a rocker's range there and back).
 #include "koppel/plot/cycle.hpp"
 
-#include "support/closed_forms.hpp"
-#include "support/mechanisms.hpp"
+#include "tools/plot/cycle_fixtures.hpp"
 
 #include "koppel/core/angles.hpp"
 
@@ -24,8 +23,6 @@ constexpr double kTolerance = 1e-9;
 // A limit point is located by the range analysis to about 1e-9 rad (its bisection's resolution).
 constexpr double kLimitTolerance = 1e-7;
 
-const double kL2 = 2.5 * std::sqrt(3.0), kK = 25.0 / 3, kKappa = std::acos(5.0 / 9 * std::sqrt(3.0));
-
 SweepOptions FileSweep(double from_deg, double to_deg) {
   SweepOptions o;
   o.from = DegToRad(from_deg);
@@ -33,20 +30,18 @@ SweepOptions FileSweep(double from_deg, double to_deg) {
   return o;
 }
 
-// A Grashof double rocker (coupler shortest: catalog/entries/double-rocker.yaml), assembled above.
-Mechanism DoubleRocker() { return test::PlainFourBar(3, 1, 3.5, 3, DegToRad(70), {2, 3.4}); }
 
 }  // namespace
 
 TEST_CASE("cycle range: a crank turns fully, a rocker swings between its limits", "[plot][cycle]") {
-  const Expected<plot::CycleRange> turn = plot::CycleRangeOf(test::FourBar(1, kL2, kL2, 4, kK, kKappa, +1), FileSweep(0, 360));
+  const Expected<plot::CycleRange> turn = plot::CycleRangeOf(test::MzcCrankRocker(), FileSweep(0, 360));
   REQUIRE(turn);
   CHECK(turn->full_turn);
   CHECK(turn->from == 0);
   CHECK_THAT(turn->to, WithinAbs(2 * kPi, 1e-12));
   CHECK(turn->note.empty());
 
-  const Expected<plot::CycleRange> swing = plot::CycleRangeOf(DoubleRocker(), FileSweep(52, 95));
+  const Expected<plot::CycleRange> swing = plot::CycleRangeOf(test::DoubleRocker(), FileSweep(52, 95));
   REQUIRE(swing);
   CHECK_FALSE(swing->full_turn);
   std::vector<double> limits = test::FourBarLimits(3, 1, 3.5, 3);
@@ -80,7 +75,7 @@ TEST_CASE("cycle inputs: a turn in equal steps, a swing there and back", "[plot]
 }
 
 TEST_CASE("cycle samples: the coupler curve of a full turn, closed, on the closed form", "[plot][cycle]") {
-  const Mechanism m = test::FourBar(1, kL2, kL2, 4, kK, kKappa, +1);
+  const Mechanism m = test::MzcCrankRocker();
   const plot::CycleRange turn{0, 2 * kPi, true, ""};
   const Expected<plot::CycleSamples> samples = plot::SampleCycle(m, turn, plot::PointOutputs(m));
   REQUIRE(samples);
@@ -92,7 +87,7 @@ TEST_CASE("cycle samples: the coupler curve of a full turn, closed, on the close
   CHECK(k.runs[0].size() == plot::kCycleSegments);  // the repeated point at 360 deg left out
   for (size_t i = 0; i < k.runs[0].size(); ++i) {
     const double phi = k.inputs[0][i];
-    CHECK((k.runs[0][i] - test::FourBarCouplerPoint(1, kL2, kL2, 4, kK, kKappa, phi, +1)).norm() < kTolerance);
+    CHECK((k.runs[0][i] - test::MzcK(phi)).norm() < kTolerance);
   }
   // cut at an input: the points up to it
   const auto cut = k.UpTo(DegToRad(90.5));
@@ -102,7 +97,7 @@ TEST_CASE("cycle samples: the coupler curve of a full turn, closed, on the close
 }
 
 TEST_CASE("cycle samples: a rocker's curve is open", "[plot][cycle]") {
-  const Mechanism m = DoubleRocker();
+  const Mechanism m = test::DoubleRocker();
   const Expected<plot::CycleRange> range = plot::CycleRangeOf(m, FileSweep(52, 95));
   REQUIRE(range);
   PointRef b{m.FindLink("coupler"), m.links[m.FindLink("coupler")].FindPoint("B")};

@@ -5,8 +5,7 @@
 // plain distances (independent of how the contour is built).
 #include "koppel/plot/parts.hpp"
 
-#include "support/closed_forms.hpp"
-#include "support/mechanisms.hpp"
+#include "tools/plot/cycle_fixtures.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "koppel/plot/sampled_run.hpp"
@@ -25,9 +24,6 @@ using Catch::Matchers::WithinAbs;
 
 // The solver converges to 1e-12 of the length scale; the contour is built from sines and cosines.
 constexpr double kTolerance = 1e-9;
-
-// seed 003 (mzc-crank-rocker): l1 = 1, l2 = l3 = 5/2 sqrt 3, l4 = 4, AK = 25/3, angle BAK = kappa
-const double kL2 = 2.5 * std::sqrt(3.0), kK = 25.0 / 3, kKappa = std::acos(5.0 / 9 * std::sqrt(3.0));
 
 struct Solved {
   Eigen::VectorXd q;
@@ -117,7 +113,7 @@ TEST_CASE("a rounded hull keeps its distance from the points it is drawn around"
 }
 
 TEST_CASE("four-bar parts: holes at the joints, plates around the points", "[plot][parts]") {
-  const Mechanism m = test::FourBar(1, kL2, kL2, 4, kK, kKappa, +1);
+  const Mechanism m = test::MzcCrankRocker();
   const double phi = DegToRad(30);
   const Solved s = Solve(m, phi);
   const plot::PartSizes sizes{0.3, 0.1};
@@ -127,9 +123,7 @@ TEST_CASE("four-bar parts: holes at the joints, plates around the points", "[plo
   CHECK(parts[0].outline.arcs.empty());  // the frame has no plate
   // the closed form's joint positions
   const Vec a0(0, 0), b0(4, 0), a(std::cos(phi), std::sin(phi));
-  const auto rocker = test::FourBarRocker(1, kL2, kL2, 4, phi, +1);
-  REQUIRE(rocker);
-  const Vec b = rocker->b, k = test::FourBarCouplerPoint(1, kL2, kL2, 4, kK, kKappa, phi, +1);
+  const Vec b = test::MzcB(phi), k = test::MzcK(phi);
   const std::map<std::string, std::vector<Vec>> holes = {
       {"frame", {a0, b0}}, {"crank", {a0, a}}, {"coupler", {a, b}}, {"rocker", {b0, b}}};
   for (const auto& [link, at] : holes) {
@@ -180,7 +174,7 @@ TEST_CASE("slider-crank parts: the frame's slot over the slider's travel", "[plo
 
 TEST_CASE("part sizes: defaults and the pin inside the plate", "[plot][parts]") {
   // the shortest joint distance of a moving link is the crank's, 1: W = 1/4, D = W/2
-  const plot::PartSizes d = plot::DefaultPartSizes(test::FourBar(1, kL2, kL2, 4, kK, kKappa, +1));
+  const plot::PartSizes d = plot::DefaultPartSizes(test::MzcCrankRocker());
   CHECK(d.plate_width == 0.25);
   CHECK(d.pin_diameter == 0.125);
   std::string why;

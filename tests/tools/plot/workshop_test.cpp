@@ -3,8 +3,7 @@
 // (tests/support/closed_forms) and its limit positions (a double rocker cannot reach 120 deg).
 #include "koppel/plot/workshop.hpp"
 
-#include "support/closed_forms.hpp"
-#include "support/mechanisms.hpp"
+#include "tools/plot/cycle_fixtures.hpp"
 
 #include "koppel/core/angles.hpp"
 
@@ -18,22 +17,12 @@ namespace {
 // The solver converges to 1e-12 of the length scale.
 constexpr double kTolerance = 1e-9;
 
-const double kL2 = 2.5 * std::sqrt(3.0), kK = 25.0 / 3, kKappa = std::acos(5.0 / 9 * std::sqrt(3.0));
-
-plot::WorkshopOptions Options(const Mechanism& m, double at) {
-  plot::WorkshopOptions o;
-  o.cycle.traced = plot::PointOutputs(m);
-  o.cycle.sizes = plot::DefaultPartSizes(m);
-  o.cycle.sweep.from = 0;
-  o.cycle.sweep.to = 2 * kPi;
-  o.at = at;
-  return o;
-}
+plot::WorkshopOptions Options(const Mechanism& m, double at) { return {test::CycleOptionsFor(m), at}; }
 
 }  // namespace
 
 TEST_CASE("workshop drawing of seed 003 at 30 deg", "[plot][workshop]") {
-  const Mechanism m = test::FourBar(1, kL2, kL2, 4, kK, kKappa, +1);
+  const Mechanism m = test::MzcCrankRocker();
   const double phi = DegToRad(30);
   const plot::WorkshopDrawing d = plot::DrawWorkshop(m, Options(m, phi));
   REQUIRE(d.status == plot::PlotStatus::kComplete);
@@ -41,13 +30,11 @@ TEST_CASE("workshop drawing of seed 003 at 30 deg", "[plot][workshop]") {
   CHECK(d.range.full_turn);
   REQUIRE(d.parts.size() == 4);
   // the crank's second hole is A = (cos phi, sin phi); the rocker's moving one is B
-  const auto rocker = test::FourBarRocker(1, kL2, kL2, 4, phi, +1);
-  REQUIRE(rocker);
   bool a = false, b = false;
   for (const plot::Part& p : d.parts)
     for (const plot::Hole& h : p.holes) {
       a |= p.link == "crank" && (h.centre - Eigen::Vector2d(std::cos(phi), std::sin(phi))).norm() < kTolerance;
-      b |= p.link == "rocker" && (h.centre - rocker->b).norm() < kTolerance;
+      b |= p.link == "rocker" && (h.centre - test::MzcB(phi)).norm() < kTolerance;
     }
   CHECK(a);
   CHECK(b);
@@ -56,7 +43,7 @@ TEST_CASE("workshop drawing of seed 003 at 30 deg", "[plot][workshop]") {
 }
 
 TEST_CASE("workshop drawing beyond a limit: no pose, and why", "[plot][workshop]") {
-  const Mechanism m = test::PlainFourBar(3, 1, 3.5, 3, DegToRad(70), {2, 3.4});  // swings 49.2 .. 97.2 deg
+  const Mechanism m = test::DoubleRocker();  // swings 49.2 .. 97.2 deg
   const plot::WorkshopDrawing d = plot::DrawWorkshop(m, Options(m, DegToRad(120)));
   CHECK(d.status == plot::PlotStatus::kFailed);
   CHECK_THAT(d.message, Catch::Contains("cannot reach"));

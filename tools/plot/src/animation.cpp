@@ -24,15 +24,14 @@ AnimationScene AnimateCycle(const Mechanism& m, const AnimationOptions& options)
     scene.message = message;
     return scene;
   };
-  const Expected<CycleRange> range = CycleRangeOf(m, options.cycle.sweep);
-  if (!range) return fail(range.error());
-  scene.range = *range;
-  const Expected<CycleSamples> samples = SampleCycle(m, *range, options.cycle.traced, options.cycle.sweep.continuation);
+  const Expected<CycleSamples> samples = SampleCycle(m, options.cycle);
   if (!samples) return fail(samples.error());
+  const CycleRange& range = samples->range;
+  scene.range = range;
   scene.curves = samples->curves;
   std::vector<std::string> problems;
   if (!samples->run.complete) problems.push_back(samples->run.message);
-  const std::vector<double> inputs = CycleInputs(*range, options.frames);
+  const std::vector<double> inputs = CycleInputs(range, options.frames);
   for (int i = 0; i < options.frames; ++i) {
     const Expected<Eigen::VectorXd> pose = PoseAt(m, samples->run, inputs[i]);
     if (!pose) {
@@ -42,7 +41,7 @@ AnimationScene AnimateCycle(const Mechanism& m, const AnimationOptions& options)
     }
     AnimationFrame frame;
     frame.input = inputs[i];
-    frame.traced_up_to = TracedUpTo(*range, options.frames, i);
+    frame.traced_up_to = TracedUpTo(range, options.frames, i);
     frame.caption = m.name + "   " + InputName(m) + " = " + Num(ShownInput(m, inputs[i]), 1) + (m.InputIsAngle() ? "°" : "");
     frame.parts = PartsAtPose(m, *pose, samples->travel, options.cycle.sizes);
     scene.frames.push_back(std::move(frame));
@@ -50,7 +49,7 @@ AnimationScene AnimateCycle(const Mechanism& m, const AnimationOptions& options)
   if (scene.frames.empty()) return fail(problems.empty() ? "no frame could be computed" : problems.back());
   for (const std::string& p : problems) scene.message += (scene.message.empty() ? "" : "; ") + p;
   if (!problems.empty()) scene.status = PlotStatus::kPartial;
-  if (!range->note.empty()) scene.message += (scene.message.empty() ? "" : "; ") + range->note;
+  if (!range.note.empty()) scene.message += (scene.message.empty() ? "" : "; ") + range.note;
   return scene;
 }
 

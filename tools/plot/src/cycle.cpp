@@ -115,6 +115,12 @@ Expected<CycleSamples> SampleCycle(const Mechanism& m, const CycleRange& range, 
   return samples;
 }
 
+Expected<CycleSamples> SampleCycle(const Mechanism& m, const CycleOptions& options) {
+  const Expected<CycleRange> range = CycleRangeOf(m, options.sweep);
+  if (!range) return Expected<CycleSamples>::Error(range.error());
+  return SampleCycle(m, *range, options.traced, options.sweep.continuation);
+}
+
 bool CycleOptions::IsValid(std::string* why) const {
   if (!sizes.IsValid(why)) return false;
   if (!std::isfinite(sweep.from) || !std::isfinite(sweep.to)) *why = "the sweep's ends must be finite";

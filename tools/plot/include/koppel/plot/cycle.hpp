@@ -82,6 +82,11 @@ struct CycleOptions {
   bool IsValid(std::string* why) const;  // sizes valid, sweep ends finite
 };
 
+// The cycle of CycleRangeOf(options.sweep) sampled with the options' points (SampleCycle above);
+// an error when the range or the samples cannot be had. samples.range.note says where the
+// range is not the branch's own.
+Expected<CycleSamples> SampleCycle(const Mechanism& mechanism, const CycleOptions& options);
+
 // The mechanism's point outputs, in file order: what is traced unless the user names points.
 std::vector<TracedPoint> PointOutputs(const Mechanism& mechanism);
 

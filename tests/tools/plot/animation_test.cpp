@@ -53,3 +53,24 @@ TEST_CASE("animation options: frames within the limit", "[plot][animation]") {
 }
 
 }  // namespace koppel
+
+namespace koppel {
+
+TEST_CASE("animation of a parallelogram: frames at its branch points have their poses", "[plot][animation]") {
+  // the crank lines up with the frame at 0 and 180 deg: branch points the sweep passes through,
+  // where a walk cannot stop; those frames take the sweep's own pose (A at (cos phi, sin phi))
+  const Mechanism m = test::PlainFourBar(1, 3, 1, 3, kPi / 2, {3, 1});
+  const plot::AnimationScene scene = plot::AnimateCycle(m, {test::CycleOptionsFor(m), 24});
+  CHECK(scene.status == plot::PlotStatus::kComplete);
+  INFO(scene.message);
+  REQUIRE(scene.frames.size() == 24);
+  for (const plot::AnimationFrame& f : {scene.frames[0], scene.frames[12]})
+    for (const plot::Part& p : f.parts)
+      if (p.link == "crank") {
+        bool a = false;
+        for (const plot::Hole& h : p.holes) a |= (h.centre - Eigen::Vector2d(std::cos(f.input), std::sin(f.input))).norm() < kTolerance;
+        CHECK(a);
+      }
+}
+
+}  // namespace koppel

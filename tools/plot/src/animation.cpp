@@ -33,7 +33,7 @@ AnimationScene AnimateCycle(const Mechanism& m, const AnimationOptions& options)
   if (!samples->run.complete) problems.push_back(samples->run.message);
   const std::vector<double> inputs = CycleInputs(range, options.frames);
   for (int i = 0; i < options.frames; ++i) {
-    const Expected<Eigen::VectorXd> pose = PoseAt(m, samples->run, inputs[i]);
+    const Expected<Eigen::VectorXd> pose = PoseOnCycle(m, *samples, inputs[i]);
     if (!pose) {
       problems.push_back("frame " + std::to_string(i) + " at " + InputName(m) + " = " + Num(ShownInput(m, inputs[i]), 6) +
                          " left out: " + pose.error());

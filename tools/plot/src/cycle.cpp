@@ -121,6 +121,15 @@ Expected<CycleSamples> SampleCycle(const Mechanism& m, const CycleOptions& optio
   return SampleCycle(m, *range, options.traced, options.sweep.continuation);
 }
 
+Expected<Eigen::VectorXd> PoseOnCycle(const Mechanism& m, const CycleSamples& samples, double input) {
+  const SampledRun& run = samples.run;
+  // a sample at the input: the same input up to the rounding of from + i step
+  const double same = 1e-12 * std::max(1.0, std::abs(input));
+  for (int i = 0; i < run.size(); ++i)
+    if (std::abs(run.inputs[i] - input) <= same) return Eigen::VectorXd(run.poses.row(i).transpose());
+  return PoseAt(m, run, input);
+}
+
 bool CycleOptions::IsValid(std::string* why) const {
   if (!sizes.IsValid(why)) return false;
   if (!std::isfinite(sweep.from) || !std::isfinite(sweep.to)) *why = "the sweep's ends must be finite";

@@ -24,7 +24,7 @@ WorkshopDrawing DrawWorkshop(const Mechanism& m, const WorkshopOptions& options)
   const Expected<CycleSamples> samples = SampleCycle(m, options.cycle);
   if (!samples) return Failed(samples.error());
   const double input = options.at.value_or(m.hint.input);
-  const Expected<Eigen::VectorXd> pose = PoseAt(m, samples->run, input);
+  const Expected<Eigen::VectorXd> pose = PoseOnCycle(m, *samples, input);
   if (!pose) return Failed("cannot reach " + InputName(m) + " = " + Num(ShownInput(m, input), 6) + ": " + pose.error());
   WorkshopDrawing drawing;
   drawing.input = input;

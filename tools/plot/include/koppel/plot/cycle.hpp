@@ -87,6 +87,11 @@ struct CycleOptions {
 // range is not the branch's own.
 Expected<CycleSamples> SampleCycle(const Mechanism& mechanism, const CycleOptions& options);
 
+// The pose at `input` on the cycle's branch: the run's own pose where a sample lies at the input
+// (so a frame at a branch point, where the sweep passed but a walk cannot stop, still has its
+// pose), else continued from the nearest sample (PoseAt).
+Expected<Eigen::VectorXd> PoseOnCycle(const Mechanism& mechanism, const CycleSamples& samples, double input);
+
 // The mechanism's point outputs, in file order: what is traced unless the user names points.
 std::vector<TracedPoint> PointOutputs(const Mechanism& mechanism);
 

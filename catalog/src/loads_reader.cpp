@@ -48,6 +48,7 @@ class LoadsReader {
     if (length.IsScalar()) {
       if (const auto named = LengthUnits().find(length.Scalar()); named != LengthUnits().end()) {
         loads_.metres_per_unit = named->second;
+        loads_.length_unit_given = true;
         return;
       }
     }
@@ -58,6 +59,7 @@ class LoadsReader {
       return;
     }
     loads_.metres_per_unit = *metres;
+    loads_.length_unit_given = true;
   }
 
   void ReadMass(const std::string& link_name, const YAML::Node& node) {

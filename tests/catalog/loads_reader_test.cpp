@@ -112,6 +112,10 @@ TEST_CASE("length units by name or in metres; SI by default", "[loads]") {
   CHECK(ParseMechanismText(Replace(kGood, "units: {length: mm}", "units: {length: in}"), "x.yaml").loads.metres_per_unit == 0.0254);
   CHECK(ParseMechanismText(Replace(kGood, "units: {length: mm}", "units: {length: 1/1000}"), "x.yaml").loads.metres_per_unit == 0.001);
   CHECK(ParseMechanismText(Replace(kGood, "units: {length: mm}\n", ""), "x.yaml").loads.metres_per_unit == 1.0);
+  // whether the file names its unit (a DXF says so in $INSUNITS, else it is unitless)
+  CHECK(ParseMechanismText(kGood, "x.yaml").loads.length_unit_given);
+  CHECK(ParseMechanismText(Replace(kGood, "units: {length: mm}", "units: {length: 1/1000}"), "x.yaml").loads.length_unit_given);
+  CHECK_FALSE(ParseMechanismText(Replace(kGood, "units: {length: mm}\n", ""), "x.yaml").loads.length_unit_given);
 }
 
 TEST_CASE("the writer writes masses and loads that read back the same", "[loads]") {
@@ -120,6 +124,11 @@ TEST_CASE("the writer writes masses and loads that read back the same", "[loads]
   const MechanismFile g = ParseMechanismText(text, "again.yaml");
   const Loads &a = f.loads, &b = g.loads;
   CHECK(b.metres_per_unit == a.metres_per_unit);
+  CHECK(b.length_unit_given == a.length_unit_given);
+  // a file in metres that says so still says so when written again
+  const MechanismFile metres = ParseMechanismText(Replace(kGood, "units: {length: mm}", "units: {length: m}"), "m.yaml");
+  const std::string metres_text = WriteMechanismYaml(metres.mechanism, "metres", metres.sweep, metres.parameters.Values(), &metres.loads);
+  CHECK(ParseMechanismText(metres_text, "m2.yaml").loads.length_unit_given);
   CHECK(b.gravity == a.gravity);
   REQUIRE(b.masses.size() == a.masses.size());
   for (size_t i = 0; i < a.masses.size(); ++i) {

@@ -25,5 +25,7 @@ void AddViewCommand(CLI::App& app);
 void AddForcesCommand(CLI::App& app);    // forces_command.cpp
 void AddSimulateCommand(CLI::App& app);  // simulate_command.cpp
 void AddBenchCommand(CLI::App& app);     // bench_command.cpp, benchmarks in tools/bench
+void AddExportCommand(CLI::App& app);    // export_command.cpp: DXF (tools/export)
+void AddAnimateCommand(CLI::App& app);   // animate_command.cpp: GIF (tools/export)
 
 }  // namespace koppel::cli

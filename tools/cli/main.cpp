@@ -46,6 +46,8 @@ int Run(int argc, char** argv) {
   koppel::cli::AddSimulateCommand(app);
   koppel::cli::AddAtlasCommand(app);
   koppel::cli::AddBenchCommand(app);
+  koppel::cli::AddExportCommand(app);
+  koppel::cli::AddAnimateCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -10,11 +10,9 @@ namespace koppel::plot {
 
 double ShownInput(const Mechanism& m, double input) { return m.InputIsAngle() ? RadToDeg(input) : input; }
 
-std::string InputLabel(const Mechanism& m) {
-  const std::string& name = m.drive.input_name;
-  const std::string shown = name == "phi" ? "φ" : name;
-  return shown + (m.InputIsAngle() ? " [deg]" : " [length]");
-}
+std::string InputName(const Mechanism& m) { return m.drive.input_name == "phi" ? "φ" : m.drive.input_name; }
+
+std::string InputLabel(const Mechanism& m) { return InputName(m) + (m.InputIsAngle() ? " [deg]" : " [length]"); }
 
 std::string DerivativeLabel(const Mechanism& m, int output, const std::string& component, int k) {
   std::string name = m.outputs[output].name + component;
@@ -72,6 +70,26 @@ void MarkGaps(const Mechanism& m, const SampledRun& run, Panel& panel, bool labe
     panel.shaded.emplace_back(std::min(a, b), std::max(a, b));
   }
   for (double s : run.singular) panel.rules.push_back({ShownInput(m, s), label ? "singular" : "", "singular"});
+}
+
+std::vector<Eigen::Vector2d> ConvexHull(std::vector<Eigen::Vector2d> p) {
+  using Vec = Eigen::Vector2d;
+  std::sort(p.begin(), p.end(), [](const Vec& a, const Vec& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  p.erase(std::unique(p.begin(), p.end(), [](const Vec& a, const Vec& b) { return (a - b).norm() < 1e-12; }), p.end());
+  if (p.size() < 3) return p;
+  auto cross = [](const Vec& o, const Vec& a, const Vec& b) { return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x(); };
+  std::vector<Vec> hull(2 * p.size());
+  size_t k = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  for (size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && cross(hull[k - 2], hull[k - 1], p[i - 1]) <= 0) --k;
+    hull[k++] = p[i - 1];
+  }
+  hull.resize(k - 1);
+  return hull;
 }
 
 }  // namespace koppel::plot

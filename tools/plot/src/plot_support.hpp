@@ -14,6 +14,8 @@ namespace koppel::plot {
 // Input as shown: degrees for an R drive, length for a P drive.
 double ShownInput(const Mechanism& mechanism, double input);
 std::string InputLabel(const Mechanism& mechanism);
+// The input's name as shown: φ for phi, else as the file names it.
+std::string InputName(const Mechanism& mechanism);
 // "s' [length/rad]", "ψ [deg]", "ψ'' [rad/rad²]" for order k.
 std::string DerivativeLabel(const Mechanism& mechanism, int output, const std::string& component, int k);
 // Output value as shown: degrees for an angle output at order 0.
@@ -28,6 +30,10 @@ bool YRange(const std::vector<std::vector<Eigen::Vector2d>>& runs, double* low, 
 // A finite input range with a non-zero step and at most `max_samples` samples (a picture has a
 // few thousand at most: more only bloats the file). *why says what is wrong.
 bool RangeIsValid(const SweepOptions& range, int max_samples, std::string* why);
+
+// Andrew's monotone chain: the convex hull, counter-clockwise, collinear points dropped (one
+// point for points that all coincide, two for points on one line).
+std::vector<Eigen::Vector2d> ConvexHull(std::vector<Eigen::Vector2d> points);
 
 // The gaps and singular positions of the run marked on a panel (shaded and as rules).
 void MarkGaps(const Mechanism& mechanism, const SampledRun& run, Panel& panel, bool label);

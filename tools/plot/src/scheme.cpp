@@ -3,6 +3,7 @@
 
 #include "koppel/plot/label_layout.hpp"
 #include "koppel/plot/svg.hpp"
+#include "plot_support.hpp"
 #include "koppel/solver/constraints.hpp"
 
 #include <Eigen/Geometry>
@@ -58,26 +59,6 @@ std::string Transform(const View& view, const LinkPose& pose) {
   const double s = view.scale, c = std::cos(pose.theta), n = std::sin(pose.theta);
   return "matrix(" + Num(s * c, 6) + " " + Num(-s * n, 6) + " " + Num(-s * n, 6) + " " + Num(-s * c, 6) + " " +
          Num(view.ox + s * pose.origin.x(), 3) + " " + Num(view.oy - s * pose.origin.y(), 3) + ")";
-}
-
-// Andrew's monotone chain: the convex hull, counter-clockwise, collinear points dropped.
-std::vector<Vec> ConvexHull(std::vector<Vec> p) {
-  std::sort(p.begin(), p.end(), [](const Vec& a, const Vec& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
-  p.erase(std::unique(p.begin(), p.end(), [](const Vec& a, const Vec& b) { return (a - b).norm() < 1e-12; }), p.end());
-  if (p.size() < 3) return p;
-  auto cross = [](const Vec& o, const Vec& a, const Vec& b) { return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x(); };
-  std::vector<Vec> hull(2 * p.size());
-  size_t k = 0;
-  for (size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-    hull[k++] = p[i];
-  }
-  for (size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
-    while (k >= t && cross(hull[k - 2], hull[k - 1], p[i - 1]) <= 0) --k;
-    hull[k++] = p[i - 1];
-  }
-  hull.resize(k - 1);
-  return hull;
 }
 
 // A point's label: where the point is (px), the text, and where the layout put it.

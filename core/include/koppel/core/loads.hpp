@@ -60,6 +60,7 @@ struct SpringDamper {
 
 struct Loads {
   double metres_per_unit = 1.0;                       // the mechanism's length unit [m]
+  bool length_unit_given = false;                     // the file says its unit (`units: {length: ...}`)
   Eigen::Vector2d gravity = Eigen::Vector2d::Zero();   // [m/s^2], global frame
   std::vector<LinkMass> masses;                       // at most one per link
   std::vector<PointForce> forces;

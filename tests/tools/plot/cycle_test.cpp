@@ -1,0 +1,110 @@
+// One cycle of the drive: its range, the frames' inputs, the traced curves. References: the
+// four-bar's limit positions by the law of cosines (tests/support/closed_forms FourBarLimits),
+// the circle-intersection coupler point of seed 003, and the definition of a cycle (a full turn
+// in equal steps; a rocker's range there and back).
+#include "koppel/plot/cycle.hpp"
+
+#include "tools/plot/cycle_fixtures.hpp"
+
+#include "koppel/core/angles.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace koppel {
+namespace {
+
+using Catch::Matchers::WithinAbs;
+
+// The solver converges to 1e-12 of the length scale.
+constexpr double kTolerance = 1e-9;
+// A limit point is located by the range analysis to about 1e-9 rad (its bisection's resolution).
+constexpr double kLimitTolerance = 1e-7;
+
+SweepOptions FileSweep(double from_deg, double to_deg) {
+  SweepOptions o;
+  o.from = DegToRad(from_deg);
+  o.to = DegToRad(to_deg);
+  return o;
+}
+
+
+}  // namespace
+
+TEST_CASE("cycle range: a crank turns fully, a rocker swings between its limits", "[plot][cycle]") {
+  const Expected<plot::CycleRange> turn = plot::CycleRangeOf(test::MzcCrankRocker(), FileSweep(0, 360));
+  REQUIRE(turn);
+  CHECK(turn->full_turn);
+  CHECK(turn->from == 0);
+  CHECK_THAT(turn->to, WithinAbs(2 * kPi, 1e-12));
+  CHECK(turn->note.empty());
+
+  const Expected<plot::CycleRange> swing = plot::CycleRangeOf(test::DoubleRocker(), FileSweep(52, 95));
+  REQUIRE(swing);
+  CHECK_FALSE(swing->full_turn);
+  std::vector<double> limits = test::FourBarLimits(3, 1, 3.5, 3);
+  std::sort(limits.begin(), limits.end());
+  // the branch assembled at 70 deg lies between the limits either side of it
+  const auto above = std::upper_bound(limits.begin(), limits.end(), DegToRad(70));
+  REQUIRE(above != limits.begin());
+  REQUIRE(above != limits.end());
+  CHECK_THAT(swing->from, WithinAbs(*(above - 1), kLimitTolerance));
+  CHECK_THAT(swing->to, WithinAbs(*above, kLimitTolerance));
+}
+
+TEST_CASE("cycle inputs: a turn in equal steps, a swing there and back", "[plot][cycle]") {
+  const plot::CycleRange turn{0, 2 * kPi, true, ""};
+  const std::vector<double> t = plot::CycleInputs(turn, 36);
+  REQUIRE(t.size() == 36);
+  for (int i = 0; i < 36; ++i) CHECK_THAT(t[i], WithinAbs(DegToRad(10.0 * i), 1e-12));  // never 360 again
+  CHECK(plot::TracedUpTo(turn, 36, 20) == t[20]);
+
+  const plot::CycleRange swing{1, 2, false, ""};
+  const std::vector<double> s = plot::CycleInputs(swing, 12);
+  REQUIRE(s.size() == 12);
+  CHECK(s[0] == 1);
+  CHECK(s[6] == 2);
+  for (int i = 1; i < 12; ++i) CHECK_THAT(s[i], WithinAbs(s[12 - i], 1e-15));  // the same way back
+  for (int i = 1; i <= 6; ++i) CHECK(s[i] > s[i - 1]);
+  // the curves grow on the way there and stay whole on the way back
+  CHECK(plot::TracedUpTo(swing, 12, 3) == s[3]);
+  CHECK(plot::TracedUpTo(swing, 12, 9) == 2);
+  CHECK(plot::CycleInputs(swing, 1) == std::vector<double>{1});
+}
+
+TEST_CASE("cycle samples: the coupler curve of a full turn, closed, on the closed form", "[plot][cycle]") {
+  const Mechanism m = test::MzcCrankRocker();
+  const plot::CycleRange turn{0, 2 * kPi, true, ""};
+  const Expected<plot::CycleSamples> samples = plot::SampleCycle(m, turn, plot::PointOutputs(m));
+  REQUIRE(samples);
+  REQUIRE(samples->curves.size() == 1);
+  const plot::TracedCurve& k = samples->curves[0];
+  CHECK(k.name == "K");
+  CHECK(k.closed);
+  REQUIRE(k.runs.size() == 1);
+  CHECK(k.runs[0].size() == plot::kCycleSegments);  // the repeated point at 360 deg left out
+  for (size_t i = 0; i < k.runs[0].size(); ++i) {
+    const double phi = k.inputs[0][i];
+    CHECK((k.runs[0][i] - test::MzcK(phi)).norm() < kTolerance);
+  }
+  // cut at an input: the points up to it
+  const auto cut = k.UpTo(DegToRad(90.5));
+  REQUIRE(cut.size() == 1);
+  CHECK(cut[0].size() == 91);
+  CHECK(k.UpTo(-1).empty());
+}
+
+TEST_CASE("cycle samples: a rocker's curve is open", "[plot][cycle]") {
+  const Mechanism m = test::DoubleRocker();
+  const Expected<plot::CycleRange> range = plot::CycleRangeOf(m, FileSweep(52, 95));
+  REQUIRE(range);
+  PointRef b{m.FindLink("coupler"), m.links[m.FindLink("coupler")].FindPoint("B")};
+  const Expected<plot::CycleSamples> samples = plot::SampleCycle(m, *range, {{b, "B"}});
+  REQUIRE(samples);
+  CHECK_FALSE(samples->curves[0].closed);
+  CHECK(samples->curves[0].runs[0].size() == plot::kCycleSegments + 1);
+}
+
+}  // namespace koppel

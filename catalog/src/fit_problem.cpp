@@ -18,7 +18,7 @@ namespace {
 // memory for every evaluation, and the card (a third to two thirds of a catalog entry) does not
 // make the mechanism. Precondition: the file was read without problems.
 std::string MechanismTextWithoutCard(const std::string& path) {
-  YAML::Node document = YAML::LoadFile(path);
+  YAML::Node document = ParseYamlText(ReadInputText(path), path);
   document.remove("catalog");
   YAML::Emitter out;
   out << document;

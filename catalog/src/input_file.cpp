@@ -1,16 +1,12 @@
 #include "input_file.hpp"
 
 #include "koppel/catalog/mechanism_file.hpp"
+#include "koppel/core/input_file.hpp"
 #include "koppel/core/limits.hpp"
 
 #include <yaml-cpp/eventhandler.h>
 
-#include <cerrno>
-#include <cstring>
-#include <fcntl.h>
 #include <sstream>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace koppel {
 namespace {
@@ -46,36 +42,11 @@ class DepthCheck : public YAML::EventHandler {
 }  // namespace
 
 std::string ReadInputText(const std::string& path) {
-  // O_NONBLOCK: opening a FIFO that has no writer must not wait for one
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) Fail(path, std::string("cannot open file: ") + std::strerror(errno));
-  struct stat info {};
-  if (::fstat(fd, &info) != 0 || S_ISDIR(info.st_mode)) {
-    ::close(fd);
-    Fail(path, "cannot read: it is a directory, not a mechanism file");
+  try {
+    return io::ReadInputFile(path);
+  } catch (const io::FileError& e) {
+    Fail(path, e.reason());
   }
-  // reads block again (a pipe's writer may be slow); a FIFO without a writer reads as empty
-  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-  std::string text;
-  char buffer[65536];
-  while (true) {
-    const ssize_t n = ::read(fd, buffer, sizeof buffer);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      const int error = errno;
-      ::close(fd);
-      Fail(path, std::string("cannot read file: ") + std::strerror(error));
-    }
-    if (n == 0) break;
-    if (text.size() + static_cast<size_t>(n) > kMaxInputBytes) {
-      ::close(fd);
-      Fail(path, "the file is larger than the input limit of " + std::to_string(kMaxInputBytes) +
-                     " bytes (kMaxInputBytes, see README 'Limits'); is it a mechanism file?");
-    }
-    text.append(buffer, static_cast<size_t>(n));
-  }
-  ::close(fd);
-  return text;
 }
 
 YAML::Node ParseYamlText(const std::string& text, const std::string& file_name) {

@@ -1,7 +1,7 @@
-// Reading an input file (a mechanism, a fit problem) with the limits of koppel/core/limits.hpp:
-// at most kMaxInputBytes are read, whatever the file is (a regular file, a pipe, a device such
-// as /dev/zero), and a YAML text is parsed only after its nesting depth was found within
-// kMaxYamlDepth. Private to the catalog.
+// Reading an input file of the catalog's formats (a mechanism, a fit problem, a spec, poses,
+// points, a motor curve) through the one file reader (koppel/core/input_file.hpp: at most
+// kMaxInputBytes, registered as an input of the run), its problems as InputError; and a YAML text
+// parsed only after its nesting depth was found within kMaxYamlDepth. Private to the catalog.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -10,7 +10,8 @@
 
 namespace koppel {
 
-// The whole file. Throws InputError ("cannot open", "is a directory", larger than the limit).
+// The whole file. Throws InputError ("cannot open", "is a directory", larger than the limit, an
+// output of this run).
 std::string ReadInputText(const std::string& path);
 
 // The first YAML document of `text`. Throws InputError with file:line:column for a syntax error

@@ -2,28 +2,14 @@
 
 #include "koppel/catalog/mechanism_file.hpp"
 #include "koppel/core/angles.hpp"
+#include "input_file.hpp"
 #include "yaml_reader.hpp"
 
 #include <fmt/core.h>
 
-#include <fstream>
-#include <sstream>
 
 namespace koppel {
 namespace {
-
-// The file's root map, or InputError with the syntax error's position.
-YAML::Node LoadRoot(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({Diagnostic{path, 0, 0, "", "cannot open file"}});
-  std::stringstream text;
-  text << in.rdbuf();
-  try {
-    return YAML::Load(text.str());
-  } catch (const YAML::Exception& e) {
-    throw InputError({Diagnostic{path, e.mark.line + 1, e.mark.column + 1, "", "YAML syntax error: " + e.msg}});
-  }
-}
 
 // [from, to] with from != to.
 bool Range(YamlReader& r, const YAML::Node& node, const std::string& key, double* from, double* to) {
@@ -45,8 +31,10 @@ bool Range(YamlReader& r, const YAML::Node& node, const std::string& key, double
 
 }  // namespace
 
-MotionSpecFile ReadMotionSpec(const std::string& path) {
-  const YAML::Node root = LoadRoot(path);
+MotionSpecFile ReadMotionSpec(const std::string& path) { return ParseMotionSpecText(ReadInputText(path), path); }
+
+MotionSpecFile ParseMotionSpecText(const std::string& text, const std::string& path) {
+  const YAML::Node root = ParseYamlText(text, path);
   MotionSpecFile spec;
   spec.path = path;
   YamlReader r(path, nullptr);
@@ -77,8 +65,10 @@ MotionSpecFile ReadMotionSpec(const std::string& path) {
   return spec;
 }
 
-FunctionSpecFile ReadFunctionSpec(const std::string& path) {
-  const YAML::Node root = LoadRoot(path);
+FunctionSpecFile ReadFunctionSpec(const std::string& path) { return ParseFunctionSpecText(ReadInputText(path), path); }
+
+FunctionSpecFile ParseFunctionSpecText(const std::string& text, const std::string& path) {
+  const YAML::Node root = ParseYamlText(text, path);
   FunctionSpecFile spec;
   spec.path = path;
   YamlReader r(path, nullptr);

@@ -1,7 +1,9 @@
-// Output files (tools/cli/output_file.cpp, README "Output files"): -o never writes through a
-// symbolic link, never replaces a FIFO, a directory, a device or the input file, never follows a
-// link planted where the old code put its temporary file, leaves nothing behind when a write
-// fails, and a failed write to standard output exits 1 with a message.
+// Output files (tools/cli/output_file.cpp, core/output_file.hpp, README "Output files"): -o never
+// writes through a symbolic link, never replaces a FIFO, a directory, a device or any file the
+// command reads (every repro of issue 23, item 2), -o DIR naming a file is refused before any
+// work (item 3), a read-only target is refused as `>` would refuse it and a closed pipe ends
+// koppel by SIGPIPE (item 13); a link planted where the old code put its temporary file is never
+// followed, a failed write leaves nothing behind, and a failed write to standard output exits 1.
 #include "support/run.hpp"
 #include "support/temp_file.hpp"
 
@@ -10,8 +12,10 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <csignal>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace koppel {
@@ -181,6 +185,108 @@ TEST_CASE("a failed write to standard output exits 1 with a message", "[cli][out
   const test::RunResult closed = Shell(Koppel() + " --version >&-");
   CHECK(closed.exit_code == 1);
   CHECK_THAT(closed.err, Catch::Contains("cannot write to standard output"));
+}
+
+TEST_CASE("every command refuses an output that is one of its inputs, before any work (issue 23, item 2)", "[cli][output]") {
+  test::TempDir dir;
+  const std::string d = dir.path().string();
+  const std::string spec = dir.Write("f.yaml", test::ReadText(test::TestDataPath("function-log10.yaml")));
+  const std::string poses = dir.Write("P.yaml", test::ReadText(test::TestDataPath("motion-four-poses.yaml")));
+  const std::string points = dir.Write("pts.csv", test::ReadText(test::TestDataPath("path-points.csv")));
+  const std::string motor = dir.Write("m.csv", "rpm,Nm\n0,40\n2900,0\n3100,-5\n");
+  REQUIRE(test::RunKoppel("atlas build --count 300 --quiet -o " + d + "/a.bin").exit_code == 0);
+  REQUIRE(test::RunKoppel("synth chart slider-crank --phi0 110:130:10 --quiet -o " + d + "/chart.csv").exit_code == 0);
+  const std::string atlas = test::ReadText(d + "/a.bin"), chart = test::ReadText(d + "/chart.csv");
+  const std::string hard_link = d + "/same.yaml";
+  fs::create_hard_link(spec, hard_link);
+  const std::vector<std::string> commands = {
+      "synth function " + spec + " --error-curve " + spec,
+      "synth function " + spec + " -o " + spec,
+      "synth function " + spec + " --output-file " + hard_link,  // the same file by another name
+      "synth motion " + poses + " --output-file " + poses,
+      "synth motion " + poses + " --curves " + poses,
+      "synth path " + points + " --atlas " + d + "/a.bin --output-file " + d + "/a.bin",
+      "synth path " + points + " --atlas " + d + "/a.bin --output-file " + points,
+      "simulate " + test::TestDataPath("slider-crank-loads.yaml") + " --motor " + motor + " --t 0:1 -o " + motor,
+      "plot " + d + "/chart.csv -o " + d + "/chart.csv",
+  };
+  for (const std::string& command : commands) {
+    const test::RunResult r = test::RunKoppel(command);
+    INFO(command << "\n" << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains("input file") && Catch::Contains("never writes over"));
+    CHECK(r.out.empty());
+    CHECK(r.err.find("koppel synth") == std::string::npos);  // no summary: nothing was computed
+  }
+  CHECK(test::ReadText(spec) == test::ReadText(test::TestDataPath("function-log10.yaml")));
+  CHECK(test::ReadText(poses) == test::ReadText(test::TestDataPath("motion-four-poses.yaml")));
+  CHECK(test::ReadText(points) == test::ReadText(test::TestDataPath("path-points.csv")));
+  CHECK(test::ReadText(motor) == "rpm,Nm\n0,40\n2900,0\n3100,-5\n");
+  CHECK(test::ReadText(d + "/a.bin") == atlas);
+  CHECK(test::ReadText(d + "/chart.csv") == chart);
+  // two outputs naming one file
+  const test::RunResult both = test::RunKoppel("synth function " + spec + " -o " + d + "/x.yaml --error-curve " + d + "/./x.yaml");
+  CHECK(both.exit_code == 2);
+  CHECK_THAT(both.err, Catch::Contains("also the output of"));
+}
+
+TEST_CASE("-o DIR naming a file or a device is refused before any work (issue 23, item 3)", "[cli][output]") {
+  test::TempDir dir;
+  const std::string somefile = dir.Write("somefile", "mine\n");
+  REQUIRE(test::RunKoppel("atlas build --count 300 --quiet -o " + (dir.path() / "a.bin").string()).exit_code == 0);
+  const std::vector<std::string> commands = {
+      "synth motion " + test::TestDataPath("motion-five-poses.yaml") + " -o " + somefile,
+      "synth motion " + test::TestDataPath("motion-five-poses.yaml") + " -o /dev/null",
+      "synth path " + test::TestDataPath("path-points.csv") + " --atlas " + (dir.path() / "a.bin").string() + " -o " + somefile,
+      "synth path " + test::TestDataPath("path-points.csv") + " --atlas " + (dir.path() / "a.bin").string() + " -o " + somefile + "/sub",
+      "cognates " + test::CatalogEntryPath("parallel-crank") + " --point K -o " + somefile,
+      "synth mzc --lambda 1 --cognate-dir " + somefile,
+  };
+  for (const std::string& command : commands) {
+    const test::RunResult r = test::RunKoppel(command);
+    INFO(command << "\n" << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains("will not write"));
+    CHECK(r.err.find("internal error") == std::string::npos);
+    CHECK(r.err.find("koppel synth") == std::string::npos);  // refused before the work's summary
+  }
+  CHECK(test::ReadText(somefile) == "mine\n");
+}
+
+TEST_CASE("a read-only target is refused as > would refuse it (issue 23, item 13)", "[cli][output]") {
+  test::TempDir dir;
+  ::chmod(dir.path().c_str(), 0777);  // anyone may make files here: only the target's own mode decides
+  const std::string target = dir.Write("ro.csv", "kept\n");
+  ::chmod(target.c_str(), 0444);
+  // root writes any file with `>`, so as root the rule is shown as the user nobody (setpriv, util-linux)
+  const std::string as_user = ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "";
+  const test::RunResult r = Shell(as_user + Koppel() + " " + Analyze(target));
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.err, Catch::Contains("you may not write to it (mode 0444"));
+  CHECK(test::ReadText(target) == "kept\n");
+  // the shell agrees: `>` fails on it too
+  CHECK(Shell(as_user + "sh -c 'echo x > " + target + "'").exit_code != 0);
+}
+
+TEST_CASE("a reader that closes the pipe early ends koppel by SIGPIPE, quietly (issue 23, item 13)", "[cli][output]") {
+  int fds[2];
+  REQUIRE(::pipe(fds) == 0);
+  ::close(fds[0]);  // the reader is gone before koppel writes
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::dup2(fds[1], 1);
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, 2);
+    ::signal(SIGPIPE, SIG_DFL);  // as a shell starts it
+    ::execl(KOPPEL_EXECUTABLE, "koppel", "analyze", Entry().c_str(), "--step", "30", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::close(fds[1]);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  // README "Exit codes": the shell reports 128 + 13 = 141, like any filter in `| head`
+  CHECK(WIFSIGNALED(status));
+  CHECK(WTERMSIG(status) == SIGPIPE);
 }
 
 }  // namespace koppel

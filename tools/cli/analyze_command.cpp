@@ -134,7 +134,7 @@ void AddAnalyzeCommand(CLI::App& app) {
   cmd->add_option("--order", args->order, fmt::format("Highest transfer-function order in the table, 0..{} (default 2)", kMaxOrder));
   AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_option("--format", args->format, "csv (default) or json");
-  cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout");
+  OutputFile(cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout"));
   cmd->callback([args] { RunAnalyze(*args); });
 }
 

@@ -72,7 +72,7 @@ void AddAnimateCommand(CLI::App& app) {
   cmd->add_option("--fps", args->fps, "Frames per second, 0.1 .. 50 (default 24)");
   AddCycleFlags(cmd, args->cycle);
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
-  cmd->add_option("-o,--output-file", args->out, "Write the GIF to this file instead of stdout");
+  OutputFile(cmd->add_option("-o,--output-file", args->out, "Write the GIF to this file instead of stdout"));
   cmd->callback([args] { Run(*args); });
 }
 

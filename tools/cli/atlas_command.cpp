@@ -3,7 +3,7 @@
 #include "common.hpp"
 
 #include "koppel/synthesis/atlas.hpp"
-#include "atlas_file.hpp"
+#include "koppel/synthesis/atlas_file.hpp"
 
 #include <fmt/core.h>
 
@@ -105,7 +105,7 @@ void AddAtlasCommand(CLI::App& app) {
   build->add_option("--count", args->count, "Curves in the whole atlas (every shard together)")->required();
   build->add_option("--seed", args->seed, "Seed of the draws (default 1)");
   build->add_option("--shard", args->shard, "k/n: build only the k-th of n parts (0 <= k < n)");
-  build->add_option("-o,--output", args->out, "The atlas file to write")->required();
+  OutputFile(build->add_option("-o,--output", args->out, "The atlas file to write")->required());
   build->add_option("--threads", args->threads, "Threads (default: one per core)");
   build->add_flag("--quiet", args->quiet, "No summary on stderr");
   build->callback([args] { Build(*args); });
@@ -113,7 +113,7 @@ void AddAtlasCommand(CLI::App& app) {
                                         "Joins atlases (the shards of one build, or builds of different seeds) into one, ordered by seed and\n"
                                         "index; refuses a curve that appears twice. Example: koppel atlas merge part0.bin part1.bin -o atlas.bin");
   merge->add_option("atlases", args->inputs, "The atlas files")->required();
-  merge->add_option("-o,--output", args->out, "The merged atlas file")->required();
+  OutputFile(merge->add_option("-o,--output", args->out, "The merged atlas file")->required());
   merge->add_flag("--quiet", args->quiet, "No summary on stderr");
   merge->callback([args] { Merge(*args); });
 }

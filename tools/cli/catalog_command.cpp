@@ -223,7 +223,7 @@ void AddCatalogCommand(CLI::App& app) {
   auto common = [&](CLI::App* sub) {
     sub->add_option("--catalog", args->directory, "Catalog directory (default: the built-in one)");
     sub->add_option("--format", args->format, "table (default, for the terminal), csv or json");
-    sub->add_option("-o,--output-file", args->out, "Write to this file instead of stdout");
+    OutputFile(sub->add_option("-o,--output-file", args->out, "Write to this file instead of stdout"));
   };
   CLI::App* list = cmd->add_subcommand("list", "List every entry: id, kind, links, joints, classes, title.");
   common(list);

@@ -80,7 +80,7 @@ void AddClassifyCommand(CLI::App& app) {
   cmd->add_option("file", args->file, "Mechanism YAML file")->required();
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
   cmd->add_option("--format", args->format, "csv (default) or json");
-  cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout");
+  OutputFile(cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout"));
   cmd->callback([args] { Run(*args); });
 }
 

@@ -26,8 +26,7 @@ void Run(const Args& args) {
     Complain(args.file + ": " + c.message);
     throw Exit{c.status == DesignStatus::kReanalysisFailed ? kExitFailed : kExitBadInput};
   }
-  std::error_code ec;
-  std::filesystem::create_directories(args.dir, ec);
+  MakeOutputDirectory(args.dir);
   const std::string note = "Roberts–Chebyshev cognate of " + file.path + " (koppel cognates): traces the same curve of K.\n";
   const SweepDefaults sweep = file.sweep;
   // cognate 1 is driven by a link that follows the original coupler: sweep its own input range,
@@ -76,10 +75,10 @@ void AddCognatesCommand(CLI::App& app) {
       "Example: koppel cognates catalog/entries/mzc-crank-rocker.yaml --point K -o cognates/");
   cmd->add_option("file", args->file, "Mechanism YAML file (a four-bar of R joints, driven at a frame pivot)")->required();
   cmd->add_option("--point", args->point, "The coupler point: a point output (K), link.point, or a point name")->required();
-  cmd->add_option("-o,--dir", args->dir, "Directory for the two cognate files")->required();
+  OutputDirectory(cmd->add_option("-o,--dir", args->dir, "Directory for the two cognate files")->required());
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
   cmd->add_option("--format", args->format, "csv (default) or json, for the printed dimensions");
-  cmd->add_option("--output-file", args->out, "Write the dimensions to this file instead of stdout");
+  OutputFile(cmd->add_option("--output-file", args->out, "Write the dimensions to this file instead of stdout"));
   cmd->callback([args] { Run(*args); });
 }
 

@@ -20,7 +20,6 @@ MechanismFile LoadMechanism(const std::string& path, const std::vector<std::stri
   try {
     std::vector<std::pair<std::string, std::string>> overrides;
     for (const std::string& s : sets) overrides.push_back(ParseAssignment(s));
-    NoteInputFile(path);
     MechanismFile file = ReadMechanismFile(path, overrides);
     // one drive needs mobility 1: anything else is a modelling error, not a solver failure
     const MobilityReport mobility = CheckMobility(file.mechanism);

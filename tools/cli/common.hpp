@@ -11,6 +11,10 @@
 #include <string>
 #include <vector>
 
+namespace CLI {
+class Option;
+}  // namespace CLI
+
 namespace koppel::cli {
 
 inline constexpr int kExitOk = 0;
@@ -29,16 +33,20 @@ MechanismFile LoadMechanism(const std::string& path, const std::vector<std::stri
 // A number given on the command line as a formula ("5/6", "2*sqrt(3)"). Exit{2} on error.
 double ParseNumberFlag(const std::string& flag, const std::string& text);
 
-// Writes `text` to `path`, or to stdout when path is empty or "-" (output_file.cpp). A file is
-// written atomically: a temporary file made by mkstemp (O_EXCL, unpredictable name) in the
-// target's folder, renamed into place, removed on any failure. Refused with Exit{2}: a target
-// that is a symbolic link (never written through), a directory, a FIFO, a device or socket, or a
-// file this run read (NoteInputFile), and a folder where no file can be made. Exit{1} when a
-// write fails (disk full, file too large, stdout closed or full).
-void WriteOutput(const std::string& path, const std::string& text);
+// Marks a command-line option as naming an output file (-o FILE, --yaml, --curves) or a
+// directory that files are written into (-o DIR); returns it. Once the command line is parsed,
+// before a command reads any input or begins its work, main() claims every target given
+// (ClaimOutputs): koppel/core/output_file.hpp says what is refused (exit 2).
+CLI::Option* OutputFile(CLI::Option* option);
+CLI::Option* OutputDirectory(CLI::Option* option);
+void ClaimOutputs();
 
-// Remembers a file this run reads, so that WriteOutput never replaces it.
-void NoteInputFile(const std::string& path);
+// Writes `text` to `path` atomically (io::WriteFileAtomically: io::FileError, which main() turns
+// into exit 2 for a refused target and 1 for a failed write), or to stdout when path is empty or
+// "-" (Exit{1} when stdout is closed or full).
+void WriteOutput(const std::string& path, const std::string& text);
+// Makes the directory of -o DIR and its missing parents (io::MakeOutputDirectory).
+void MakeOutputDirectory(const std::string& path);
 
 // Flushes and closes stdout at the end of a run; a failed write that was not yet reported is
 // reported and turns exit code 0 into 1. Returns the exit code to use.

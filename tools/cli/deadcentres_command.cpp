@@ -168,7 +168,7 @@ void AddDeadCentresCommand(CLI::App& app) {
   AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_flag("--summary", args->summary, "Print the stroke summary (a transmission angle: its extremes) instead of the dead centres");
   cmd->add_option("--format", args->format, "csv (default) or json (both tables)");
-  cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout");
+  OutputFile(cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout"));
   cmd->callback([args] { Run(*args); });
 }
 

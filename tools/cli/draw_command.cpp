@@ -116,7 +116,7 @@ void AddDrawCommand(CLI::App& app) {
   cmd->add_option("--step", args->step, "Input step of the sweep (default: the file's sweep)");
   AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
-  cmd->add_option("-o,--output-file", args->out, "Write the SVG to this file instead of stdout");
+  OutputFile(cmd->add_option("-o,--output-file", args->out, "Write the SVG to this file instead of stdout"));
   cmd->callback([args] { Run(*args); });
 }
 

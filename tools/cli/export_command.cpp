@@ -50,7 +50,7 @@ void AddExportCommand(CLI::App& app) {
   cmd->add_option("--at", args->at, "Input of the pose drawn [deg for an R drive] (default: the assembly hint's input)");
   AddCycleFlags(cmd, args->cycle);
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
-  cmd->add_option("-o,--output-file", args->out, "Write the drawing to this file instead of stdout");
+  OutputFile(cmd->add_option("-o,--output-file", args->out, "Write the drawing to this file instead of stdout"));
   cmd->callback([args] { Run(*args); });
 }
 

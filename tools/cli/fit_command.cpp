@@ -32,7 +32,6 @@ void Run(const Args& args) {
     for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
     throw Exit{kExitBadInput};
   }
-  NoteInputFile(args.problem), NoteInputFile(problem.mechanism_path);  // -o/--yaml never replace them
   if (!args.threads.empty()) problem.options.threads = static_cast<int>(ParseNumberFlag("--threads", args.threads));
   std::string why;
   if (!problem.options.IsValid(&why)) {
@@ -127,8 +126,8 @@ void AddFitSubcommand(CLI::App& synth) {
       "its tolerance (`tolerance:`, default 1e-6 in the target's unit) or the design does not assemble over `require`.\n"
       "Example: koppel synth fit problem.yaml -o fitted.yaml");
   cmd->add_option("problem", args->problem, "Fit problem YAML file")->required();
-  cmd->add_option("-o,--yaml", args->yaml, "Write the fitted mechanism as a YAML file");
-  cmd->add_option("--output-file", args->out, "Write the report to this file instead of stdout");
+  OutputFile(cmd->add_option("-o,--yaml", args->yaml, "Write the fitted mechanism as a YAML file"));
+  OutputFile(cmd->add_option("--output-file", args->out, "Write the report to this file instead of stdout"));
   cmd->add_option("--format", args->format, "csv (default) or json");
   cmd->add_flag("--quiet", args->quiet, "Do not print each start's Ceres report on stderr");
   cmd->add_option("--threads", args->threads, "Threads for the starts (default: one per core)");

@@ -2,6 +2,9 @@
 #include "commands.hpp"
 #include "common.hpp"
 
+#include "koppel/core/file_error.hpp"
+#include "koppel/core/temporary_files.hpp"
+
 #include <glog/logging.h>
 
 #include <exception>
@@ -48,6 +51,9 @@ int Run(int argc, char** argv) {
   koppel::cli::AddBenchCommand(app);
   koppel::cli::AddExportCommand(app);
   koppel::cli::AddAnimateCommand(app);
+  // parse flags -> claim the outputs -> the command reads its inputs and works: a target that may
+  // not be written is refused before anything is read or computed
+  app.parse_complete_callback(koppel::cli::ClaimOutputs);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -56,6 +62,9 @@ int Run(int argc, char** argv) {
     return code == 0 ? 0 : koppel::cli::kExitBadInput;
   } catch (const koppel::cli::Exit& e) {
     return e.code;
+  } catch (const koppel::io::FileError& e) {
+    koppel::cli::Complain(e.what());
+    return e.kind() == koppel::io::FileError::Kind::kWriteFailed ? koppel::cli::kExitFailed : koppel::cli::kExitBadInput;
   } catch (const std::exception& e) {
     koppel::cli::Complain(std::string("internal error: ") + e.what());
     return koppel::cli::kExitFailed;
@@ -67,5 +76,8 @@ int Run(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   QuietSolverLogging(argv[0]);
+  // SIGINT, SIGTERM, SIGHUP remove a half-written output's temporary file; SIGPIPE keeps its
+  // default: a reader that closes the pipe early (| head) ends koppel quietly, as any filter
+  koppel::io::RemoveTemporaryFilesOnSignals();
   return koppel::cli::FinishStandardOutput(Run(argc, argv));
 }

@@ -6,11 +6,10 @@
 #include "sweep_report.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/input_file.hpp"
 #include "koppel/plot/forces_plot.hpp"
 #include "koppel/plot/plots.hpp"
 
-#include <fstream>
-#include <sstream>
 
 namespace koppel::cli {
 namespace {
@@ -41,14 +40,7 @@ void Finish(const Args& args, const plot::PlotResult& r) {
 }
 
 void RunChart(const Args& args) {
-  std::ifstream in(args.file);
-  if (!in) {
-    Complain(args.file + ": cannot read the file");
-    throw Exit{kExitBadInput};
-  }
-  std::stringstream text;
-  text << in.rdbuf();
-  const plot::PlotResult r = plot::ChartPlot(text.str(), args.file);
+  const plot::PlotResult r = plot::ChartPlot(io::ReadInputFile(args.file), args.file);
   if (r.status == plot::PlotStatus::kFailed) {
     Complain(r.message);
     throw Exit{kExitBadInput};
@@ -172,7 +164,7 @@ void AddPlotCommand(CLI::App& app) {
   cmd->add_option("--step", args->step, "Input step (default: the file's sweep)");
   AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
-  cmd->add_option("-o,--output-file", args->out, "Write the SVG to this file instead of stdout");
+  OutputFile(cmd->add_option("-o,--output-file", args->out, "Write the SVG to this file instead of stdout"));
   cmd->callback([args] { Run(*args); });
 }
 

@@ -102,7 +102,7 @@ void AddProportionalCommand(CLI::App& app) {
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
   AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_option("--format", args->format, "csv (default) or json");
-  cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout");
+  OutputFile(cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout"));
   cmd->callback([args] { Run(*args); });
 }
 

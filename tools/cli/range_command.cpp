@@ -76,7 +76,7 @@ void AddRangeCommand(CLI::App& app) {
   AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
   cmd->add_option("--format", args->format, "csv (default) or json");
-  cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout");
+  OutputFile(cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout"));
   cmd->callback([args] { Run(*args); });
 }
 

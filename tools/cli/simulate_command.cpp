@@ -5,12 +5,13 @@
 #include "sweep_report.hpp"
 
 #include "koppel/analysis/simulation.hpp"
+#include "koppel/catalog/motor_curve.hpp"
 #include "koppel/core/angles.hpp"
 
 #include <fmt/core.h>
 
 #include <filesystem>
-#include <fstream>
+#include <iostream>
 #include <sstream>
 
 namespace koppel::cli {
@@ -46,23 +47,24 @@ std::pair<double, double> ParsePair(const std::string& flag, const std::string& 
   return {ParseNumberFlag(flag, text.substr(0, comma)), ParseNumberFlag(flag, text.substr(comma + 1))};
 }
 
-// A motor curve: "speed:torque,speed:torque,..." or a file of "speed,torque" lines (a header line
-// and '#' comments are skipped). Speeds in rpm (length units/s for a P drive).
+// A motor curve: "speed:torque,speed:torque,..." or a file of "speed,torque" lines
+// (koppel/catalog/motor_curve.hpp). Speeds in rpm (length units/s for a P drive).
 DriveLaw ParseMotor(const std::string& text, bool angle) {
   DriveLaw law;
   law.kind = DriveLaw::Kind::kMotor;
   std::vector<std::pair<std::string, std::string>> points;
-  if (std::filesystem::is_regular_file(text)) {
-    std::ifstream in(text);
-    std::string line;
-    for (int number = 1; std::getline(in, line); ++number) {
-      if (line.empty() || line[0] == '#') continue;
-      const auto comma = line.find(',');
-      if (comma == std::string::npos) BadInput(text + ":" + std::to_string(number) + ": expected 'speed,torque'");
-      const std::string speed = line.substr(0, comma);
-      if (number == 1 && !speed.empty() && std::isalpha(static_cast<unsigned char>(speed[0]))) continue;  // a header
-      points.emplace_back(speed, line.substr(comma + 1));
-      if (points.size() > 100000) BadInput(text + ": a motor curve of more than 100000 points");
+  if (std::filesystem::exists(text)) {
+    // a file (koppel/catalog/motor_curve.hpp), read within the input limit whatever it is
+    try {
+      const MotorCurveFile curve = ReadMotorCurve(text);
+      for (size_t i = 0; i < curve.speeds.size(); ++i) {
+        law.speeds.push_back(curve.speeds[i] * (angle ? kRpm : 1.0));
+        law.torques.push_back(curve.torques[i]);
+      }
+      return law;
+    } catch (const InputError& e) {
+      for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
+      throw Exit{kExitBadInput};
     }
   } else {
     std::stringstream list(text);
@@ -182,7 +184,7 @@ void AddSimulateCommand(CLI::App& app) {
   cmd->add_option("--tolerance", args->tolerance, "Relative and absolute error per step of the integrator (default 1e-10)");
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE (a formula; repeatable)");
   cmd->add_option("--format", args->format, "csv (default) or json");
-  cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout");
+  OutputFile(cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout"));
   cmd->callback([args] { RunSimulate(*args); });
 }
 

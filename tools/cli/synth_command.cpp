@@ -349,6 +349,7 @@ void RunMzc(const Args& args) {
                                               {lo, hi, (hi - lo) / 200}));
   }
   if (!args.cognates_dir.empty() && c.ok()) {
+    MakeOutputDirectory(args.cognates_dir);
     WriteOutput(args.cognates_dir + "/" + c.first.name + ".yaml",
                 WriteMechanismYaml(c.first, "Crank-rocker cognate of a Meyer zur Capellen linkage (koppel synth mzc).", {0, 360, 1}));
   }
@@ -363,7 +364,7 @@ void AddSynthCommand(CLI::App& app) {
   cmd->require_subcommand(1);
   auto common = [&](CLI::App* sub) {
     sub->add_option("--format", args->format, "csv (default) or json");
-    sub->add_option("--output-file", args->out, "Write the table to this file instead of stdout");
+    OutputFile(sub->add_option("--output-file", args->out, "Write the table to this file instead of stdout"));
   };
 
   CLI::App* dc = cmd->add_subcommand(
@@ -399,7 +400,7 @@ void AddSynthCommand(CLI::App& app) {
                                          "(cw is the mirror image, the document's 'mathematisch negativ')");
   dc->add_option("--stroke", args->stroke, "Stroke s0 (slider-crank)");
   dc->add_option("--offset", args->offset, "Offset |e| (slider-crank; default: best mu_min)");
-  dc->add_option("-o,--yaml", args->yaml, "Write the mechanism as a YAML file");
+  OutputFile(dc->add_option("-o,--yaml", args->yaml, "Write the mechanism as a YAML file"));
   common(dc);
   dc->callback([args] { RunDeadCentre(*args); });
 
@@ -415,7 +416,7 @@ void AddSynthCommand(CLI::App& app) {
   chart->add_option("--phi0", args->phi0, "phi0 range FROM:TO:STEP [deg]");
   chart->add_option("--psi0", args->psi0, "psi0 range FROM:TO:STEP [deg] (crank-rocker)");
   chart->add_option("--rocker-sense", args->rocker_sense, "same (default), opposite or both (crank-rocker)");
-  chart->add_option("-o,--output-file", args->out, "Write the chart to this file instead of stdout");
+  OutputFile(chart->add_option("-o,--output-file", args->out, "Write the chart to this file instead of stdout"));
   chart->add_option("--format", args->format, "csv (default) or json");
   chart->add_flag("--quiet", args->quiet, "No count of designs on stderr");
   chart->callback([args] { RunChart(*args); });
@@ -429,8 +430,8 @@ void AddSynthCommand(CLI::App& app) {
   mzc->add_option("--lambda", args->lambda, "lambda, 0.5 < lambda <= 1.5 (a formula: 5/6)");
   mzc->add_option("--kappa", args->kappa, "Coupler angle kappa [deg] instead of lambda");
   mzc->add_option("--D", args->diameter, "Inflection-circle diameter D (default 1)");
-  mzc->add_option("-o,--yaml", args->yaml, "Write the double rocker as a YAML file");
-  mzc->add_option("--cognate-dir", args->cognates_dir, "Also write the crank-rocker cognate into this directory");
+  OutputFile(mzc->add_option("-o,--yaml", args->yaml, "Write the double rocker as a YAML file"));
+  OutputDirectory(mzc->add_option("--cognate-dir", args->cognates_dir, "Also write the crank-rocker cognate into this directory"));
   common(mzc);
   mzc->callback([args] { RunMzc(*args); });
 

@@ -88,9 +88,9 @@ void AddFunctionSubcommand(CLI::App& synth) {
       "whole range (deg, or length) by the solver. Exit 1 when the design does not run through the whole input range.\n"
       "Example: koppel synth function log10.yaml --error-curve error.csv -o log10-generator.yaml");
   cmd->add_option("spec", args->spec, "SPEC.yaml")->required();
-  cmd->add_option("-o,--yaml", args->yaml, "Write the mechanism as a YAML file");
-  cmd->add_option("--error-curve", args->error_curve, "Write the structural error over the range to this CSV file");
-  cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout");
+  OutputFile(cmd->add_option("-o,--yaml", args->yaml, "Write the mechanism as a YAML file"));
+  OutputFile(cmd->add_option("--error-curve", args->error_curve, "Write the structural error over the range to this CSV file"));
+  OutputFile(cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout"));
   cmd->add_option("--format", args->format, "csv (default) or json");
   cmd->callback([args] { Run(*args); });
 }

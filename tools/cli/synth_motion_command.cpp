@@ -154,7 +154,7 @@ void Run(const Args& args) {
   for (size_t i = 0; i < table.columns.size(); ++i) csv += (i ? "," : "") + table.columns[i];
   csv += "\n";
   const size_t shown = top > 0 ? std::min<size_t>(top, result.four_bars.size()) : result.four_bars.size();
-  if (!args.dir.empty()) std::filesystem::create_directories(args.dir);
+  if (!args.dir.empty()) MakeOutputDirectory(args.dir);
   for (size_t i = 0; i < shown; ++i) {
     const MotionFourBar& f = result.four_bars[i];
     for (double v : {f.crank.centre.x(), f.crank.centre.y(), f.crank.circle.x(), f.crank.circle.y(), f.rocker.circle.x(), f.rocker.circle.y(),
@@ -204,12 +204,12 @@ void AddMotionSubcommand(CLI::App& synth) {
   cmd->add_option("--circle-point", args->circle_points, "A circle point X,Y (first pose, global); repeat for more");
   cmd->add_option("--grid", args->grid, "Three poses: dyads from an N x N grid of circle points");
   cmd->add_option("--samples", args->samples, "Four poses: lines through the pole the dyads are picked on (default 18)");
-  cmd->add_option("--curves", args->curves, "Four poses: write the Burmester curves to this CSV file");
+  OutputFile(cmd->add_option("--curves", args->curves, "Four poses: write the Burmester curves to this CSV file"));
   cmd->add_option("--crank-turn", args->crank_turn, "Two poses: the crank's turn between them [deg] (default 90)");
   cmd->add_option("--require", args->require, "crank: keep only four-bars whose input turns fully");
   cmd->add_option("--top", args->top, "Print (and write) only the best N");
-  cmd->add_option("-o,--dir", args->dir, "Write each four-bar as a mechanism file into this directory");
-  cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout");
+  OutputDirectory(cmd->add_option("-o,--dir", args->dir, "Write each four-bar as a mechanism file into this directory"));
+  OutputFile(cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout"));
   cmd->add_option("--threads", args->threads, "Threads for the re-analyses (default: one per core)");
   cmd->callback([args] { Run(*args); });
 }

@@ -2,9 +2,10 @@
 #include "commands.hpp"
 #include "common.hpp"
 
-#include "atlas_file.hpp"
 #include "koppel/catalog/mechanism_writer.hpp"
+#include "koppel/catalog/path_points.hpp"
 #include "koppel/core/angles.hpp"
+#include "koppel/synthesis/atlas_file.hpp"
 #include "koppel/synthesis/path_synthesis.hpp"
 
 #include <fmt/core.h>
@@ -23,48 +24,14 @@ struct Args {
   bool open = false;
 };
 
-// POINTS.csv: the header `x,y`, then one point a line. Every bad line is reported.
+// POINTS.csv (koppel/catalog/path_points.hpp); every bad line reported.
 std::vector<Eigen::Vector2d> ReadPoints(const std::string& path) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec || size > 16 * 1024 * 1024) {
-    Complain(path + (ec ? ": cannot read the file" : ": larger than 16 MB: not a list of points"));
+  try {
+    return ReadPathPoints(path);
+  } catch (const InputError& e) {
+    for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
     throw Exit{kExitBadInput};
   }
-  std::ifstream in(path);
-  std::string line;
-  std::vector<Eigen::Vector2d> points;
-  std::vector<std::string> problems;
-  int number = 0;
-  auto trim = [](std::string s) {
-    while (!s.empty() && (s.back() == '\r' || s.back() == ' ')) s.pop_back();
-    while (!s.empty() && s.front() == ' ') s.erase(s.begin());
-    return s;
-  };
-  if (!std::getline(in, line) || trim(line) != "x,y") problems.push_back(fmt::format("{}:1: expected the header x,y", path));
-  number = 1;
-  while (std::getline(in, line)) {
-    ++number;
-    line = trim(line);
-    if (line.empty()) continue;
-    const auto comma = line.find(',');
-    try {
-      std::size_t ux = 0, uy = 0;
-      if (comma == std::string::npos) throw std::invalid_argument("no comma");
-      const std::string xs = trim(line.substr(0, comma)), ys = trim(line.substr(comma + 1));
-      const double x = std::stod(xs, &ux), y = std::stod(ys, &uy);
-      if (ux != xs.size() || uy != ys.size() || !std::isfinite(x) || !std::isfinite(y)) throw std::invalid_argument("not a number");
-      points.emplace_back(x, y);
-    } catch (const std::exception&) {
-      problems.push_back(fmt::format("{}:{}: expected two finite numbers x,y, found '{}'", path, number, line));
-    }
-    if (problems.size() > 20) break;
-  }
-  if (!problems.empty()) {
-    for (const std::string& p : problems) std::cerr << p << "\n";
-    throw Exit{kExitBadInput};
-  }
-  return points;
 }
 
 int Whole(const std::string& flag, const std::string& text, int lo, int hi) {
@@ -98,7 +65,7 @@ void Run(const Args& args) {
   std::string csv;
   for (size_t i = 0; i < t.columns.size(); ++i) csv += t.columns[i] + ",";
   csv += "grashof,cognate_of\n";
-  if (!args.dir.empty()) std::filesystem::create_directories(args.dir);
+  if (!args.dir.empty()) MakeOutputDirectory(args.dir);
   for (size_t i = 0; i < result.linkages.size(); ++i) {
     const PathLinkage& l = result.linkages[i];
     for (double v : {static_cast<double>(i + 1), l.error, l.geometry.a0.x(), l.geometry.a0.y(), l.geometry.b0.x(), l.geometry.b0.y(), l.crank, l.coupler,
@@ -146,8 +113,8 @@ void AddPathSubcommand(CLI::App& synth) {
   cmd->add_option("--top", args->top, "Linkages to return (default 10)");
   cmd->add_option("--candidates", args->candidates, "Atlas curves pre-polished (default max(100, 10 top))");
   cmd->add_flag("--open", args->open, "The points are an open stretch, not a closed path");
-  cmd->add_option("-o,--dir", args->dir, "Write each linkage as a mechanism file into this directory");
-  cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout");
+  OutputDirectory(cmd->add_option("-o,--dir", args->dir, "Write each linkage as a mechanism file into this directory"));
+  OutputFile(cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout"));
   cmd->add_option("--threads", args->threads, "Threads (default: one per core)");
   cmd->callback([args] { Run(*args); });
 }

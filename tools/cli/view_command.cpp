@@ -60,7 +60,7 @@ void AddViewCommand(CLI::App& app) {
   cmd->add_option("--step", args->step, "Input step between frames (default 1 deg for an R drive, else the file's step)");
   AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
-  cmd->add_option("-o,--output-file", args->out, "Write the page to this file instead of stdout");
+  OutputFile(cmd->add_option("-o,--output-file", args->out, "Write the page to this file instead of stdout"));
   cmd->callback([args] { Run(*args); });
 }
 

@@ -6,24 +6,16 @@
 
 #include <algorithm>
 #include <atomic>
-#include <bit>
 #include <cmath>
-#include <cstring>
 #include <thread>
 
 namespace koppel {
 namespace {
 
-static_assert(std::endian::native == std::endian::little, "the atlas file is written little endian as it lies in memory");
-
 constexpr int kResample = 64;       // points of equal arc length the descriptor is taken from
 constexpr int kTraceSamples = 256;  // points of a curve for its descriptor
 constexpr double kLogLength = 1.6094379124341003;  // log 5: lengths in [1/5, 5]
 constexpr double kShortestArc = kPi / 18;  // 10 deg of crank travel at least
-constexpr char kMagic[12] = {'K', 'O', 'P', 'P', 'E', 'L', '-', 'A', 'T', 'L', 'A', 'S'};
-constexpr std::uint32_t kFormatVersion = 1;
-constexpr std::uint64_t kHeaderBytes = 12 + 4 + 4 + 8;
-constexpr std::uint64_t kEntryBytes = 8 + 8 + 5 * 8 + 4 + kAtlasFeatures * 4;
 
 using Complex = std::complex<double>;
 
@@ -90,15 +82,6 @@ bool JointB(double a, double b, double c, double phi, int branch, Eigen::Vector2
   const double gamma = std::atan2(d.y(), d.x()) + branch * std::acos(cos_gamma);
   *pb = *pa + b * Eigen::Vector2d(std::cos(gamma), std::sin(gamma));
   return true;
-}
-
-void WriteBytes(std::string* out, const void* p, size_t n) { out->append(static_cast<const char*>(p), n); }
-template <class T> void Put(std::string* out, T v) { WriteBytes(out, &v, sizeof v); }
-template <class T> T Get(const char*& p) {
-  T v;
-  std::memcpy(&v, p, sizeof v);
-  p += sizeof v;
-  return v;
 }
 
 }  // namespace
@@ -237,67 +220,6 @@ std::vector<AtlasEntry> BuildAtlas(const AtlasBuildOptions& o) {
   for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
   work();
   for (std::thread& t : pool) t.join();
-  return entries;
-}
-
-std::uint64_t AtlasFileSize(std::uint64_t count) { return kHeaderBytes + count * kEntryBytes; }
-
-std::string SerialiseAtlas(const std::vector<AtlasEntry>& entries) {
-  std::string out;
-  out.reserve(AtlasFileSize(entries.size()));
-  WriteBytes(&out, kMagic, sizeof kMagic);
-  Put<std::uint32_t>(&out, kFormatVersion);
-  Put<std::uint32_t>(&out, kAtlasFeatures);
-  Put<std::uint64_t>(&out, entries.size());
-  for (const AtlasEntry& e : entries) {
-    Put(&out, e.seed);
-    Put(&out, e.index);
-    for (double v : {e.crank, e.coupler, e.rocker, e.p, e.q}) Put(&out, v);
-    Put(&out, e.branch);
-    Put(&out, e.side);
-    Put(&out, e.closed);
-    Put<std::uint8_t>(&out, 0);
-    for (float v : e.descriptor) Put(&out, v);
-  }
-  return out;
-}
-
-Expected<std::vector<AtlasEntry>> ParseAtlas(const std::string& bytes) {
-  using Result = Expected<std::vector<AtlasEntry>>;
-  if (bytes.size() < kHeaderBytes || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) {
-    return Result::Error("not a koppel atlas (no KOPPEL-ATLAS header)");
-  }
-  const char* p = bytes.data() + sizeof kMagic;
-  const auto version = Get<std::uint32_t>(p), features = Get<std::uint32_t>(p);
-  const auto count = Get<std::uint64_t>(p);
-  if (version != kFormatVersion || features != kAtlasFeatures) {
-    return Result::Error(fmt::format("atlas format {} with {} features; this koppel reads format {} with {}", version, features,
-                                     kFormatVersion, kAtlasFeatures));
-  }
-  if (count > kMaxAtlasCurves || bytes.size() != AtlasFileSize(count)) {
-    return Result::Error(fmt::format("the header promises {} curves ({} bytes) but the file has {} bytes (truncated or not an atlas)",
-                                     count, count > kMaxAtlasCurves ? 0 : AtlasFileSize(count), bytes.size()));
-  }
-  std::vector<AtlasEntry> entries(count);
-  for (AtlasEntry& e : entries) {
-    e.seed = Get<std::uint64_t>(p);
-    e.index = Get<std::uint64_t>(p);
-    e.crank = Get<double>(p);
-    e.coupler = Get<double>(p);
-    e.rocker = Get<double>(p);
-    e.p = Get<double>(p);
-    e.q = Get<double>(p);
-    e.branch = Get<std::int8_t>(p);
-    e.side = Get<std::int8_t>(p);
-    e.closed = Get<std::uint8_t>(p);
-    Get<std::uint8_t>(p);
-    for (float& v : e.descriptor) v = Get<float>(p);
-    bool finite = std::isfinite(e.crank) && std::isfinite(e.coupler) && std::isfinite(e.rocker) && std::isfinite(e.p) && std::isfinite(e.q);
-    for (float v : e.descriptor) finite = finite && std::isfinite(v);
-    if (!finite || !(e.crank > 0 && e.coupler > 0 && e.rocker > 0) || std::abs(e.branch) != 1 || std::abs(e.side) != 1 || e.closed > 1) {
-      return Result::Error(fmt::format("entry {} (seed {}, index {}) is malformed", &e - entries.data(), e.seed, e.index));
-    }
-  }
   return entries;
 }
 

@@ -30,8 +30,10 @@ struct MotionSpecFile {
   std::vector<Pose> poses;  // angles in radians
 };
 
-// Throws InputError (mechanism_file.hpp).
+// Throws InputError (mechanism_file.hpp); the file is read within kMaxInputBytes
+// (koppel/core/input_file.hpp). The Parse... forms read the text of a file named `path`.
 MotionSpecFile ReadMotionSpec(const std::string& path);
+MotionSpecFile ParseMotionSpecText(const std::string& text, const std::string& path);
 
 struct FunctionSpecFile {
   std::string path;
@@ -41,5 +43,6 @@ struct FunctionSpecFile {
 
 // Throws InputError; the formula is checked at both ends of the x range and at the precision points.
 FunctionSpecFile ReadFunctionSpec(const std::string& path);
+FunctionSpecFile ParseFunctionSpecText(const std::string& text, const std::string& path);
 
 }  // namespace koppel

@@ -80,12 +80,7 @@ struct AtlasBuildOptions {
 // The shard's entries in index order (the same numbers on any number of threads).
 std::vector<AtlasEntry> BuildAtlas(const AtlasBuildOptions& options);
 
-// The atlas file: a header ("KOPPEL-ATLAS", format version, feature count, entry count; little
-// endian) and the entries packed. Parse refuses a file whose size disagrees with its header.
-std::string SerialiseAtlas(const std::vector<AtlasEntry>& entries);
-Expected<std::vector<AtlasEntry>> ParseAtlas(const std::string& bytes);
-// Bytes of a file holding `count` entries.
-std::uint64_t AtlasFileSize(std::uint64_t count);
+// The atlas file (writing, reading, its checksums) is atlas_file.hpp.
 
 // The union of atlases, ordered by (seed, index); an error when an entry appears twice (a shard
 // merged twice).

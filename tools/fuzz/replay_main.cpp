@@ -1,0 +1,66 @@
+// Replays fuzz inputs without libFuzzer (any compiler; ctest fuzz_corpus in the Release and the
+// sanitizer build): every file named, and every file in a directory named, through
+// LLVMFuzzerTestOneInput once. A crash or a sanitizer report ends the process (the test fails);
+// an input slower than kSlowestSeconds fails it too. Prints "N inputs replayed, slowest T s".
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
+
+namespace {
+
+// libFuzzer's limit per input is 1 s in an optimised sanitizer build; the CI's checked build is
+// compiled at -O1 and shares two cores with another test: five times that.
+constexpr double kSlowestSeconds = 5.0;
+
+std::vector<std::filesystem::path> Inputs(int argc, char** argv) {
+  std::vector<std::filesystem::path> files;
+  for (int i = 1; i < argc; ++i) {
+    if (std::filesystem::is_directory(argv[i])) {
+      for (const auto& item : std::filesystem::directory_iterator(argv[i])) {
+        if (item.is_regular_file()) files.push_back(item.path());
+      }
+    } else {
+      files.emplace_back(argv[i]);
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::filesystem::path> files = Inputs(argc, argv);
+  double slowest = 0;
+  std::string slowest_name;
+  for (const std::filesystem::path& file : files) {
+    std::ifstream in(file, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto start = std::chrono::steady_clock::now();
+    LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (seconds > slowest) {
+      slowest = seconds;
+      slowest_name = file.filename().string();
+    }
+  }
+  std::cout << files.size() << " inputs replayed, slowest " << slowest << " s (" << slowest_name << ")\n";
+  if (files.empty()) {
+    std::cerr << "no inputs\n";
+    return 1;
+  }
+  if (slowest > kSlowestSeconds) {
+    std::cerr << slowest_name << " took " << slowest << " s, more than " << kSlowestSeconds << " s\n";
+    return 1;
+  }
+  return 0;
+}

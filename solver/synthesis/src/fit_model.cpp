@@ -9,14 +9,6 @@
 #include <cmath>
 
 namespace koppel {
-namespace {
-
-// Relative step of the parameter differences: central differences of smooth residuals, error
-// O(h^2) ~ 1e-12 against roundoff O(eps/h) ~ 1e-10.
-constexpr double kParameterStep = 1e-6;
-
-}  // namespace
-
 FitUnit TargetUnit(const Mechanism& m, const FitTarget& t) {
   if (t.point || t.straight) return FitUnit::kLength;
   if (t.deadcentre) return m.InputIsAngle() ? FitUnit::kAngle : FitUnit::kLength;
@@ -39,7 +31,7 @@ bool TargetModel::Evaluate(const double* unknowns, int n_params, double* residua
   const int n_unknowns = n_params + FreeInputs();
   // the perturbed mechanisms, built once and shared by every target's sensitivities
   Perturbations perturbed;
-  if (jacobian && !Perturb(p, &perturbed)) return false;
+  if (jacobian && !Perturb(builder_, p, &perturbed)) return false;
   const Perturbations* sensitivities = jacobian ? &perturbed : nullptr;
   int row = 0, free_index = 0;
   for (const FitTarget& t : targets_) {
@@ -92,48 +84,6 @@ bool TargetModel::Evaluate(const double* unknowns, int n_params, double* residua
     if (t.input_free) ++free_index;
   }
   return true;
-}
-
-bool TargetModel::Perturb(const std::vector<double>& p, Perturbations* out) const {
-  const size_t n = p.size();
-  out->plus.resize(n);
-  out->minus.resize(n);
-  out->step.resize(n);
-  for (size_t j = 0; j < n; ++j) {
-    out->step[j] = kParameterStep * std::max(1.0, std::abs(p[j]));
-    std::vector<double> pp = p, pm = p;
-    pp[j] += out->step[j];
-    pm[j] -= out->step[j];
-    Expected<Mechanism> plus = builder_(pp), minus = builder_(pm);
-    if (!plus || !minus) return false;
-    out->plus[j] = std::move(*plus);
-    out->minus[j] = std::move(*minus);
-  }
-  return true;
-}
-
-Eigen::VectorXd TargetModel::PoseSensitivity(const PositionSolver& solver, const Eigen::VectorXd& q, double input, const Perturbations& perturbed,
-                                             int j) const {
-  Eigen::VectorXd r_plus(solver.system().NumEquations()), r_minus(solver.system().NumEquations());
-  ConstraintSystem(perturbed.plus[j]).Residuals(q.data(), input, r_plus.data());
-  ConstraintSystem(perturbed.minus[j]).Residuals(q.data(), input, r_minus.data());
-  return -solver.SolveWithJacobian((r_plus - r_minus) / (2 * perturbed.step[j]));
-}
-
-void TargetModel::OutputSensitivity(const PositionSolver& solver, const Eigen::VectorXd& q, double input, const Perturbations& perturbed,
-                                    int output, int first_component, int comps, bool angle, Eigen::MatrixXd* d) const {
-  const int n = static_cast<int>(perturbed.step.size());
-  d->resize(comps, n);
-  for (int j = 0; j < n; ++j) {
-    const double h = perturbed.step[j];
-    const Eigen::VectorXd dq = PoseSensitivity(solver, q, input, perturbed, j);
-    const ConstraintSystem sp(perturbed.plus[j]), sm(perturbed.minus[j]);
-    const Eigen::VectorXd q_plus = q + h * dq, q_minus = q - h * dq;
-    for (int c = 0; c < comps; ++c) {
-      const double change = sp.Output(output, first_component + c, q_plus.data()) - sm.Output(output, first_component + c, q_minus.data());
-      (*d)(c, j) = (angle ? WrappedAngle(change) : change) / (2 * h);
-    }
-  }
 }
 
 bool TargetModel::Straight(const Mechanism& m, PositionSolver& solver, const Eigen::VectorXd& q_hint, const Perturbations* perturbed,

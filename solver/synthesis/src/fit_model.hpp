@@ -1,6 +1,7 @@
 // The residuals of a fit and their Jacobian through the solver (see fit.hpp): private to fit.cpp.
 #pragma once
 
+#include "koppel/analysis/sensitivity.hpp"
 #include "koppel/solver/position.hpp"
 #include "koppel/synthesis/fit.hpp"
 
@@ -30,20 +31,6 @@ class TargetModel {
   int FreeInputs() const;
 
  private:
-  // The mechanisms at p +- step_j e_j, built once per evaluation and shared by every target.
-  struct Perturbations {
-    std::vector<Mechanism> plus, minus;
-    std::vector<double> step;
-  };
-  bool Perturb(const std::vector<double>& p, Perturbations* out) const;
-  // dq/dp_j at a converged pose (the solver's factorisation is at q): -J^-1 dF/dp_j, with dF/dp_j
-  // one central difference of the residuals of the perturbed mechanisms at the fixed pose.
-  Eigen::VectorXd PoseSensitivity(const PositionSolver& solver, const Eigen::VectorXd& q, double input, const Perturbations& perturbed,
-                                  int j) const;
-  // d(output components)/dp at a converged pose: one directional difference of the output along
-  // (dq/dp_j, e_j) per parameter (wrapped for an angle). `d` is comps x parameters.
-  void OutputSensitivity(const PositionSolver& solver, const Eigen::VectorXd& q, double input, const Perturbations& perturbed, int output,
-                         int first_component, int comps, bool angle, Eigen::MatrixXd* d) const;
   // One straight-line target: distances of the samples from their total-least-squares line.
   bool Straight(const Mechanism& m, PositionSolver& solver, const Eigen::VectorXd& q_hint, const Perturbations* perturbed, const FitTarget& t,
                 double* residuals, double* jacobian, int n_unknowns) const;

@@ -21,6 +21,7 @@
 // run in parallel; the result does not depend on the number of threads.
 #pragma once
 
+#include "koppel/analysis/sensitivity.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/core/expected.hpp"
 #include "koppel/core/mechanism.hpp"
@@ -33,9 +34,7 @@
 
 namespace koppel {
 
-// Builds the mechanism for parameter values, or says why the values make no mechanism.
-// Called from several threads at once: it must not share mutable state.
-using MechanismBuilder = std::function<Expected<Mechanism>(const std::vector<double>& values)>;
+// MechanismBuilder: koppel/analysis/sensitivity.hpp (shared with the tolerance analysis).
 
 struct FitParameter {
   std::string name;

@@ -1,0 +1,272 @@
+#include "koppel/analysis/tolerance.hpp"
+
+#include "pose_walk.hpp"
+
+#include "koppel/core/angles.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <thread>
+
+namespace koppel {
+namespace {
+
+// The difference a - b wrapped to (-pi, pi].
+double Wrapped(double difference) {
+  const double r = std::remainder(difference, 2 * kPi);
+  return r <= -kPi ? r + 2 * kPi : r;
+}
+
+// SplitMix64 (Steele, Lea, Flood 2014): a small generator whose every seed gives an independent
+// stream, so sample k draws from (seed, k) alone.
+class Random {
+ public:
+  Random(std::uint64_t seed, std::uint64_t stream) : state_(seed * 0x9E3779B97F4A7C15ULL ^ (stream + 0x632BE59BD9B4E019ULL)) { Next(); }
+  std::uint64_t Next() {
+    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+  }
+  double Uniform() { return (Next() >> 11) * 0x1.0p-53; }  // [0, 1)
+  double Symmetric() { return 2 * Uniform() - 1; }           // [-1, 1)
+  double Normal() {                                          // Box–Muller, one of the pair
+    const double u1 = 1 - Uniform(), u2 = Uniform();
+    return std::sqrt(-2 * std::log(u1)) * std::cos(2 * kPi * u2);
+  }
+
+ private:
+  std::uint64_t state_;
+};
+
+// Linear interpolation between order statistics (Hyndman and Fan type 7, R's default).
+double Quantile(const std::vector<double>& sorted, double level) {
+  const double h = (sorted.size() - 1) * level;
+  const size_t lo = static_cast<size_t>(std::floor(h));
+  const size_t hi = std::min(lo + 1, sorted.size() - 1);
+  return sorted[lo] + (h - lo) * (sorted[hi] - sorted[lo]);
+}
+
+// The mechanism of one Monte Carlo sample: parameters drawn, then each clearance joint's pin
+// moved in its hole (a new point on link_b, so a point shared with another joint stays put).
+Expected<Mechanism> DrawSample(const MechanismBuilder& builder, const std::vector<double>& nominal, const ToleranceOptions& o, long k) {
+  Random random(o.seed, static_cast<std::uint64_t>(k));
+  std::vector<double> p = nominal;
+  for (size_t j = 0; j < p.size(); ++j) {
+    const double u = o.distribution == ToleranceDistribution::kUniform ? random.Symmetric() : random.Normal() / 3;
+    p[j] += o.tolerances[j] * u;
+  }
+  Expected<Mechanism> built = builder(p);
+  if (!built) return built;
+  Mechanism& m = *built;
+  for (size_t c = 0; c < o.clearance_joints.size(); ++c) {
+    Joint& joint = m.joints[o.clearance_joints[c]];
+    const double r = o.clearances[c] * std::sqrt(random.Uniform()), angle = 2 * kPi * random.Uniform();
+    Link& link = m.links[joint.link_b];
+    NamedPoint pin = link.points[joint.point_b];
+    pin.name += "~play";
+    pin.local += Eigen::Vector2d(r * std::cos(angle), r * std::sin(angle));
+    link.points.push_back(pin);
+    joint.point_b = static_cast<int>(link.points.size()) - 1;
+  }
+  return built;
+}
+
+struct NominalPose {
+  double input = 0;
+  Eigen::VectorXd q;
+};
+
+// The samples at every reached row: values[row * samples + k], NaN where sample k failed.
+std::vector<double> RunSamples(const MechanismBuilder& builder, const std::vector<double>& nominal, const ToleranceOptions& o,
+                               const std::vector<NominalPose>& poses, const std::vector<double>& nominal_y, bool angle) {
+  const long n = o.samples;
+  const size_t rows = poses.size();
+  std::vector<double> values(rows * n, std::numeric_limits<double>::quiet_NaN());
+  std::atomic<long> next{0}, done{0};
+  constexpr long kChunk = 16;
+  auto worker = [&] {
+    for (;;) {
+      const long first = next.fetch_add(kChunk);
+      if (first >= n) return;
+      for (long k = first; k < std::min(n, first + kChunk); ++k) {
+        const Expected<Mechanism> sample = DrawSample(builder, nominal, o, k);
+        if (sample) {
+          PositionSolver solver(*sample);
+          for (size_t row = 0; row < rows; ++row) {
+            Eigen::VectorXd q = poses[row].q;
+            if (!solver.Correct(poses[row].input, q).ok()) continue;
+            const double y = solver.system().Output(o.output, o.component, q.data());
+            values[row * n + k] = angle ? nominal_y[row] + Wrapped(y - nominal_y[row]) : y;
+          }
+        }
+        done.fetch_add(1);
+      }
+    }
+  };
+  int threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  threads = static_cast<int>(std::min<long>(threads, std::max(1L, n / kChunk)));
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  while (o.progress && done.load() < n) {
+    o.progress(done.load(), n);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  for (std::thread& t : pool) t.join();
+  if (o.progress) o.progress(n, n);
+  return values;
+}
+
+void Statistics(const double* values, long n, const std::vector<double>& levels, ToleranceRow* row) {
+  std::vector<double> v;
+  v.reserve(n);
+  for (long k = 0; k < n; ++k) {
+    if (std::isfinite(values[k])) v.push_back(values[k]);
+  }
+  row->mc_samples = static_cast<long>(v.size());
+  row->mc_failed = n - row->mc_samples;
+  if (v.empty()) return;
+  std::sort(v.begin(), v.end());
+  row->mc_min = v.front();
+  row->mc_max = v.back();
+  double mean = 0;
+  for (double x : v) mean += x;
+  mean /= v.size();
+  double sum = 0;
+  for (double x : v) sum += (x - mean) * (x - mean);
+  row->mc_mean = mean;
+  row->mc_std = v.size() > 1 ? std::sqrt(sum / (v.size() - 1)) : 0.0;
+  for (double level : levels) row->quantiles.push_back(Quantile(v, level));
+}
+
+// The linear stack-up of one row from its sensitivities.
+void Linear(const ToleranceOptions& o, ToleranceRow* row) {
+  double variance = 0, parameters = 0, clearances = 0;
+  const double sigma_per_tolerance = o.distribution == ToleranceDistribution::kUniform ? 1 / std::sqrt(3.0) : 1.0 / 3;
+  for (size_t j = 0; j < o.tolerances.size(); ++j) {
+    const double part = row->sensitivity[j] * o.tolerances[j];
+    row->worst_case += std::abs(part);
+    parameters += part * part;
+    variance += std::pow(part * sigma_per_tolerance, 2);
+  }
+  for (size_t c = 0; c < o.clearances.size(); ++c) {
+    const double part = row->clearance_gain[c] * o.clearances[c];
+    row->clearance_worst_case += part;
+    clearances += part * part;
+    variance += part * part / 4;  // the projection of a point uniform in a disc of radius c: c^2/4
+  }
+  row->rss = std::sqrt(parameters);
+  row->linear_std = std::sqrt(variance);
+  const double total = parameters + clearances;
+  for (size_t j = 0; j < o.tolerances.size(); ++j) row->share.push_back(total > 0 ? std::pow(row->sensitivity[j] * o.tolerances[j], 2) / total : 0.0);
+  for (size_t c = 0; c < o.clearances.size(); ++c) row->share.push_back(total > 0 ? std::pow(row->clearance_gain[c] * o.clearances[c], 2) / total : 0.0);
+}
+
+ToleranceReport Failed(std::string why) {
+  ToleranceReport r;
+  r.status = AnalysisStatus::kFailed;
+  r.message = std::move(why);
+  return r;
+}
+
+}  // namespace
+
+const char* ToString(ToleranceDistribution distribution) {
+  return distribution == ToleranceDistribution::kUniform ? "uniform" : "normal";
+}
+
+bool ToleranceOptions::IsValid(const Mechanism& nominal, std::string* why) const {
+  auto fail = [&](std::string text) {
+    *why = std::move(text);
+    return false;
+  };
+  if (output < 0 || output >= static_cast<int>(nominal.outputs.size())) return fail("no such output");
+  if (component < 0 || component >= nominal.outputs[output].Components()) return fail("no such component of the output");
+  if (inputs.empty()) return fail("no input to evaluate at");
+  for (double t : tolerances) {
+    if (!(t > 0) || !std::isfinite(t)) return fail("a tolerance must be a positive number");
+  }
+  if (clearance_joints.size() != clearances.size()) return fail("one clearance per joint");
+  for (size_t c = 0; c < clearances.size(); ++c) {
+    const int j = clearance_joints[c];
+    if (j < 0 || j >= static_cast<int>(nominal.joints.size())) return fail("no such joint");
+    if (nominal.joints[j].type != JointType::kRevolute)
+      return fail("joint '" + nominal.joints[j].name + "' is not a revolute joint: clearance is modelled for pins in holes");
+    if (!(clearances[c] > 0) || !std::isfinite(clearances[c])) return fail("a clearance must be a positive number");
+  }
+  if (samples < 0) return fail("the number of samples must not be negative");
+  for (double level : quantile_levels) {
+    if (!(level >= 0 && level <= 1)) return fail("quantile levels lie in [0, 1]");
+  }
+  why->clear();
+  return true;
+}
+
+ToleranceReport AnalyseTolerances(const MechanismBuilder& builder, const std::vector<double>& nominal, const ToleranceOptions& o) {
+  const Expected<Mechanism> built = builder(nominal);
+  if (!built) return Failed("the nominal parameters make no mechanism: " + built.error());
+  const Mechanism& m = *built;
+  if (o.tolerances.size() != nominal.size()) return Failed("one tolerance per parameter");
+  if (std::string why; !o.IsValid(m, &why)) return Failed(why);
+  Perturbations perturbed;
+  if (!Perturb(builder, nominal, &perturbed)) return Failed("a parameter moved by its difference step makes no mechanism");
+  const bool angle = m.OutputIsAngle(o.output);
+
+  ToleranceReport report;
+  PoseWalk walk(m);
+  if (!walk.started()) return Failed(walk.error());
+  std::vector<NominalPose> poses;
+  std::vector<double> nominal_y;
+  std::vector<size_t> reached;  // rows with a nominal pose
+  for (double input : o.inputs) {
+    ToleranceRow row;
+    row.input = input;
+    row.message = walk.To(input);
+    Eigen::VectorXd q = walk.walk().q();
+    // the sensitivities need the Jacobian factorised at exactly this pose
+    if (row.message.empty() && !walk.solver().Correct(input, q).ok()) row.message = "the nominal pose did not converge";
+    if (row.message.empty()) {
+      row.ok = true;
+      PositionSolver& solver = walk.solver();
+      row.nominal = solver.system().Output(o.output, o.component, q.data());
+      Eigen::MatrixXd d;
+      OutputSensitivity(solver, q, input, perturbed, o.output, o.component, 1, angle, &d);
+      row.sensitivity.assign(d.data(), d.data() + d.size());
+      for (int joint : o.clearance_joints) row.clearance_gain.push_back(ClearanceGradient(solver, q, joint, o.output, o.component).norm());
+      Linear(o, &row);
+      reached.push_back(report.rows.size());
+      poses.push_back({input, q});
+      nominal_y.push_back(row.nominal);
+    }
+    report.rows.push_back(std::move(row));
+  }
+  if (o.samples > 0 && !poses.empty()) {
+    const std::vector<double> values = RunSamples(builder, nominal, o, poses, nominal_y, angle);
+    for (size_t i = 0; i < reached.size(); ++i) Statistics(values.data() + i * o.samples, o.samples, o.quantile_levels, &report.rows[reached[i]]);
+  }
+  report.status = AnalysisStatus::kComplete;
+  long failed_samples = 0;
+  size_t failed_rows = 0;
+  for (const ToleranceRow& row : report.rows) {
+    failed_rows += row.ok ? 0 : 1;
+    failed_samples = std::max(failed_samples, row.mc_failed);
+  }
+  if (failed_rows == report.rows.size()) {
+    report.status = AnalysisStatus::kFailed;
+    report.message = "no input was reached: " + report.rows.front().message;
+  } else if (failed_rows > 0) {
+    report.status = AnalysisStatus::kPartial;
+    report.message = std::to_string(failed_rows) + " of " + std::to_string(report.rows.size()) + " inputs not reached";
+  }
+  if (failed_samples > 0) {
+    report.status = AnalysisStatus::kPartial;
+    report.message += std::string(report.message.empty() ? "" : "; ") + "up to " + std::to_string(failed_samples) +
+                      " Monte Carlo samples per input did not assemble there (the tolerances reach past the mechanism's limits)";
+  }
+  return report;
+}
+
+}  // namespace koppel

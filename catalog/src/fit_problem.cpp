@@ -1,4 +1,5 @@
 #include "koppel/catalog/fit_problem.hpp"
+#include "koppel/catalog/parameter_builder.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "input_file.hpp"
@@ -13,18 +14,6 @@
 
 namespace koppel {
 namespace {
-
-// The mechanism file's text without its catalog card, read once: the builder parses it from
-// memory for every evaluation, and the card (a third to two thirds of a catalog entry) does not
-// make the mechanism. Precondition: the file was read without problems.
-std::string MechanismTextWithoutCard(const std::string& path) {
-  YAML::Node document = ParseYamlText(ReadInputText(path), path);
-  document.remove("catalog");
-  YAML::Emitter out;
-  out << document;
-  return out.c_str();
-}
-
 
 // `parameters:` {name: {start, lower, upper} or nothing}: which parameters of the mechanism file
 // the fit may change, and within which bounds.
@@ -135,21 +124,10 @@ std::optional<FitTarget> ReadFitTarget(YamlReader& r, const YAML::Node& t, const
 
 // The builder: the mechanism file again with the free parameters as overrides, parsed from the
 // text in memory (the disk is read once, by ReadFitProblem).
-MechanismBuilder BuilderFor(const FitProblem& problem, std::string mechanism_text) {
-  const std::string mechanism_path = problem.mechanism_path;
-  const std::vector<FitParameter> free = problem.parameters;
-  // Parsed once; every call reads its own deep copy (the reader may add nodes to a tree it looks
-  // into, and the builder runs on several threads at once).
-  const auto parsed = std::make_shared<const YAML::Node>(ParseYamlText(mechanism_text, mechanism_path));
-  return [mechanism_path, parsed, free](const std::vector<double>& values) -> Expected<Mechanism> {
-    Overrides overrides;
-    for (size_t j = 0; j < free.size(); ++j) overrides.emplace_back(free[j].name, fmt::format("{:.17g}", values[j]));
-    try {
-      return ParseMechanismNode(YAML::Clone(*parsed), mechanism_path, overrides).mechanism;
-    } catch (const InputError& e) {
-      return Expected<Mechanism>::Error(e.what());
-    }
-  };
+MechanismBuilder BuilderFor(const FitProblem& problem, const std::string& mechanism_text) {
+  std::vector<std::string> names;
+  for (const FitParameter& p : problem.parameters) names.push_back(p.name);
+  return ParameterBuilder(mechanism_text, problem.mechanism_path, {}, names);
 }
 
 }  // namespace
@@ -169,7 +147,7 @@ FitProblem ReadFitProblem(const std::string& path) {
   std::string mechanism_text;
   try {
     problem.base = ReadMechanismFile(problem.mechanism_path);
-    mechanism_text = MechanismTextWithoutCard(problem.mechanism_path);
+    mechanism_text = MechanismTextWithoutCard(ReadInputText(problem.mechanism_path), problem.mechanism_path);
   } catch (const InputError& e) {
     std::vector<Diagnostic> all = {{path, mech.Mark().line + 1, mech.Mark().column + 1, "mechanism", "the mechanism file has problems:"}};
     all.insert(all.end(), e.diagnostics().begin(), e.diagnostics().end());

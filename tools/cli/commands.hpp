@@ -27,5 +27,8 @@ void AddSimulateCommand(CLI::App& app);  // simulate_command.cpp
 void AddBenchCommand(CLI::App& app);     // bench_command.cpp, benchmarks in tools/bench
 void AddExportCommand(CLI::App& app);    // export_command.cpp: DXF (tools/export)
 void AddAnimateCommand(CLI::App& app);   // animate_command.cpp: GIF (tools/export)
+void AddCurvatureCommand(CLI::App& app);  // curvature_command.cpp
+void AddPolesCommand(CLI::App& app);      // poles_command.cpp
+void AddToleranceCommand(CLI::App& app);  // tolerance_command.cpp
 
 }  // namespace koppel::cli

@@ -51,6 +51,9 @@ int Run(int argc, char** argv) {
   koppel::cli::AddBenchCommand(app);
   koppel::cli::AddExportCommand(app);
   koppel::cli::AddAnimateCommand(app);
+  koppel::cli::AddCurvatureCommand(app);
+  koppel::cli::AddPolesCommand(app);
+  koppel::cli::AddToleranceCommand(app);
   // parse flags -> claim the outputs -> the command reads its inputs and works: a target that may
   // not be written is refused before anything is read or computed
   app.parse_complete_callback(koppel::cli::ClaimOutputs);

@@ -10,6 +10,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <map>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -87,6 +89,74 @@ py::dict Figures(const Design& d) {
   py::dict f;
   for (const DesignFigure& figure : d.figures) f[py::str(figure.name)] = figure.value;
   return f;
+}
+
+py::object Optional(const std::optional<double>& v) { return v ? py::object(py::float_(*v)) : py::none(); }
+
+// {name: value or None} in the order koppel curvature prints them, plus what the report says
+py::dict CurvatureDict(const CurvatureReport& r) {
+  py::dict d;
+  d["status"] = ToString(r.status);
+  d["message"] = r.message;
+  d["point"] = r.point;
+  d["link"] = r.link;
+  for (const NamedValue& v : r.Quantities()) d[py::str(v.name)] = Optional(v.value);
+  d["rho_infinite"] = r.curvature.has_value() && *r.curvature == 0.0;
+  return d;
+}
+
+py::dict PolesDict(const PolesReport& r) {
+  py::dict d;
+  d["status"] = ToString(r.status);
+  d["message"] = r.message;
+  d["input"] = r.input;
+  py::list poles;
+  for (const InstantCentreEntry& c : r.centres) {
+    py::dict e;
+    e["link_a"] = c.link_a;
+    e["link_b"] = c.link_b;
+    e["kind"] = !c.defined ? "undefined" : c.at_infinity ? "infinity" : c.from_acceleration ? "acceleration" : "finite";
+    const bool finite = c.defined && !c.at_infinity;
+    e["pole"] = finite ? py::object(py::make_tuple(c.position.x, c.position.y)) : py::none();
+    e["direction"] = c.at_infinity ? py::object(py::make_tuple(c.direction.x, c.direction.y)) : py::none();
+    poles.append(e);
+  }
+  d["poles"] = poles;
+  return d;
+}
+
+// a curve as an (n, 2) array with NaN where the pole is at infinity
+py::array_t<double> Curve(const std::vector<std::optional<Point2>>& points) {
+  py::array_t<double> a({static_cast<py::ssize_t>(points.size()), static_cast<py::ssize_t>(2)});
+  double* out = a.mutable_data();
+  for (size_t i = 0; i < points.size(); ++i) {
+    out[2 * i] = points[i] ? points[i]->x : std::nan("");
+    out[2 * i + 1] = points[i] ? points[i]->y : std::nan("");
+  }
+  return a;
+}
+
+py::dict ToleranceDict(const ToleranceResult& r) {
+  py::dict d;
+  d["status"] = ToString(r.status);
+  d["message"] = r.message;
+  d["output"] = r.output;
+  d["unit"] = r.unit;
+  d["distribution"] = r.distribution;
+  d["samples"] = r.samples;
+  d["seed"] = r.seed;
+  d["quantile_levels"] = r.quantile_levels;
+  const std::vector<std::string> columns = r.Columns();
+  py::list rows;
+  for (size_t i = 0; i < r.rows.size(); ++i) {
+    py::dict row;
+    const auto values = r.Row(i);
+    for (size_t c = 0; c < columns.size(); ++c) row[py::str(columns[c])] = Optional(values[c]);
+    if (!r.rows[i].ok) row["message"] = r.rows[i].message;
+    rows.append(row);
+  }
+  d["rows"] = rows;
+  return d;
 }
 
 void BindResults(py::module_& m) {
@@ -276,6 +346,53 @@ void BindModel(py::module_& m) {
            "Drivable ranges of the hint's branch (or of every branch koppel finds).")
       .def("singular_positions", [](const Model& model) { return SingularList(model.SingularPositions()); },
            "Singular positions a sweep over the file's range meets.")
+      .def("curvature", [](const Model& model, const std::string& point, double at) { return CurvatureDict(model.Curvature(point, at)); },
+           py::arg("point"), py::kw_only(), py::arg("at"),
+           "koppel curvature: pole, pole_direction, inflection circle, Ball point, and the point's curvature, rho and centre "
+           "at input `at`, as a dict of the CLI's names (None where a quantity does not exist here).")
+      .def("poles", [](const Model& model, double at) { return PolesDict(model.Poles(at)); }, py::kw_only(), py::arg("at"),
+           "koppel poles: the instant centres of every pair of links at input `at`.")
+      .def("centrodes",
+           [](const Model& model, const std::string& link, const std::string& reference, std::optional<double> start,
+              std::optional<double> stop, double step, double at) {
+             const CentrodesReport r = model.Centrodes(link, reference, start.value_or(model.sweep_from()), stop.value_or(model.sweep_to()), step, at);
+             py::dict d;
+             d["status"] = ToString(r.status);
+             d["message"] = r.message;
+             d["inputs"] = Vector(r.inputs);
+             d["fixed"] = Curve(r.fixed);
+             d["moving"] = Curve(r.moving);
+             d["moving_at"] = Curve(r.moving_at);
+             return d;
+           },
+           py::arg("link"), py::kw_only(), py::arg("reference") = "", py::arg("start") = py::none(), py::arg("stop") = py::none(),
+           py::arg("step") = 1.0, py::arg("at") = 0.0,
+           "The fixed and moving centrodes of `link` against `reference` (default: the frame), (n, 2) arrays; moving_at: the "
+           "moving one carried to the pose at `at`.")
+      .def("tolerance",
+           [](const Model& model, const std::string& output, const std::vector<double>& inputs, const std::map<std::string, double>& tol,
+              const std::map<std::string, double>& clearance, long samples, std::uint64_t seed, const std::string& distribution, int threads) {
+             ToleranceRequest request;
+             request.output = output;
+             request.inputs = inputs;
+             request.tolerances.assign(tol.begin(), tol.end());
+             request.clearances.assign(clearance.begin(), clearance.end());
+             request.samples = samples;
+             request.seed = seed;
+             request.distribution = distribution;
+             request.threads = threads;
+             ToleranceResult r;
+             {
+               py::gil_scoped_release release;
+               r = model.Tolerances(request);
+             }
+             return ToleranceDict(r);
+           },
+           py::arg("output"), py::kw_only(), py::arg("inputs"), py::arg("tol") = std::map<std::string, double>{},
+           py::arg("clearance") = std::map<std::string, double>{}, py::arg("samples") = 0, py::arg("seed") = 1,
+           py::arg("distribution") = "uniform", py::arg("threads") = 0,
+           "koppel tolerance: exact sensitivities, worst case, rss, shares, clearance and a seeded Monte Carlo run of `output` "
+           "at each input; rows are dicts with the CLI's column names.")
       .def("_cognates", [](const Model& model, const std::string& point) { return DesignList(FindCognates(model, point)); })
       .def("to_yaml", &Model::ToYaml, "The mechanism as a mechanism file.")
       .def("__repr__", [](const Model& model) { return "<koppel.Mechanism '" + model.name() + "' from " + model.path() + ">"; });

@@ -121,6 +121,8 @@ Centrodes TraceCentrodes(const Mechanism& mechanism, int link, int reference, co
     CentrodePoint point;
     point.input = input;
     point.finite = pole.defined && !pole.at_infinity;
+    point.link_origin = Rotation(a.theta[0]).transpose() * (b.origin[0] - a.origin[0]);
+    point.link_angle = b.theta[0] - a.theta[0];
     if (point.finite) {
       point.fixed = Rotation(a.theta[0]).transpose() * (pole.position - a.origin[0]);
       point.moving = Rotation(b.theta[0]).transpose() * (pole.position - b.origin[0]);

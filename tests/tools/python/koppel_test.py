@@ -185,6 +185,46 @@ class MechanismTest(unittest.TestCase):
         with self.assertRaises(koppel.InputError):
             koppel.synth.cognates(original, "nowhere")
 
+    def test_curvature_equals_koppel_curvature(self):
+        # issue 27: seed 003's K at 180 deg on the inflection circle (rho infinite), and the same
+        # numbers as the CLI's JSON
+        mzc = os.path.join(CATALOG, "mzc-crank-rocker.yaml")
+        c = koppel.Mechanism.load(mzc).curvature("K", at=180)
+        self.assertEqual(c["status"], "complete")
+        self.assertIsNone(c["rho"])
+        self.assertTrue(c["rho_infinite"])
+        radius = math.hypot(c["K_x"] - c["inflection_x"], c["K_y"] - c["inflection_y"])
+        self.assertAlmostEqual(radius, c["inflection_diameter"] / 2, delta=1e-9)
+        out = subprocess.run([os.environ["KOPPEL_EXECUTABLE"], "curvature", mzc, "--point", "K", "--at", "180", "--format", "json"],
+                             capture_output=True, text=True, check=True)
+        import json
+        cli = json.loads(out.stdout)
+        for key in ("pole_x", "pole_y", "inflection_x", "inflection_y", "inflection_diameter", "ball_x", "ball_y", "K_x", "K_y"):
+            self.assertAlmostEqual(c[key], cli[key], delta=1e-9 * (1 + abs(cli[key])), msg=key)
+        poles = koppel.Mechanism.load(mzc).poles(at=180)
+        self.assertEqual(len(poles["poles"]), 6)
+        centrodes = koppel.Mechanism.load(mzc).centrodes("coupler", start=0, stop=360, step=10, at=180)
+        self.assertEqual(centrodes["fixed"].shape, (37, 2))
+
+    def test_tolerance_against_closed_form(self):
+        # issue 27: the crank pin's clearance c / cos psi (seed 000), and a seeded Monte Carlo run
+        # that the same seed repeats
+        m = koppel.Mechanism.load(SLIDER_CRANK)
+        r = m.tolerance("s", inputs=[60], tol={"l1": 0.01, "l2": 0.02, "e": 0.005}, clearance={"A": 0.003}, samples=2000, seed=1)
+        self.assertEqual(r["status"], "complete")
+        row = r["rows"][0]
+        phi = math.radians(60)
+        sin_psi = -L1 / L2 * math.cos(phi) - 0.8 / L2
+        self.assertAlmostEqual(row["clearance_worst_case"], 0.003 / math.sqrt(1 - sin_psi ** 2), delta=1e-12)
+        self.assertAlmostEqual(row["nominal"], closed_form_s(phi, 0.8), delta=1e-12)
+        h = 1e-5
+        self.assertAlmostEqual(row["sens_e"], (closed_form_s(phi, 0.8 + h) - closed_form_s(phi, 0.8 - h)) / (2 * h), delta=1e-8)
+        again = m.tolerance("s", inputs=[60], tol={"l1": 0.01, "l2": 0.02, "e": 0.005}, clearance={"A": 0.003}, samples=2000, seed=1,
+                            threads=1)
+        self.assertEqual(again["rows"][0]["mc_std"], row["mc_std"])
+        with self.assertRaises(koppel.InputError):
+            m.tolerance("s", inputs=[60], tol={"nope": 0.01})
+
     def test_stubs_name_what_the_module_has(self):
         # every class, function and member of the compiled module is in _koppel.pyi and back
         from koppel import _koppel

@@ -1,6 +1,7 @@
 #include "koppel/api/model.hpp"
 
 #include "display.hpp"
+#include "model_impl.hpp"
 
 #include "koppel/catalog/mechanism_writer.hpp"
 #include "koppel/solver/assembly.hpp"
@@ -16,31 +17,6 @@
 namespace koppel {
 
 using namespace api_detail;
-
-// The file (or text) the model came from, so that Set can read it anew with every override, and
-// the current pose: a solver and a walk on the mechanism, which both hold references into
-// `file`, so they are made again whenever the mechanism changes (and never copied).
-struct Model::Impl {
-  enum class Source { kFile, kText, kMechanism };
-  Source source = Source::kMechanism;
-  std::string text;  // kText
-  Overrides overrides;
-  MechanismFile file;
-
-  std::unique_ptr<PositionSolver> solver;
-  std::unique_ptr<Continuation> walk;
-  AtBranchPoint walk_action = AtBranchPoint::kContinue;
-
-  void Forget() {
-    walk.reset();
-    solver.reset();
-  }
-  MechanismFile Read(const Overrides& with) const {
-    return source == Source::kFile ? ReadMechanismFile(file.path, with) : ParseMechanismText(text, file.path, with);
-  }
-  PoseResult Pose(int order);
-  void StartWalk(const Assembly& assembly, AtBranchPoint action);
-};
 
 namespace {
 

@@ -60,6 +60,9 @@ struct CentrodePoint {
   double input = 0;  // [rad | length]
   bool finite = false;
   Eigen::Vector2d fixed = Eigen::Vector2d::Zero(), moving = Eigen::Vector2d::Zero();
+  // the link's pose in the reference link's frame (origin, angle): carries `moving` onto `fixed`
+  Eigen::Vector2d link_origin = Eigen::Vector2d::Zero();
+  double link_angle = 0;
 };
 struct Centrodes {
   AnalysisStatus status = AnalysisStatus::kNotRun;  // partial: the walk ended before the last input

@@ -18,6 +18,8 @@
 #pragma once
 
 #include "koppel/analysis/status.hpp"
+#include "koppel/api/instant_geometry.hpp"
+#include "koppel/api/tolerance.hpp"
 #include "koppel/catalog/mechanism_file.hpp"  // InputError, Diagnostic
 #include "koppel/core/mechanism.hpp"
 
@@ -197,6 +199,20 @@ class Model {
   Ranges DrivableRanges(bool all_branches = false, AtBranchPoint at_branch_point = AtBranchPoint::kContinue) const;
   // The singular positions a sweep over the file's range meets.
   std::vector<SingularPosition> SingularPositions() const;
+
+  // The instantaneous geometry at `input` [deg | length] on the hint's branch (koppel curvature):
+  // the pole, inflection circle and Ball point of the link that carries `point` (as the CLI names
+  // points: a point output, "link.point", or a point name one link has), and the radius and centre
+  // of curvature of that point's path. InputError for an unknown point.
+  CurvatureReport Curvature(const std::string& point, double input) const;
+  // The instant centres of every pair of links at `input` (koppel poles).
+  PolesReport Poles(double input) const;
+  // The fixed and moving centrodes of `link` against `reference` ("": the frame) over from..to
+  // by step, the moving one also carried to the pose at `at`. InputError for an unknown link.
+  CentrodesReport Centrodes(const std::string& link, const std::string& reference, double from, double to, double step, double at) const;
+  // Tolerances, clearances and Monte Carlo of one output (koppel tolerance). InputError for an
+  // unknown output, parameter or joint, a clearance on a slide, a tolerance that is not positive.
+  ToleranceResult Tolerances(const ToleranceRequest& request) const;
 
   // The mechanism as a mechanism file (numbers with 17 digits) that Parse reads back.
   std::string ToYaml() const;

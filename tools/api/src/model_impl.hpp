@@ -1,0 +1,39 @@
+// Model's insides, shared by the files that implement its methods: private to the API.
+#pragma once
+
+#include "koppel/api/model.hpp"
+#include "koppel/solver/assembly.hpp"
+#include "koppel/solver/continuation.hpp"
+#include "koppel/solver/position.hpp"
+
+#include <memory>
+#include <string>
+
+namespace koppel {
+
+// The file (or text) the model came from, so that Set can read it anew with every override, and
+// the current pose: a solver and a walk on the mechanism, which both hold references into
+// `file`, so they are made again whenever the mechanism changes (and never copied).
+struct Model::Impl {
+  enum class Source { kFile, kText, kMechanism };
+  Source source = Source::kMechanism;
+  std::string text;  // kText
+  Overrides overrides;
+  MechanismFile file;
+
+  std::unique_ptr<PositionSolver> solver;
+  std::unique_ptr<Continuation> walk;
+  AtBranchPoint walk_action = AtBranchPoint::kContinue;
+
+  void Forget() {
+    walk.reset();
+    solver.reset();
+  }
+  MechanismFile Read(const Overrides& with) const {
+    return source == Source::kFile ? ReadMechanismFile(file.path, with) : ParseMechanismText(text, file.path, with);
+  }
+  PoseResult Pose(int order);
+  void StartWalk(const Assembly& assembly, AtBranchPoint action);
+};
+
+}  // namespace koppel

@@ -1,0 +1,23 @@
+#include "model_loading.hpp"
+
+namespace koppel::cli {
+
+Model LoadModel(const std::string& path, const std::vector<std::string>& sets) {
+  LoadMechanism(path, sets);  // the checks and messages every command gives
+  return Checked([&] {
+    ParameterValues overrides;
+    for (const std::string& s : sets) overrides.push_back(ParseAssignment(s));
+    return Model::Load(path, overrides);
+  });
+}
+
+std::pair<std::string, double> NamedNumber(const std::string& flag, const std::string& text) {
+  const size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size()) {
+    Complain(flag + ": expected NAME=VALUE, not '" + text + "'");
+    throw Exit{kExitBadInput};
+  }
+  return {text.substr(0, eq), ParseNumberFlag(flag + " " + text.substr(0, eq), text.substr(eq + 1))};
+}
+
+}  // namespace koppel::cli

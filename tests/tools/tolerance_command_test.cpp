@@ -99,3 +99,22 @@ TEST_CASE("tolerance past the mechanism's limits: the samples that do not assemb
 }
 
 }  // namespace koppel
+
+namespace koppel {
+
+TEST_CASE("plot --tolerance draws the nominal output in its worst-case band, the Monte Carlo extremes and the shares", "[cli][tolerance]") {
+  const std::string file = test::CatalogEntryPath("slider-crank-offset");
+  const test::RunResult r = test::RunKoppel("plot " + file + " --tolerance s --tol l1=0.01 --tol l2=0.02 --clearance A=0.003 --from 0 --to 360 --step 10 --samples 200");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.out, Catch::StartsWith("<svg") || Catch::StartsWith("<?xml"));
+  for (const char* label : {"linear worst case", "nominal", "Monte Carlo min, max", "share of the variance", "clearance A", "l2"}) {
+    INFO(label);
+    CHECK_THAT(r.out, Catch::Contains(label));
+  }
+  const test::RunResult none = test::RunKoppel("plot " + file + " --tolerance s");
+  CHECK(none.exit_code == 2);
+  CHECK_THAT(none.err, Catch::Contains("at least one tolerance"));
+}
+
+}  // namespace koppel

@@ -3,12 +3,15 @@
 // design charts of `koppel synth chart` (a .csv file).
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 #include "sweep_report.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "koppel/core/input_file.hpp"
 #include "koppel/plot/forces_plot.hpp"
 #include "koppel/plot/plots.hpp"
+
+#include <cmath>
 
 
 namespace koppel::cli {
@@ -22,6 +25,11 @@ struct Args {
   bool forces = false;                 // --forces [--speed RPM] [--joint J ...]: forces_plot.hpp
   std::string speed;
   std::vector<std::string> joints;
+  // --tolerance OUTPUT --tol NAME=T ... [--clearance JOINT=c ...] [--samples N --seed S --distribution D]
+  std::string tolerance, distribution = "uniform";
+  std::vector<std::string> tols, clearances;
+  long samples = 0;
+  std::uint64_t seed = 1;
   std::string out;
 };
 
@@ -68,9 +76,54 @@ void RunForcesPlot(const Args& args, const MechanismFile& file, const SweepOptio
   Finish(args, plot::ForcesPlot(m, file.loads, options));
 }
 
+// The band of koppel tolerance over the range (Model::Tolerances), drawn by plot::TolerancePlot.
+void RunTolerancePlot(const Args& args, const MechanismFile& file) {
+  ToleranceRequest request;
+  request.output = args.tolerance;
+  const double from = args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from);
+  const double to = args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to);
+  const double step = args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step);
+  CheckSampleCount(from, to, step, "--from/--to/--step");
+  const long n = static_cast<long>(std::floor(std::abs(to - from) / std::abs(step) + 1e-9)) + 1;
+  for (long i = 0; i < n; ++i) request.inputs.push_back(from + i * (to >= from ? std::abs(step) : -std::abs(step)));
+  for (const std::string& t : args.tols) request.tolerances.push_back(NamedNumber("--tol", t));
+  for (const std::string& c : args.clearances) request.clearances.push_back(NamedNumber("--clearance", c));
+  request.samples = args.samples;
+  request.seed = args.seed;
+  request.distribution = args.distribution;
+  const Model model = LoadModel(args.file, args.sets);
+  const ToleranceResult r = Checked([&] { return model.Tolerances(request); });
+  plot::ToleranceBand band;
+  band.mechanism = model.name();
+  band.output = r.output;
+  band.output_unit = r.unit;
+  band.input_label = model.input_name() == "phi" ? "φ [deg]" : model.input_name() + " [" + r.input_unit + "]";
+  band.input_degrees = model.input_is_angle();
+  band.names = r.parameters;
+  for (const std::string& j : r.joints) band.names.push_back("clearance " + j);
+  band.shares.resize(band.names.size());
+  for (const ToleranceRowReport& row : r.rows) {
+    band.inputs.push_back(row.input);
+    band.ok.push_back(row.ok);
+    band.nominal.push_back(row.nominal);
+    band.worst_case.push_back(row.worst_case + row.clearance_worst_case);
+    if (r.samples > 0) {
+      band.mc_min.push_back(row.mc_samples > 0 ? row.mc_min : row.nominal);
+      band.mc_max.push_back(row.mc_samples > 0 ? row.mc_max : row.nominal);
+    }
+    for (size_t j = 0; j < band.names.size(); ++j) band.shares[j].push_back(row.ok ? row.share[j] : 0.0);
+  }
+  plot::PlotResult picture = plot::TolerancePlot(band);
+  if (picture.status == plot::PlotStatus::kComplete && r.status != AnalysisStatus::kComplete) {
+    picture.status = plot::PlotStatus::kPartial;
+    picture.message = r.message;
+  }
+  Finish(args, picture);
+}
+
 void Run(const Args& args) {
   const bool csv = args.file.size() > 4 && args.file.substr(args.file.size() - 4) == ".csv";
-  const int kinds = !args.transfer.empty() + args.mu + !args.curve.empty() + args.forces;
+  const int kinds = !args.transfer.empty() + args.mu + !args.curve.empty() + args.forces + !args.tolerance.empty();
   if (csv) {
     if (kinds != 0) {
       Complain("a design chart (.csv) takes no --transfer, --mu or --curve");
@@ -80,7 +133,7 @@ void Run(const Args& args) {
     return;
   }
   if (kinds != 1) {
-    Complain("say what to plot: exactly one of --transfer OUTPUT, --mu, --curve POINT, --forces (or give a chart .csv)");
+    Complain("say what to plot: exactly one of --transfer OUTPUT, --mu, --curve POINT, --forces, --tolerance OUTPUT (or give a chart .csv)");
     throw Exit{kExitBadInput};
   }
   const MechanismFile file = LoadMechanism(args.file, args.sets);
@@ -105,6 +158,8 @@ void Run(const Args& args) {
     Finish(args, plot::TransferPlot(m, options));
   } else if (args.forces) {
     RunForcesPlot(args, file, range);
+  } else if (!args.tolerance.empty()) {
+    RunTolerancePlot(args, file);
   } else if (args.mu) {
     plot::MuPlotOptions options;
     for (int o = 0; o < static_cast<int>(m.outputs.size()) && options.output < 0; ++o)
@@ -144,6 +199,9 @@ void AddPlotCommand(CLI::App& app) {
       "                                 Q_G <= --qg through K_I (--at), the tangent g and a panel with the band\n"
       "  --forces [--speed RPM] [--joint J ...]  the drive torque over the input (koppel forces) and each joint's\n"
       "                                 reaction as a polar diagram (the force on its second link, frame axes)\n"
+      "  --tolerance OUTPUT --tol NAME=T ... [--clearance JOINT=c ...] [--samples N]  the output over the input\n"
+      "                                 in its linear worst-case band (koppel tolerance), the Monte Carlo min and\n"
+      "                                 max dashed, and each tolerance's share of the variance below\n"
       "  CHART.csv                      a design chart written by `koppel synth chart`\n"
       "Where the solver stops (a dead centre of the drive, the end of the assemblable range) the curves end and the\n"
       "rest is shaded: the picture is written and the exit code is 1.\n"
@@ -159,6 +217,12 @@ void AddPlotCommand(CLI::App& app) {
   cmd->add_flag("--forces", args->forces, "Plot the drive torque and, with --joint, polar diagrams of joint forces");
   cmd->add_option("--speed", args->speed, "With --forces: constant drive speed [rpm] (kinetostatics)");
   cmd->add_option("--joint", args->joints, "With --forces: a joint whose reaction is drawn as a polar diagram (repeatable)");
+  cmd->add_option("--tolerance", args->tolerance, "Plot the tolerance band of this output (s, or K_x / K_y)");
+  cmd->add_option("--tol", args->tols, "With --tolerance: a parameter's tolerance NAME=T (repeatable)");
+  cmd->add_option("--clearance", args->clearances, "With --tolerance: a revolute joint's play JOINT=c (repeatable)");
+  cmd->add_option("--samples", args->samples, "With --tolerance: Monte Carlo samples per input (default 0)");
+  cmd->add_option("--seed", args->seed, "With --tolerance: Monte Carlo seed (default 1)");
+  cmd->add_option("--distribution", args->distribution, "With --tolerance: uniform (default) or normal (T = 3 sigma)");
   cmd->add_option("--from", args->from, "First input (default: the file's sweep)");
   cmd->add_option("--to", args->to, "Last input (default: the file's sweep)");
   cmd->add_option("--step", args->step, "Input step (default: the file's sweep)");

@@ -62,6 +62,23 @@ struct CurvePlotOptions {
 // tangent g, and a second panel: the stretch in coordinates along and across g with its band Δy.
 PlotResult CurvePlot(const Mechanism& mechanism, const CurvePlotOptions& options);
 
+// The numbers of a tolerance analysis (koppel tolerance, koppel/api/tolerance.hpp) over a range
+// of inputs, as the picture needs them: per row the nominal output, the half-width of the linear
+// band (worst case of the tolerances plus that of the clearances), the Monte Carlo extremes (empty
+// without samples), each tolerance's and clearance's share; rows not reached have ok = false.
+struct ToleranceBand {
+  std::string mechanism, output, output_unit, input_label;
+  bool input_degrees = true;
+  std::vector<double> inputs, nominal, worst_case, mc_min, mc_max;
+  std::vector<bool> ok;
+  std::vector<std::string> names;           // "l1", ..., "clearance A"
+  std::vector<std::vector<double>> shares;  // per name, per row
+};
+// Three panels over the input: the nominal output; its deviation from nominal in the filled
+// worst-case band with the Monte Carlo min and max dashed; the shares of the variance (the
+// dimension to tighten first is the highest curve).
+PlotResult TolerancePlot(const ToleranceBand& band);
+
 // A design chart: the CSV that `koppel synth chart` writes (crank-rocker: phi0, psi0, beta,
 // mu_min, ...; slider-crank: phi0, e_s0, l1_s0, l2_s0, mu_min, beta), as curve families over φ0
 // with their parameter labelled. kFailed with a message naming the line for any other table.

@@ -111,7 +111,10 @@ void AddAtlasCommand(CLI::App& app) {
   build->callback([args] { Build(*args); });
   CLI::App* merge = cmd->add_subcommand("merge",
                                         "Joins atlases (the shards of one build, or builds of different seeds) into one, ordered by seed and\n"
-                                        "index; refuses a curve that appears twice. Example: koppel atlas merge part0.bin part1.bin -o atlas.bin");
+                                        "index; refuses a curve that appears twice.\n"
+                                        "Examples: koppel atlas build --count 20000 --shard 0/2 -o part0.bin\n"
+                                        "          koppel atlas build --count 20000 --shard 1/2 -o part1.bin\n"
+                                        "          koppel atlas merge part0.bin part1.bin -o merged.bin");
   merge->add_option("atlases", args->inputs, "The atlas files")->required();
   OutputFile(merge->add_option("-o,--output", args->out, "The merged atlas file")->required());
   merge->add_flag("--quiet", args->quiet, "No summary on stderr");

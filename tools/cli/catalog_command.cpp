@@ -234,7 +234,7 @@ void AddCatalogCommand(CLI::App& app) {
       "Find entries. Each count is a number (4) or a range (4..6, ..6, 4..); all given criteria must match.\n"
       "Examples: koppel catalog find --links 6 --ternary 2 --revolute 4 --prismatic 3 --drives-at-frame 1\n"
       "          koppel catalog find --class quick-return --motion 'rotation -> translation'\n"
-      "          koppel catalog find --like my-sketch.yaml     (entries with an isomorphic kinematic chain)");
+      "          koppel catalog find --like tests/data/kite.yaml   # entries with an isomorphic kinematic chain");
   common(find);
   find->add_option("--links", args->links, "Links, the frame included");
   find->add_option("--binary", args->binary, "Binary links (two joints)");

@@ -124,7 +124,7 @@ void AddFitSubcommand(CLI::App& synth) {
       "the best cost, whether the drive turns fully (or, when it does not assemble over `require`, the range it reaches)\n"
       "and mu_min for transmission outputs. Exit 1, naming the targets missed and by how much, when a target ends above\n"
       "its tolerance (`tolerance:`, default 1e-6 in the target's unit) or the design does not assemble over `require`.\n"
-      "Example: koppel synth fit problem.yaml -o fitted.yaml");
+      "Example: koppel synth fit tests/data/fit-mzc-every-target.yaml -o fitted.yaml");
   cmd->add_option("problem", args->problem, "Fit problem YAML file")->required();
   OutputFile(cmd->add_option("-o,--yaml", args->yaml, "Write the fitted mechanism as a YAML file"));
   OutputFile(cmd->add_option("--output-file", args->out, "Write the report to this file instead of stdout"));

@@ -166,7 +166,7 @@ void AddForcesCommand(CLI::App& app) {
       "slide (guide on block, about the block's point); singular, 1 at a singular pose, where the drive\n"
       "torque is unbounded (limit point) or the reactions undetermined (branch point): those cells are left\n"
       "empty and the command exits 1.\n"
-      "Example: koppel forces catalog/entries/slider-crank-offset.yaml --speed 600 --step 10");
+      "Example: koppel forces tests/data/slider-crank-loads.yaml --speed 600 --step 10");
   cmd->add_option("file", args->file, "Mechanism YAML file with masses and loads")->required();
   cmd->add_option("--speed", args->speed, "Constant drive speed [rpm; length units/s for a P drive]: kinetostatics");
   cmd->add_option("--from", args->from, "First input value [deg or length] (default: the file's sweep.from, else 0)");

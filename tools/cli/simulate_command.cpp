@@ -173,7 +173,7 @@ void AddSimulateCommand(CLI::App& app) {
       "drive's), E_kin and E_pot [J] (gravity and springs; formula loads and dampers have no potential).\n"
       "The run stops with exit 1, keeping its rows, where the motion cannot go on: a dead centre of the\n"
       "drive, a speed beyond the motor curve, a formula without a finite value.\n"
-      "Example: koppel simulate catalog/entries/slider-crank-offset.yaml --motor 0:2,3000:0 --t 0:2");
+      "Example: koppel simulate tests/data/slider-crank-loads.yaml --motor 0:40,2900:0,3100:-5 --t 0:2");
   cmd->add_option("file", args->file, "Mechanism YAML file with masses and loads")->required();
   cmd->add_option("--torque", args->torque, "Drive torque formula [N m; N for a P drive]");
   cmd->add_option("--motor", args->motor, "Motor curve: 'rpm:Nm,rpm:Nm,...' or a file of 'rpm,Nm' lines");

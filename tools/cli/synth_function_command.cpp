@@ -86,7 +86,7 @@ void AddFunctionSubcommand(CLI::App& synth) {
       "least squares for more, then polished by the Ceres fit on the true output through the mechanism. Prints crank,\n"
       "coupler, rocker, frame (slider-crank: crank, coupler, offset) and error_max, the largest structural error over the\n"
       "whole range (deg, or length) by the solver. Exit 1 when the design does not run through the whole input range.\n"
-      "Example: koppel synth function log10.yaml --error-curve error.csv -o log10-generator.yaml");
+      "Example: koppel synth function tests/data/function-log10.yaml --error-curve error.csv -o log10-generator.yaml");
   cmd->add_option("spec", args->spec, "SPEC.yaml")->required();
   OutputFile(cmd->add_option("-o,--yaml", args->yaml, "Write the mechanism as a YAML file"));
   OutputFile(cmd->add_option("--error-curve", args->error_curve, "Write the structural error over the range to this CSV file"));

@@ -199,7 +199,7 @@ void AddMotionSubcommand(CLI::App& synth) {
       "crank), order defect (driven one way, the crank meets the poses out of order), mu_min [deg] over the travel from the\n"
       "first pose to the last. --require crank keeps the four-bars whose input turns fully; -o DIR writes each as a\n"
       "mechanism file (four-bar-1.yaml, ...; the comment gives the drivable range). Exit 1 when no four-bar results.\n"
-      "Example: koppel synth motion poses.yaml --circle-point 1,0.2 --circle-point 3.1,2.4 -o designs");
+      "Example: koppel synth motion tests/data/motion-three-poses.yaml --circle-point 1,0.2 --circle-point 3.1,2.4 -o designs");
   cmd->add_option("poses", args->poses, "POSES.yaml")->required();
   cmd->add_option("--circle-point", args->circle_points, "A circle point X,Y (first pose, global); repeat for more");
   cmd->add_option("--grid", args->grid, "Three poses: dyads from an N x N grid of circle points");

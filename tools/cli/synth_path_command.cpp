@@ -107,7 +107,8 @@ void AddPathSubcommand(CLI::App& synth) {
       "Each row is a distinct design: one found again from another atlas curve (the same joints where K passes the\n"
       "first point, to 1e-4 of the points' size, either pivot as the crank's) is dropped and the next candidate polished.\n"
       "--open matches an open stretch against the arcs of rocker-driven four-bars. -o DIR writes each as a mechanism file.\n"
-      "Example: koppel synth path points.csv --atlas atlas.bin --top 5 -o linkages");
+      "Examples: koppel atlas build --count 100000 -o atlas.bin\n"
+      "          koppel synth path tests/data/path-points.csv --atlas atlas.bin --top 5 -o linkages");
   cmd->add_option("points", args->points, "POINTS.csv (header x,y)")->required();
   cmd->add_option("--atlas", args->atlas, "The atlas file")->required();
   cmd->add_option("--top", args->top, "Linkages to return (default 10)");

@@ -398,7 +398,11 @@ std::string Diagnostic::ToString() const {
 
 static std::string JoinDiagnostics(const std::vector<Diagnostic>& diagnostics) {
   std::string s;
-  for (const Diagnostic& d : diagnostics) s += (s.empty() ? "" : "\n") + d.ToString();
+  // appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "" + temporary here
+  for (const Diagnostic& d : diagnostics) {
+    if (!s.empty()) s += '\n';
+    s += d.ToString();
+  }
   return s;
 }
 

@@ -235,7 +235,9 @@ TEST_CASE("keywords match case-, hyphen- and space-insensitively (issue 22, item
       CHECK(Has(ids, e.file.id) == SaysStraightLine(e));
       expected += SaysStraightLine(e);
     }
-    CHECK(expected >= 10);  // the issue counted ten straight-line entries; "straight line" found 1
+    // nine entries say straight-line in these fields ("straight line" found one, Peaucellier's
+    // title); the issue's tenth file, deadcentre-crank-rocker, says it only in a comment
+    CHECK(expected >= 9);
   }
 }
 

@@ -44,7 +44,7 @@ TEST_CASE("every command takes a catalog id for a mechanism file (issue 22, item
       {"deadcentres", "slider-crank-offset", "--output s --summary"},
       {"curve", "mzc-crank-rocker", "--point K --step 30"},
       {"proportional", "proportional-linkage", "--output s --from 112.5 --to 247.5"},
-      {"cognates", "mzc-crank-rocker", "--point K"},
+      {"cognates", "mzc-crank-rocker", "--point K -o cognates"},
       {"range", "crank-rocker", "--all-branches"},
       {"classify", "crank-rocker", ""},
   };

@@ -3,6 +3,8 @@
 #include "koppel/catalog/check.hpp"
 #include "koppel/catalog/classes.hpp"
 
+#include "yaml_reader.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -15,6 +17,9 @@
 #endif
 #ifndef KOPPEL_INSTALLED_CATALOG
 #define KOPPEL_INSTALLED_CATALOG "../share/koppel/catalog"
+#endif
+#ifndef KOPPEL_INSTALL_PREFIX_CATALOG
+#define KOPPEL_INSTALL_PREFIX_CATALOG "/usr/local/share/koppel/catalog"
 #endif
 
 namespace koppel {
@@ -74,7 +79,61 @@ std::string InstalledCatalogDirectory() {
 std::string DefaultCatalogDirectory() {
   if (const char* env = std::getenv("KOPPEL_CATALOG"); env && *env) return env;
   if (std::string installed = InstalledCatalogDirectory(); !installed.empty()) return installed;
+  // a build tree: the source tree it was built from; a koppel whose libraries were copied away
+  // from their data (neither found): the data under the install prefix it was configured for
+  std::error_code ec;
+  if (!std::filesystem::is_directory(KOPPEL_CATALOG_DIR, ec) && std::filesystem::is_directory(KOPPEL_INSTALL_PREFIX_CATALOG, ec))
+    return KOPPEL_INSTALL_PREFIX_CATALOG;
   return KOPPEL_CATALOG_DIR;
+}
+
+namespace {
+
+bool LooksLikeId(const std::string& name) {
+  if (name.empty() || name.size() > 200) return false;
+  return std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) || c == '-' || c == '_'; });
+}
+
+}  // namespace
+
+std::string CatalogEntryFile(const std::string& id, const std::string& directory) {
+  namespace fs = std::filesystem;
+  if (!LooksLikeId(id)) return "";
+  std::error_code ec;
+  const fs::path entry = fs::path(directory.empty() ? DefaultCatalogDirectory() : directory) / (id + ".yaml");
+  return fs::is_regular_file(entry, ec) ? entry.string() : "";
+}
+
+std::string ResolveMechanismName(const std::string& name, const std::string& directory) {
+  std::error_code ec;
+  if (!LooksLikeId(name) || std::filesystem::exists(name, ec)) return name;
+  const std::string entry = CatalogEntryFile(name, directory);
+  return entry.empty() ? name : entry;
+}
+
+std::vector<std::string> CatalogIds(const std::string& directory) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> ids;
+  std::error_code ec;
+  for (fs::directory_iterator it(directory, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path().extension() == ".yaml") ids.push_back(it->path().stem().string());
+  }
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+std::string NearestCatalogId(const std::string& id, const std::vector<std::string>& ids) {
+  std::vector<std::string> lower;
+  for (const std::string& i : ids) lower.push_back(Lower(i));
+  const std::string nearest = Nearest(Lower(id), lower);
+  if (nearest.empty()) return "";
+  return ids[std::find(lower.begin(), lower.end(), nearest) - lower.begin()];
+}
+
+std::string UnknownCatalogId(const std::string& id, const std::vector<std::string>& ids, const std::string& directory) {
+  if (const std::string near = NearestCatalogId(id, ids); !near.empty())
+    return "no catalog entry '" + id + "' (did you mean '" + near + "'?)";
+  return "no catalog entry '" + id + "' in " + directory + " (`koppel catalog list` lists them)";
 }
 
 Catalog Catalog::Load(const std::string& directory) {
@@ -94,6 +153,11 @@ Catalog Catalog::Load(const std::string& directory) {
       MechanismFile file = ReadMechanismFile(path);
       if (!file.card) {
         problems.push_back({path, 1, 1, "catalog", "catalog entry has no 'catalog' section"});
+        continue;
+      }
+      if (const std::string stem = fs::path(path).stem().string(); file.id != stem) {
+        problems.push_back({path, 1, 1, "name",
+                            "the id '" + file.id + "' is not the file's name '" + stem + "' (an entry's file is named by its id: " + file.id + ".yaml)"});
         continue;
       }
       if (catalog.Find(file.id)) {
@@ -158,12 +222,33 @@ bool Matches(const CatalogEntry& entry, const FeatureQuery& q) {
   if (!q.klass.empty() && std::find(entry.classes.begin(), entry.classes.end(), q.klass) == entry.classes.end()) return false;
   if (!q.motion.empty() && !MotionMatches(card.motion, q.motion)) return false;
   if (!q.text.empty()) {
-    const std::string needle = Lower(q.text);
-    const std::string hay = Lower(entry.file.id + "\n" + card.title_de + "\n" + card.title_en + "\n" + entry.file.title);
-    if (hay.find(needle) == std::string::npos) return false;
+    std::string hay = entry.file.id + "\n" + card.title_de + "\n" + card.title_en + "\n" + entry.file.title + "\n" + card.motion;
+    for (const std::string& c : entry.classes) hay += "\n" + c;
+    if (!TextMatches(hay, q.text)) return false;
   }
   if (q.like && !SameKinematicChain(entry.file.mechanism, *q.like)) return false;
   return true;
+}
+
+namespace {
+
+// Lower case, every ASCII character that is not a letter or digit dropped (bytes of UTF-8
+// characters, the German titles' umlauts, are kept as they are).
+std::string Folded(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (c >= 0x80) out += static_cast<char>(c);
+    else if (std::isalnum(c)) out += static_cast<char>(std::tolower(c));
+  }
+  return out;
+}
+
+}  // namespace
+
+bool TextMatches(const std::string& haystack, const std::string& needle) {
+  const std::string n = Folded(needle);
+  if (n.empty()) return true;
+  return Folded(haystack).find(n) != std::string::npos;
 }
 
 std::vector<const CatalogEntry*> FindEntries(const Catalog& catalog, const FeatureQuery& query) {

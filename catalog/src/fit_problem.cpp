@@ -1,6 +1,8 @@
 #include "koppel/catalog/fit_problem.hpp"
 #include "koppel/catalog/parameter_builder.hpp"
 
+#include "koppel/catalog/catalog.hpp"
+
 #include "koppel/core/angles.hpp"
 #include "input_file.hpp"
 #include "mechanism_node.hpp"
@@ -143,7 +145,11 @@ FitProblem ReadFitProblem(const std::string& path) {
   const YAML::Node mech = r.Require(root, "mechanism", "");
   if (!r.diagnostics().empty()) throw InputError(r.diagnostics());
   const std::string relative = r.Text(mech, "mechanism").value_or("");
+  // a file relative to the problem's folder; where there is none, a catalog id names the entry
   problem.mechanism_path = (std::filesystem::path(path).parent_path() / relative).string();
+  if (std::error_code ec; !std::filesystem::exists(problem.mechanism_path, ec)) {
+    if (const std::string entry = CatalogEntryFile(relative); !entry.empty()) problem.mechanism_path = entry;
+  }
   std::string mechanism_text;
   try {
     problem.base = ReadMechanismFile(problem.mechanism_path);

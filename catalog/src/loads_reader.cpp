@@ -49,6 +49,7 @@ class LoadsReader {
       if (const auto named = LengthUnits().find(length.Scalar()); named != LengthUnits().end()) {
         loads_.metres_per_unit = named->second;
         loads_.length_unit_given = true;
+        loads_.length_unit_name = named->first;
         return;
       }
     }

@@ -1,5 +1,7 @@
 #include "koppel/catalog/mechanism_file.hpp"
 
+#include "koppel/catalog/catalog.hpp"
+
 #include "mechanism_node.hpp"
 
 #include "input_file.hpp"
@@ -9,6 +11,7 @@
 #include "yaml_reader.hpp"
 
 #include <cctype>
+#include <filesystem>
 
 namespace koppel {
 namespace {
@@ -207,6 +210,11 @@ class MechanismReader {
           }
         }
       }
+      // A slide has no natural direction to fall back on: a missing axis was read as [1, 0]
+      // without a word (issue 22, item 14); the file must say it.
+      if (j.type == JointType::kPrismatic && !e.value["axis"].IsDefined())
+        r_.Error(e.value, Child(path, "axis"),
+                 owner + ": a P joint needs its slide axis: the guide's direction in the guide's (first link's) coordinates, e.g. axis: [1, 0]");
       if (const YAML::Node angle = e.value["angle"]; angle.IsDefined()) {
         if (j.type != JointType::kPrismatic) r_.Error(angle, Child(path, "angle"), owner + ": only a P joint has an angle");
         if (auto v = r_.Number(angle, Child(path, "angle"))) j.angle = DegToRad(*v);
@@ -390,7 +398,11 @@ std::string Diagnostic::ToString() const {
 
 static std::string JoinDiagnostics(const std::vector<Diagnostic>& diagnostics) {
   std::string s;
-  for (const Diagnostic& d : diagnostics) s += (s.empty() ? "" : "\n") + d.ToString();
+  // appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "" + temporary here
+  for (const Diagnostic& d : diagnostics) {
+    if (!s.empty()) s += '\n';
+    s += d.ToString();
+  }
   return s;
 }
 
@@ -422,8 +434,21 @@ MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file
   return out;
 }
 
-MechanismFile ReadMechanismFile(const std::string& path, const Overrides& overrides) {
-  return ParseMechanismText(ReadInputText(path), path, overrides);
+MechanismFile ReadMechanismFile(const std::string& name, const Overrides& overrides) {
+  const std::string path = ResolveMechanismName(name);
+  std::string text;
+  try {
+    text = ReadInputText(path);
+  } catch (const InputError& e) {
+    // a name that is neither a file nor a catalog id: say both, with the id it may have meant
+    std::error_code ec;
+    if (path != name || !ValidId(name) || std::filesystem::exists(name, ec)) throw;
+    const std::string directory = DefaultCatalogDirectory();
+    Diagnostic d = e.diagnostics().at(0);
+    d.message += "; nor is it a catalog id: " + UnknownCatalogId(name, CatalogIds(directory), directory);
+    throw InputError({d});
+  }
+  return ParseMechanismText(text, path, overrides);
 }
 
 std::pair<std::string, std::string> ParseAssignment(const std::string& text) {

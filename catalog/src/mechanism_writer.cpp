@@ -32,7 +32,11 @@ void WriteMass(std::ostringstream& out, const Loads& loads, long link) {
 }
 
 void WriteLoads(std::ostringstream& out, const Mechanism& m, const Loads& loads) {
-  if (loads.length_unit_given || loads.metres_per_unit != 1.0) out << "units: {length: " << Num(loads.metres_per_unit) << "}\n";
+  if (!loads.length_unit_name.empty()) {
+    out << "units: {length: " << loads.length_unit_name << "}\n";
+  } else if (loads.length_unit_given || loads.metres_per_unit != 1.0) {
+    out << "units: {length: " << Num(loads.metres_per_unit) << "}\n";
+  }
   if (loads.gravity.squaredNorm() > 0.0) out << "gravity: [" << Num(loads.gravity.x()) << ", " << Num(loads.gravity.y()) << "]\n";
   if (loads.forces.empty() && loads.torques.empty() && loads.springs.empty()) return;
   out << "loads:\n";

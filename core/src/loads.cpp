@@ -1,8 +1,19 @@
 #include "koppel/core/loads.hpp"
 
+#include <iomanip>
+#include <sstream>
+
 #include <cmath>
 
 namespace koppel {
+
+std::string Loads::LengthUnit() const {
+  if (!length_unit_name.empty()) return length_unit_name;
+  if (!length_unit_given) return "length";
+  std::ostringstream text;
+  text << std::setprecision(12) << metres_per_unit << " m";
+  return text.str();
+}
 
 bool Loads::HasMass() const {
   for (const LinkMass& m : masses) {

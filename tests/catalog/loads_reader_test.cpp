@@ -118,6 +118,18 @@ TEST_CASE("length units by name or in metres; SI by default", "[loads]") {
   CHECK_FALSE(ParseMechanismText(Replace(kGood, "units: {length: mm}\n", ""), "x.yaml").loads.length_unit_given);
 }
 
+TEST_CASE("the length unit is labelled as the file names it (issue 22, item 14)", "[loads]") {
+  CHECK(ParseMechanismText(kGood, "x.yaml").loads.LengthUnit() == "mm");  // was "length"
+  CHECK(ParseMechanismText(Replace(kGood, "units: {length: mm}", "units: {length: in}"), "x.yaml").loads.LengthUnit() == "in");
+  CHECK(ParseMechanismText(Replace(kGood, "units: {length: mm}", "units: {length: 0.005}"), "x.yaml").loads.LengthUnit() == "0.005 m");
+  CHECK(ParseMechanismText(Replace(kGood, "units: {length: mm}\n", ""), "x.yaml").loads.LengthUnit() == "length");
+  // and written back by name
+  const MechanismFile f = ParseMechanismText(kGood, "loaded.yaml");
+  const std::string text = WriteMechanismYaml(f.mechanism, "round trip", f.sweep, f.parameters.Values(), &f.loads);
+  CHECK_THAT(text, Catch::Contains("units: {length: mm}"));
+  CHECK(ParseMechanismText(text, "again.yaml").loads.LengthUnit() == "mm");
+}
+
 TEST_CASE("the writer writes masses and loads that read back the same", "[loads]") {
   const MechanismFile f = ParseMechanismText(kGood, "loaded.yaml");
   const std::string text = WriteMechanismYaml(f.mechanism, "round trip", f.sweep, f.parameters.Values(), &f.loads);

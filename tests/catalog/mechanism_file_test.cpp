@@ -117,6 +117,21 @@ drive: {joint: S, zero: 2}
   CHECK(f.mechanism.drive.input_name == "s_in");
 }
 
+TEST_CASE("a P joint without its axis is an error at its line (issue 22, item 14)", "[reader]") {
+  // it was read as [1, 0] without a word
+  const std::string text = R"(name: slider
+links:
+  frame: {frame: true, points: {O: [0, 0]}}
+  block: {points: {P: [0, 0]}}
+joints:
+  S: {type: P, links: [frame, block], points: [O, P]}
+drive: {joint: S}
+)";
+  ExpectError(text, "S: {type: P", "a P joint needs its slide axis");
+  CHECK(Bad(text).at(0).path == "joints.S.axis");
+  CHECK_THAT(Bad(text).at(0).ToString(), Catch::StartsWith("mech.yaml:6:"));
+}
+
 TEST_CASE("--set overrides a parameter and what depends on it", "[reader]") {
   const MechanismFile f = ParseMechanismText(kGood, "mech.yaml", {{"l2", "5"}});
   CHECK(f.parameters.Value("l2") == 5.0);

@@ -2,7 +2,8 @@
 # koppel as an installed package, checked as its users meet it (ctest `packaging`, CI):
 #   check.sh BUILD_DIR SOURCE_DIR WORK_DIR PYTHON PYTHON_DIR
 # installs BUILD_DIR into WORK_DIR/prefix, then
-# - the installed `koppel` finds its catalog without --catalog, and prints the version;
+# - the installed `koppel` finds its catalog without --catalog, takes a catalog id for a file
+#   (`koppel analyze crank-rocker`), and prints the version;
 # - the installed headers pull in no header of Ceres, glog or yaml-cpp, nor any private one;
 # - tests/packaging/cpp (find_package, koppel::koppel) computes the slider-crank's stroke;
 # - tests/packaging/analysis_only (koppel::analysis) does too, and neither its dependencies nor
@@ -30,6 +31,12 @@ installed_catalog() {  # PREFIX: the installed koppel reads its entries from PRE
   (cd "$work" && "$1/bin/koppel" catalog show slider-crank-offset) > "$work/show.txt" || fail "koppel catalog show"
   grep -q "^file: *$1/share/koppel/catalog/slider-crank-offset.yaml" "$work/show.txt" ||
     fail "the koppel installed in $1 does not read the catalog installed with it"
+  # a catalog id where a file is expected, outside the source tree (issue 22, item 9): the entry
+  # installed with it, the same table as for the entry's file
+  (cd "$work" && "$1/bin/koppel" analyze crank-rocker --step 30) > "$work/by_id.csv" || fail "$1/bin/koppel analyze crank-rocker"
+  (cd "$work" && "$1/bin/koppel" analyze "$1/share/koppel/catalog/crank-rocker.yaml" --step 30) > "$work/by_file.csv" ||
+    fail "$1/bin/koppel analyze $1/share/koppel/catalog/crank-rocker.yaml"
+  cmp -s "$work/by_id.csv" "$work/by_file.csv" || fail "analyze crank-rocker differs from analyze of the installed entry's file"
 }
 installed_catalog "$prefix"
 

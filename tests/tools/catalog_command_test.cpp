@@ -115,7 +115,7 @@ TEST_CASE("catalog find --like finds the entries with the sketch's chain, joint 
   CHECK(r.out.find("slider-crank-offset") == std::string::npos);
   // one joint made prismatic: the slider-crank chain, no four-bar
   const std::string slider = dir.Write("slider.yaml", test::Replace(test::Replace(kSketch, "j4: {type: R, links: [output, ground], points: [Q, Q]}",
-                                                                                  "j4: {type: P, links: [ground, output], points: [Q, Q]}"),
+                                                                                  "j4: {type: P, links: [ground, output], points: [Q, Q], axis: [1, 0]}"),
                                                                     "  output: {points: {Q: [0, 0], T: [3, 0]}}", "  output: {points: {Q: [0, 0], T: [0, 0]}}"));
   const test::RunResult s = test::RunKoppel("catalog find --like " + slider + " --format csv");
   REQUIRE(s.exit_code == 0);

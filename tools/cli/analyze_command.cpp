@@ -85,7 +85,7 @@ void RunAnalyze(const AnalyzeArgs& args) {
     throw Exit{kExitBadInput};
   }
   const SweepResult result = Sweep(m, options);
-  const SweepColumns table = SweepLayout(m, options.order);
+  const SweepColumns table = SweepLayout(m, options.order, file.loads.LengthUnit());
 
   if (args.format == "csv") {
     WriteOutput(args.out, ToCsv(m, table, result));
@@ -93,7 +93,7 @@ void RunAnalyze(const AnalyzeArgs& args) {
     nlohmann::json j = ToJson(m, table, result);
     j["mechanism"] = m.name;
     j["file"] = file.path;
-    j["input"] = {{"name", m.drive.input_name}, {"unit", angle_input ? "deg" : "length"},
+    j["input"] = {{"name", m.drive.input_name}, {"unit", angle_input ? "deg" : file.loads.LengthUnit()},
                   {"from", from}, {"to", to}, {"step", step}};
     j["order"] = options.order;
     j["complete"] = result.complete();

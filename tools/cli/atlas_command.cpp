@@ -14,7 +14,7 @@ namespace koppel::cli {
 namespace {
 
 struct Args {
-  std::string count, seed = "1", shard, out, threads;
+  std::string count, seed = "1", shard, out, threads, format;
   std::vector<std::string> inputs;
   bool quiet = false;
 };
@@ -41,8 +41,18 @@ void RequireOutput(const Args& args) {
   }
 }
 
+// The atlas is binary (-o); with --format, a summary of what was written goes to stdout as the
+// other commands' quantity,value,unit tables (csv or json). Without it stdout stays empty.
+void CheckSummaryFormat(const Args& args) {
+  if (!args.format.empty()) CheckFormat(args.format);
+}
+void PrintSummary(const Args& args, const Summary& s) {
+  if (!args.format.empty()) WriteOutput("", args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv());
+}
+
 void Build(const Args& args) {
   RequireOutput(args);
+  CheckSummaryFormat(args);
   AtlasBuildOptions o;
   o.count = WholeNumber("--count", args.count, kMaxAtlasCurves);
   o.seed = WholeNumber("--seed", args.seed, UINT64_MAX);
@@ -66,6 +76,12 @@ void Build(const Args& args) {
   WriteOutput(args.out, SerialiseAtlas(entries));
   std::size_t closed = 0;
   for (const AtlasEntry& e : entries) closed += e.closed;
+  Summary summary;
+  summary.Add("curves", static_cast<double>(entries.size()), "");
+  summary.Add("closed", static_cast<double>(closed), "");
+  summary.Add("rocker_arcs", static_cast<double>(entries.size() - closed), "");
+  summary.Add("seconds", seconds, "s");
+  PrintSummary(args, summary);
   if (!args.quiet)
     std::cerr << fmt::format("koppel atlas build: {} curves ({} closed, {} rocker arcs) of seed {}, shard {}/{}, in {:.2f} s\n", entries.size(), closed,
                              entries.size() - closed, o.seed, o.shard, o.shards, seconds);
@@ -73,6 +89,7 @@ void Build(const Args& args) {
 
 void Merge(const Args& args) {
   RequireOutput(args);
+  CheckSummaryFormat(args);
   if (args.inputs.empty()) {
     Complain("atlas merge: name the atlases to merge");
     throw Exit{kExitBadInput};
@@ -85,6 +102,10 @@ void Merge(const Args& args) {
     throw Exit{kExitBadInput};
   }
   WriteOutput(args.out, SerialiseAtlas(*merged));
+  Summary summary;
+  summary.Add("curves", static_cast<double>(merged->size()), "");
+  summary.Add("atlases", static_cast<double>(args.inputs.size()), "");
+  PrintSummary(args, summary);
   if (!args.quiet) std::cerr << fmt::format("koppel atlas merge: {} curves from {} atlases\n", merged->size(), args.inputs.size());
 }
 
@@ -108,6 +129,7 @@ void AddAtlasCommand(CLI::App& app) {
   OutputFile(build->add_option("-o,--output", args->out, "The atlas file to write")->required());
   build->add_option("--threads", args->threads, "Threads (default: one per core)");
   build->add_flag("--quiet", args->quiet, "No summary on stderr");
+  build->add_option("--format", args->format, "csv or json: also print a summary (curves, closed, rocker_arcs, seconds) on stdout");
   build->callback([args] { Build(*args); });
   CLI::App* merge = cmd->add_subcommand("merge",
                                         "Joins atlases (the shards of one build, or builds of different seeds) into one, ordered by seed and\n"
@@ -118,6 +140,7 @@ void AddAtlasCommand(CLI::App& app) {
   merge->add_option("atlases", args->inputs, "The atlas files")->required();
   OutputFile(merge->add_option("-o,--output", args->out, "The merged atlas file")->required());
   merge->add_flag("--quiet", args->quiet, "No summary on stderr");
+  merge->add_option("--format", args->format, "csv or json: also print a summary (curves, atlases) on stdout");
   merge->callback([args] { Merge(*args); });
 }
 

@@ -76,7 +76,7 @@ void RunCheck(const CatalogArgs& args) {
   if (args.ids.empty()) {
     for (const CatalogEntry& e : catalog.entries()) entries.push_back(&e);
   } else {
-    for (const std::string& id : args.ids) entries.push_back(&FindOrFail(catalog, id));
+    for (const std::string& id : args.ids) entries.push_back(&FindOrFail(catalog, id, CatalogDirectoryOf(args)));
   }
   std::vector<EntryReport> reports;
   for (const CatalogEntry* e : entries) {

@@ -19,20 +19,22 @@ void CheckCatalogFormat(const std::string& format) {
   throw Exit{kExitBadInput};
 }
 
+std::string CatalogDirectoryOf(const CatalogArgs& args) { return args.directory.empty() ? DefaultCatalogDirectory() : args.directory; }
+
 Catalog LoadCatalog(const CatalogArgs& args) {
   try {
-    return Catalog::Load(args.directory.empty() ? DefaultCatalogDirectory() : args.directory);
+    return Catalog::Load(CatalogDirectoryOf(args));
   } catch (const InputError& e) {
     for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
     throw Exit{kExitBadInput};
   }
 }
 
-const CatalogEntry& FindOrFail(const Catalog& catalog, const std::string& id) {
+const CatalogEntry& FindOrFail(const Catalog& catalog, const std::string& id, const std::string& directory) {
   if (const CatalogEntry* e = catalog.Find(id)) return *e;
-  std::string known;
-  for (const CatalogEntry& c : catalog.entries()) known += " " + c.file.id;
-  Complain("no catalog entry '" + id + "' (entries:" + known + ")");
+  std::vector<std::string> ids;
+  for (const CatalogEntry& c : catalog.entries()) ids.push_back(c.file.id);
+  Complain(UnknownCatalogId(id, ids, directory));
   throw Exit{kExitBadInput};
 }
 
@@ -252,7 +254,8 @@ void AddCatalogCommand(CLI::App& app) {
   find->add_option("--motion", args->motion,
                    "Motion, 'INPUT -> OUTPUT', each side a part of the entry's (e.g. 'rotation -> oscillating translation');\n"
                    "one word alone matches either side");
-  find->add_option("--text,--keyword", args->text, "Case-insensitive word in the id or the titles (German or English)");
+  find->add_option("--text,--keyword", args->text, "Words in the id, the titles (German or English), the classes or the motion;\n"
+                                                    "case, hyphens and spaces ignored ('straight line' finds straight-line)");
   find->add_option("--like", args->like, "A mechanism file: entries whose kinematic chain is isomorphic to its own\n"
                                          "(joint types respected, the frame marked)");
   find->callback([args] { RunFind(*args, false); });

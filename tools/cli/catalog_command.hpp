@@ -29,7 +29,9 @@ void CheckCatalogFormat(const std::string& format);
 
 // Loads the catalog of --catalog (default: the built-in one); Exit{2} with the diagnostics.
 Catalog LoadCatalog(const CatalogArgs& args);
-const CatalogEntry& FindOrFail(const Catalog& catalog, const std::string& id);
+std::string CatalogDirectoryOf(const CatalogArgs& args);  // --catalog, or the built-in one
+// The entry `id`; Exit{2} with one line, "did you mean" the nearest id (UnknownCatalogId).
+const CatalogEntry& FindOrFail(const Catalog& catalog, const std::string& id, const std::string& directory);
 
 // Rows of text as columns padded to their widest cell (UTF-8 aware), two spaces apart.
 std::string TextTable(const std::vector<std::vector<std::string>>& rows);

@@ -188,7 +188,7 @@ void RunShow(const CatalogArgs& args) {
     throw Exit{kExitBadInput};
   }
   const Catalog catalog = LoadCatalog(args);
-  const CatalogEntry& e = FindOrFail(catalog, args.ids.at(0));
+  const CatalogEntry& e = FindOrFail(catalog, args.ids.at(0), CatalogDirectoryOf(args));
   EntryReport report;
   try {
     report = CheckEntry(e.file.path);

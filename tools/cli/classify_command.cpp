@@ -51,7 +51,7 @@ void Run(const Args& args) {
   add_word("drive_rotation", m.InputIsAngle() && c.drive_turns_fully ? "full" : "limited");
   if (c.grashof != GrashofType::kNotApplicable) {
     add_word("grashof", ToString(c.grashof));
-    for (const auto& [name, value] : c.lengths) add_number(name, value, "length");
+    for (const auto& [name, value] : c.lengths) add_number(name, value, file.loads.LengthUnit());
     add_word("grashof_rule", c.rule);
   }
   WriteOutput(args.out, args.format == "json" ? JsonText(j) : rows.ToCsv());

@@ -45,20 +45,20 @@ void Run(const Args& args) {
   WriteOutput(first, WriteMechanismYaml(c.first, note + "Pivots A0 and C0; its crank A0A1 turns with the original coupler.", sweep_first));
   WriteOutput(second, WriteMechanismYaml(c.second, note + "Pivots C0 and B0; its crank C0C2 turns with the original crank: same input.", sweep));
   Summary s;
-  s.Add("cognate1_A0C0", c.frame_first, "length");
-  s.Add("cognate1_A0A1", c.crank_first, "length");
-  s.Add("cognate1_A1C1", c.coupler_first, "length");
-  s.Add("cognate1_C0C1", c.rocker_first, "length");
-  s.Add("cognate1_A1K", c.k_first, "length");
-  s.Add("cognate1_C1K", c.l_first, "length");
+  s.Add("cognate1_A0C0", c.frame_first, file.loads.LengthUnit());
+  s.Add("cognate1_A0A1", c.crank_first, file.loads.LengthUnit());
+  s.Add("cognate1_A1C1", c.coupler_first, file.loads.LengthUnit());
+  s.Add("cognate1_C0C1", c.rocker_first, file.loads.LengthUnit());
+  s.Add("cognate1_A1K", c.k_first, file.loads.LengthUnit());
+  s.Add("cognate1_C1K", c.l_first, file.loads.LengthUnit());
   s.Add("cognate1_input_min", RadToDeg(c.first_input_min), "deg");
   s.Add("cognate1_input_max", RadToDeg(c.first_input_max), "deg");
-  s.Add("cognate2_C0B0", c.frame_second, "length");
-  s.Add("cognate2_C0C2", c.crank_second, "length");
-  s.Add("cognate2_C2B2", c.coupler_second, "length");
-  s.Add("cognate2_B0B2", c.rocker_second, "length");
-  s.Add("cognate2_B2K", c.k_second, "length");
-  s.Add("cognate2_C2K", c.l_second, "length");
+  s.Add("cognate2_C0B0", c.frame_second, file.loads.LengthUnit());
+  s.Add("cognate2_C0C2", c.crank_second, file.loads.LengthUnit());
+  s.Add("cognate2_C2B2", c.coupler_second, file.loads.LengthUnit());
+  s.Add("cognate2_B0B2", c.rocker_second, file.loads.LengthUnit());
+  s.Add("cognate2_B2K", c.k_second, file.loads.LengthUnit());
+  s.Add("cognate2_C2K", c.l_second, file.loads.LengthUnit());
   WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv());
 }
 

@@ -114,6 +114,42 @@ nlohmann::json Table::ToJson() const {
   return j;
 }
 
+std::string MixedTable::ToCsv() const {
+  std::string out;
+  for (size_t i = 0; i < columns.size(); ++i) out += (i ? "," : "") + columns[i];
+  out += "\n";
+  for (const auto& row : rows) {
+    for (size_t i = 0; i < row.size(); ++i) {
+      if (i) out += ',';
+      if (const double* v = std::get_if<double>(&row[i])) AppendNumber(out, *v);
+      if (const std::string* w = std::get_if<std::string>(&row[i])) out += *w;
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+nlohmann::json MixedTable::ToJson() const {
+  nlohmann::json rows_json = nlohmann::json::array();
+  for (const auto& row : rows) {
+    nlohmann::json r = nlohmann::json::array();
+    for (const Cell& c : row) {
+      if (const double* v = std::get_if<double>(&c)) {
+        FormatNumber(*v);  // the same refusal of non-finite numbers as CSV
+        r.push_back(*v);
+      } else if (const std::string* w = std::get_if<std::string>(&c)) {
+        r.push_back(*w);
+      } else {
+        r.push_back(nullptr);
+      }
+    }
+    rows_json.push_back(std::move(r));
+  }
+  return {{"columns", columns}, {"rows", rows_json}};
+}
+
+std::string MixedTable::Text(const std::string& format) const { return format == "json" ? JsonText(ToJson()) : ToCsv(); }
+
 PointRef ResolvePoint(const Mechanism& m, const std::string& text) {
   const Expected<PointRef> point = FindPointByText(m, text);
   if (point) return *point;

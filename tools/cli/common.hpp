@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace CLI {
@@ -89,6 +90,19 @@ struct Table {
   std::vector<std::vector<double>> rows;
   std::string ToCsv() const;
   nlohmann::json ToJson() const;  // {"columns": [...], "rows": [[...], ...]}
+};
+
+// A table whose cells are numbers, words or empty (synth motion and synth path: the Grashof type,
+// the rank a cognate repeats). CSV as Table; JSON as Table's {"columns", "rows"}, a word as a
+// string and an empty cell as null (as analyze's cells that cannot be computed).
+struct MixedTable {
+  using Cell = std::variant<std::monostate, double, std::string>;
+  std::vector<std::string> columns;
+  std::vector<std::vector<Cell>> rows;
+  std::string ToCsv() const;
+  nlohmann::json ToJson() const;
+  // ToJson()'s JsonText for "json", ToCsv() otherwise
+  std::string Text(const std::string& format) const;
 };
 
 // Prints "koppel: message" on stderr.

@@ -27,7 +27,7 @@ void Run(const Args& args) {
   const bool angle = m.InputIsAngle();
   auto in = [&](double v) { return angle ? DegToRad(v) : v; };
   auto shown = [&](double v) { return angle ? RadToDeg(v) : v; };
-  const std::string unit = angle ? "deg" : "length";
+  const std::string unit = angle ? "deg" : file.loads.LengthUnit();
   ContinuationOptions continuation;
   continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
   if (!args.straight) {
@@ -104,14 +104,14 @@ void Run(const Args& args) {
   }
   Summary sum;
   sum.Add(m.drive.input_name + "_I", RadToDeg(s.reference), "deg");
-  sum.Add("K_I_x", s.reference_point.x(), "length");
-  sum.Add("K_I_y", s.reference_point.y(), "length");
+  sum.Add("K_I_x", s.reference_point.x(), file.loads.LengthUnit());
+  sum.Add("K_I_y", s.reference_point.y(), file.loads.LengthUnit());
   sum.Add("tangent_angle", RadToDeg(std::atan2(s.tangent.y(), s.tangent.x())), "deg");
   sum.Add(m.drive.input_name + "_A", RadToDeg(s.phi_a), "deg");
   sum.Add(m.drive.input_name + "_E", RadToDeg(s.phi_e), "deg");
   sum.Add(m.drive.input_name + "_G", RadToDeg(s.phi_g), "deg");
-  sum.Add("L", s.length, "length");
-  sum.Add("delta_y", s.band, "length");
+  sum.Add("L", s.length, file.loads.LengthUnit());
+  sum.Add("delta_y", s.band, file.loads.LengthUnit());
   sum.Add("Q_G", s.qg, "1");
   WriteOutput(args.out, args.format == "json" ? JsonText(sum.ToJson()) : sum.ToCsv());
 }

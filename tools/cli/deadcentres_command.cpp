@@ -20,10 +20,11 @@ struct Args {
 // Degrees for angles, lengths as they are.
 struct Units {
   bool angle_in = false, angle_out = false;
+  std::string length = "length";  // the file's length unit (Loads::LengthUnit)
   double In(double v) const { return angle_in ? RadToDeg(v) : v; }
   double Out(double v) const { return angle_out ? RadToDeg(v) : v; }
-  std::string in_unit() const { return angle_in ? "deg" : "length"; }
-  std::string out_unit() const { return angle_out ? "deg" : "length"; }
+  std::string in_unit() const { return angle_in ? "deg" : length; }
+  std::string out_unit() const { return angle_out ? "deg" : length; }
 };
 
 // A transmission angle: mu_min, phi_mu_min, mu_max, phi_mu_max (extremes.hpp); the stroke of a
@@ -114,7 +115,7 @@ void Run(const Args& args) {
   const MechanismFile file = LoadMechanism(args.file, args.sets);
   const Mechanism& m = file.mechanism;
   const int output = ResolveScalarOutput(m, args.output);
-  const Units units{m.InputIsAngle(), m.OutputIsAngle(output)};
+  const Units units{m.InputIsAngle(), m.OutputIsAngle(output), file.loads.LengthUnit()};
   auto in = [&](double v) { return units.angle_in ? DegToRad(v) : v; };
   SweepOptions range;
   range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));

@@ -51,18 +51,18 @@ void Run(const Args& args) {
     Complain(args.file + ": " + p.message);
     throw Exit{kExitFailed};
   }
-  const std::string unit = angle ? "deg" : "length";
+  const std::string unit = angle ? "deg" : file.loads.LengthUnit();
   auto shown = [&](double v) { return angle ? RadToDeg(v) : v; };
   Summary s;
   s.Add("from", shown(from), unit);
   s.Add("to", shown(to), unit);
   s.Add("phi_P", shown(p.phi_p), unit);
   s.Add("reference", shown(p.reference), unit);
-  s.Add("slope", p.slope, angle ? "length/rad" : "1");
-  s.Add("delta_s", p.delta_s, "length");
-  s.Add("reference_length", length, "length");
+  s.Add("slope", p.slope, angle ? file.loads.LengthUnit() + "/rad" : "1");
+  s.Add("delta_s", p.delta_s, file.loads.LengthUnit());
+  s.Add("reference_length", length, file.loads.LengthUnit());
   s.Add("Q_P", p.qp, angle ? "1/rad" : "1/length");
-  s.Add("chord_deviation", p.chord_deviation, "length");
+  s.Add("chord_deviation", p.chord_deviation, file.loads.LengthUnit());
   if (args.format == "json") {
     nlohmann::json j = s.ToJson();
     j["complete"] = p.sweep.complete();

@@ -39,7 +39,7 @@ void Run(const Args& args) {
       if (!b.message.empty()) entry["message"] = b.message;
       branches.push_back(entry);
     }
-    const nlohmann::json j = {{"mechanism", m.name}, {"input", m.drive.input_name}, {"unit", m.InputIsAngle() ? "deg" : "length"},
+    const nlohmann::json j = {{"mechanism", m.name}, {"input", m.drive.input_name}, {"unit", m.InputIsAngle() ? "deg" : file.loads.LengthUnit()},
                               {"branches", branches}, {"notes", report.notes}};
     WriteOutput(args.out, JsonText(j));
   } else {

@@ -67,7 +67,7 @@ void Run(const Args& args) {
         four_bar ? "deg" : "length", out_unit(d.error_at_precision));
     WriteOutput(args.yaml, WriteMechanismYaml(d.mechanism, comment, {RadToDeg(r.input_from), RadToDeg(r.input_to), (RadToDeg(r.input_to) - RadToDeg(r.input_from)) / 360}));
   }
-  WriteOutput(args.out, args.format == "json" ? s.ToJson().dump(1) + "\n" : s.ToCsv());
+  WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv());
   if (!d.ok()) {
     Complain(args.spec + ": " + d.Brief());
     throw Exit{kExitFailed};

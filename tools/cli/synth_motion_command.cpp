@@ -17,7 +17,7 @@ namespace koppel::cli {
 namespace {
 
 struct Args {
-  std::string poses, dir, out, curves, require, crank_turn = "90", grid, samples = "18", top, threads;
+  std::string poses, dir, out, curves, require, crank_turn = "90", grid, samples = "18", top, threads, format = "csv";
   std::vector<std::string> circle_points;
 };
 
@@ -121,6 +121,7 @@ std::string Comment(const MotionFourBar& f, int rank, const std::string& poses) 
 }
 
 void Run(const Args& args) {
+  CheckFormat(args.format);
   MotionSpecFile spec;
   try {
     spec = ReadMotionSpec(args.poses);
@@ -148,19 +149,15 @@ void Run(const Args& args) {
   std::cerr << fmt::format("koppel synth motion: {} poses, {} dyads, {} four-bars re-analysed through every pose{}\n", spec.poses.size(),
                            dyads.size(), result.four_bars.size(),
                            options.require_crank ? fmt::format(", {} without a crank left out", result.rejected) : "");
-  Table table;
+  MixedTable table;
   table.columns = {"A0_x", "A0_y", "A_x", "A_y", "B_x", "B_y", "B0_x", "B0_y", "grashof", "branch_defect", "order_defect", "mu_min"};
-  std::string csv;
-  for (size_t i = 0; i < table.columns.size(); ++i) csv += (i ? "," : "") + table.columns[i];
-  csv += "\n";
   const size_t shown = top > 0 ? std::min<size_t>(top, result.four_bars.size()) : result.four_bars.size();
   if (!args.dir.empty()) MakeOutputDirectory(args.dir);
   for (size_t i = 0; i < shown; ++i) {
     const MotionFourBar& f = result.four_bars[i];
-    for (double v : {f.crank.centre.x(), f.crank.centre.y(), f.crank.circle.x(), f.crank.circle.y(), f.rocker.circle.x(), f.rocker.circle.y(),
-                     f.rocker.centre.x(), f.rocker.centre.y()})
-      csv += FormatNumber(v) + ",";
-    csv += fmt::format("{},{},{},{}\n", ToString(f.grashof), f.branch_defect ? 1 : 0, f.order_defect ? 1 : 0, FormatNumber(RadToDeg(f.mu_min)));
+    table.rows.push_back({f.crank.centre.x(), f.crank.centre.y(), f.crank.circle.x(), f.crank.circle.y(), f.rocker.circle.x(),
+                          f.rocker.circle.y(), f.rocker.centre.x(), f.rocker.centre.y(), std::string(ToString(f.grashof)),
+                          f.branch_defect ? 1.0 : 0.0, f.order_defect ? 1.0 : 0.0, RadToDeg(f.mu_min)});
     if (!args.dir.empty()) {
       const SweepDefaults sweep = f.crank_turns_fully ? SweepDefaults{RadToDeg(f.drive_from), RadToDeg(f.drive_from) + 360, 1}
                                                       : SweepDefaults{RadToDeg(f.drive_from), RadToDeg(f.drive_to), (RadToDeg(f.drive_to) - RadToDeg(f.drive_from)) / 360};
@@ -169,7 +166,7 @@ void Run(const Args& args) {
       WriteOutput((std::filesystem::path(args.dir) / (m.name + ".yaml")).string(), WriteMechanismYaml(m, Comment(f, static_cast<int>(i + 1), args.poses), sweep));
     }
   }
-  WriteOutput(args.out, csv);
+  WriteOutput(args.out, table.Text(args.format));
   for (const std::string& failure : result.failures) Complain("a four-bar failed its re-analysis: " + failure);
   if (result.failed > 0) throw Exit{kExitFailed};
   if (result.four_bars.empty()) {
@@ -210,6 +207,7 @@ void AddMotionSubcommand(CLI::App& synth) {
   cmd->add_option("--top", args->top, "Print (and write) only the best N");
   OutputDirectory(cmd->add_option("-o,--dir", args->dir, "Write each four-bar as a mechanism file into this directory"));
   OutputFile(cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout"));
+  cmd->add_option("--format", args->format, "The table as csv (default) or json ({\"columns\", \"rows\"}; grashof a string)");
   cmd->add_option("--threads", args->threads, "Threads for the re-analyses (default: one per core)");
   cmd->callback([args] { Run(*args); });
 }

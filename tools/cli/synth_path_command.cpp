@@ -20,7 +20,7 @@ namespace koppel::cli {
 namespace {
 
 struct Args {
-  std::string points, atlas, top = "10", candidates, dir, out, threads;
+  std::string points, atlas, top = "10", candidates, dir, out, threads, format = "csv";
   bool open = false;
 };
 
@@ -44,6 +44,7 @@ int Whole(const std::string& flag, const std::string& text, int lo, int hi) {
 }
 
 void Run(const Args& args) {
+  CheckFormat(args.format);
   PathRequest request;
   request.points = ReadPoints(args.points);
   request.open = args.open;
@@ -60,19 +61,15 @@ void Run(const Args& args) {
     Complain(args.points + ": " + result.message);
     throw Exit{result.status == PathStatus::kInvalidRequest ? kExitBadInput : kExitFailed};
   }
-  Table t;
-  t.columns = {"rank", "error", "A0_x", "A0_y", "B0_x", "B0_y", "crank", "coupler", "rocker", "frame", "K_along", "K_left"};
-  std::string csv;
-  for (size_t i = 0; i < t.columns.size(); ++i) csv += t.columns[i] + ",";
-  csv += "grashof,cognate_of\n";
+  MixedTable t;
+  t.columns = {"rank", "error", "A0_x", "A0_y", "B0_x", "B0_y", "crank", "coupler", "rocker", "frame", "K_along", "K_left", "grashof", "cognate_of"};
   if (!args.dir.empty()) MakeOutputDirectory(args.dir);
   for (size_t i = 0; i < result.linkages.size(); ++i) {
     const PathLinkage& l = result.linkages[i];
-    for (double v : {static_cast<double>(i + 1), l.error, l.geometry.a0.x(), l.geometry.a0.y(), l.geometry.b0.x(), l.geometry.b0.y(), l.crank, l.coupler,
-                     l.rocker, l.frame, l.coupler_point.x(), l.coupler_point.y()})
-      csv += FormatNumber(v) + ",";
-    // a Roberts cognate of a better row: that row's rank
-    csv += std::string(ToString(l.grashof)) + "," + (l.cognate_of >= 0 ? std::to_string(l.cognate_of + 1) : "") + "\n";
+    // a Roberts cognate of a better row: that row's rank; else empty (null in JSON)
+    const MixedTable::Cell cognate_of = l.cognate_of >= 0 ? MixedTable::Cell(static_cast<double>(l.cognate_of + 1)) : MixedTable::Cell();
+    t.rows.push_back({static_cast<double>(i + 1), l.error, l.geometry.a0.x(), l.geometry.a0.y(), l.geometry.b0.x(), l.geometry.b0.y(), l.crank,
+                      l.coupler, l.rocker, l.frame, l.coupler_point.x(), l.coupler_point.y(), std::string(ToString(l.grashof)), cognate_of});
     if (!args.dir.empty()) {
       Mechanism m = l.mechanism;
       m.name = fmt::format("path-{}", i + 1);
@@ -85,7 +82,7 @@ void Run(const Args& args) {
       WriteOutput((std::filesystem::path(args.dir) / (m.name + ".yaml")).string(), WriteMechanismYaml(m, comment, {from, from + 360, 1}));
     }
   }
-  WriteOutput(args.out, csv);
+  WriteOutput(args.out, t.Text(args.format));
   std::cerr << fmt::format("koppel synth path: {} points, {} atlas curves; best RMS distance {:.3g}; {} repeats of a better design dropped\n",
                            request.points.size(), atlas.entries().size(), result.linkages.front().error, result.duplicates);
 }
@@ -116,6 +113,7 @@ void AddPathSubcommand(CLI::App& synth) {
   cmd->add_flag("--open", args->open, "The points are an open stretch, not a closed path");
   OutputDirectory(cmd->add_option("-o,--dir", args->dir, "Write each linkage as a mechanism file into this directory"));
   OutputFile(cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout"));
+  cmd->add_option("--format", args->format, "The table as csv (default) or json ({\"columns\", \"rows\"}; grashof a string, cognate_of null when none)");
   cmd->add_option("--threads", args->threads, "Threads (default: one per core)");
   cmd->callback([args] { Run(*args); });
 }

@@ -297,7 +297,8 @@ void BindModel(py::module_& m) {
                     "or length (P drive); angle outputs in degrees; transfer functions per radian of the input.")
       .def_static("load", [](const std::string& path, std::optional<py::dict> set) { return Model::Load(path, Overrides(set)); },
                   py::arg("path"), py::kw_only(), py::arg("set") = py::none(),
-                  "Reads a mechanism file; set={'e': 0.8} overrides parameters (numbers or formulas). Raises koppel.InputError.")
+                  "Reads a mechanism file, or the catalog's entry when path is no file but a catalog id ('crank-rocker');\n"
+                  "set={'e': 0.8} overrides parameters (numbers or formulas). Raises koppel.InputError.")
       .def_static("parse",
                   [](const std::string& text, const std::string& name, std::optional<py::dict> set) {
                     return Model::Parse(text, name, Overrides(set));

@@ -7,6 +7,7 @@ import io
 import math
 import os
 import subprocess
+import sys
 import tempfile
 import unittest
 
@@ -27,7 +28,27 @@ def closed_form_s(phi, e):
     return L1 * (math.sin(phi) + cos_psi / lam)
 
 
+class ImportTest(unittest.TestCase):
+    def test_import_without_numpy_says_so(self):
+        # issue 22 item 13: NumPy made unimportable (None in sys.modules), `import koppel` itself
+        # fails and names NumPy, instead of loading and failing at the first sweep
+        code = ("import sys\nsys.modules['numpy'] = None\ntry:\n    import koppel\nexcept ImportError as e:\n"
+                "    print('ImportError:', e)\nelse:\n    print('imported')\n")
+        out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+        self.assertIn("ImportError: koppel needs NumPy", out.stdout)
+        self.assertIn("python3-numpy", out.stdout)
+
+
 class MechanismTest(unittest.TestCase):
+    def test_a_catalog_id_loads_the_entry(self):
+        # issue 22 item 9: a catalog id where a file is expected names the catalog's entry
+        by_id = koppel.Mechanism.load("slider-crank-offset", set={"e": 0.8})
+        by_file = koppel.Mechanism.load(SLIDER_CRANK, set={"e": 0.8})
+        np.testing.assert_array_equal(by_id.sweep(0, 360, 30).values, by_file.sweep(0, 360, 30).values)
+        with self.assertRaises(koppel.InputError) as raised:
+            koppel.Mechanism.load("slider-crank-ofset")
+        self.assertIn("did you mean 'slider-crank-offset'?", str(raised.exception))
+
     def test_version_is_the_cli_version(self):
         out = subprocess.run([os.environ["KOPPEL_EXECUTABLE"], "--version"], capture_output=True, text=True, check=True)
         self.assertEqual(out.stdout.strip(), "koppel " + koppel.__version__)

@@ -91,7 +91,7 @@ SweepTable Model::Sweep(double from, double to, double step, int order, AtBranch
   const Mechanism& m = mechanism();
   const SweepOptions options = Options(*this, from, to, step, order, action);
   const SweepResult result = koppel::Sweep(m, options);
-  const SweepColumns layout = SweepLayout(m, order);
+  const SweepColumns layout = SweepLayout(m, order, length_unit());
   SweepTable t;
   t.status = FromSweep(result.status);
   t.message = result.message;

@@ -43,7 +43,7 @@ void Model::Impl::StartWalk(const Assembly& assembly, AtBranchPoint action) {
 
 PoseResult Model::Impl::Pose(int order) {
   const Mechanism& m = file.mechanism;
-  const SweepColumns layout = SweepLayout(m, order);
+  const SweepColumns layout = SweepLayout(m, order, file.loads.LengthUnit());
   PoseResult r;
   r.status = AnalysisStatus::kComplete;
   r.input = InputShown(m, walk->input());
@@ -108,6 +108,7 @@ const std::string& Model::name() const { return impl_->file.id; }
 const std::string& Model::title() const { return impl_->file.title; }
 const std::string& Model::path() const { return impl_->file.path; }
 const Mechanism& Model::mechanism() const { return impl_->file.mechanism; }
+std::string Model::length_unit() const { return impl_->file.loads.LengthUnit(); }
 std::string Model::input_name() const { return mechanism().drive.input_name; }
 bool Model::input_is_angle() const { return mechanism().InputIsAngle(); }
 double Model::sweep_from() const { return impl_->file.sweep.from; }

@@ -14,6 +14,15 @@ input. Bad input raises koppel.InputError (a ValueError) with .file, .line, .col
 .diagnostics; outcomes are values with a .status ("complete", "partial", "failed"; designs "ok",
 "no design", ...) and a .message.
 """
+# NumPy first: the tables are NumPy arrays, and without it the compiled module would load and
+# fail only at the first sweep, with pybind11's less telling message.
+try:
+    import numpy as _numpy  # noqa: F401
+except ImportError as _error:
+    raise ImportError(
+        "koppel needs NumPy, which this Python cannot import (" + str(_error) + "); install it: "
+        "apt-get install python3-numpy (Debian), or pip install numpy") from _error
+
 from ._koppel import (DeadCentres, InputError, Mechanism, Pose, Ranges, SweepTable,
                       __version__)
 from . import catalog, synth

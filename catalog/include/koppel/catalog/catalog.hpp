@@ -21,6 +21,8 @@ class Catalog {
  public:
   // Reads every *.yaml in `directory` (sorted by file name). Bad files throw one InputError
   // with the diagnostics of all of them; a file without a catalog section is an error too.
+  // An entry's file is named by its id (<id>.yaml): another name is an error too, so that an id
+  // names its file without reading the catalog (ResolveMechanismName).
   static Catalog Load(const std::string& directory);
 
   const std::vector<CatalogEntry>& entries() const { return entries_; }
@@ -44,11 +46,14 @@ struct FeatureQuery {
   std::optional<CardKind> kind;   // any when not set
   std::string klass;              // one of CatalogClasses(); empty: any
   std::string motion;             // MotionMatches query, e.g. "rotation -> translation"; empty: any
-  std::string text;               // case-insensitive substring of id or titles (de, en); empty: any
+  std::string text;               // TextMatches the id, titles (de, en), classes or motion; empty: any
   std::optional<Mechanism> like;  // entries whose kinematic chain is isomorphic to this one's
 };
 
 bool Matches(const CatalogEntry& entry, const FeatureQuery& query);
+// True when `needle` occurs in `haystack` with case, hyphens, spaces and other punctuation
+// ignored: "straight line", "Straight-Line" and "straightline" all find "straight-line".
+bool TextMatches(const std::string& haystack, const std::string& needle);
 std::vector<const CatalogEntry*> FindEntries(const Catalog& catalog, const FeatureQuery& query);
 
 // True when the kinematic chains are isomorphic: a one-to-one map of the links that takes the
@@ -60,5 +65,26 @@ bool SameKinematicChain(const Mechanism& a, const Mechanism& b);
 // entries installed with it (<prefix>/share/koppel/catalog, found relative to the library);
 // else the source tree's catalog/entries the build was made from.
 std::string DefaultCatalogDirectory();
+
+// A mechanism named where a file is expected (every command, a fit problem's `mechanism`, the
+// API; ReadMechanismFile applies it): `name` itself when it is an existing file or does not look
+// like an id (letters, digits, '-', '_'); else the catalog entry <directory>/<name>.yaml when it
+// exists (`directory` empty: DefaultCatalogDirectory()); else `name`, for the reader to report.
+std::string ResolveMechanismName(const std::string& name, const std::string& directory = "");
+// The file of the catalog entry `id` (<directory>/<id>.yaml), empty when `id` is no id or there
+// is no such entry. ResolveMechanismName's second half, for a name relative to another file.
+std::string CatalogEntryFile(const std::string& id, const std::string& directory = "");
+
+// The ids of the entries in `directory` (the names of its *.yaml files), sorted; empty when the
+// directory cannot be read. Cheaper than Catalog::Load: no file is read.
+std::vector<std::string> CatalogIds(const std::string& directory);
+
+// For "did you mean": the id of `ids` nearest to `id` (fewer than three edits, case ignored),
+// empty when none is near.
+std::string NearestCatalogId(const std::string& id, const std::vector<std::string>& ids);
+
+// "no catalog entry 'ID' (did you mean 'NEAR'?)", or "no catalog entry 'ID' in DIRECTORY
+// (`koppel catalog list` lists them)" when no id is near.
+std::string UnknownCatalogId(const std::string& id, const std::vector<std::string>& ids, const std::string& directory);
 
 }  // namespace koppel

@@ -61,6 +61,7 @@ struct SpringDamper {
 struct Loads {
   double metres_per_unit = 1.0;                       // the mechanism's length unit [m]
   bool length_unit_given = false;                     // the file says its unit (`units: {length: ...}`)
+  std::string length_unit_name;                       // the unit's name as the file gives it ("mm"); empty: a number or none
   Eigen::Vector2d gravity = Eigen::Vector2d::Zero();   // [m/s^2], global frame
   std::vector<LinkMass> masses;                       // at most one per link
   std::vector<PointForce> forces;
@@ -69,6 +70,9 @@ struct Loads {
   ParameterSet parameters;  // the constants the magnitude formulas may name (the file's parameters)
 
   bool HasMass() const;  // some link has a mass or a moment of inertia
+  // The label of the file's length unit in outputs: its name ("mm"), "<metres> m" for a unit
+  // given as a number of metres, "length" when the file names none (lengths are the file's own).
+  std::string LengthUnit() const;
 };
 
 // The names a magnitude formula may use besides the parameters, in this order: the drive input

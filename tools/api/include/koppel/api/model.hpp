@@ -56,7 +56,7 @@ struct SweepTable {
   std::string message;                              // why samples are missing
   std::vector<std::string> notes;
   int order = 0;
-  std::vector<std::string> columns, units;  // units: "deg", "length", "rad/rad^2", "1", ...
+  std::vector<std::string> columns, units;  // units: "deg", length_unit() ("mm"), "rad/rad^2", "1", ...
   int rows = 0;
   std::vector<double> values;               // rows x columns.size(), row after row
   std::vector<int> valid_order;             // per row: orders above this are NaN there
@@ -143,7 +143,8 @@ enum class AtBranchPoint { kContinue, kStop, kSwitch };
 
 class Model {
  public:
-  // Reads a mechanism file; `set` overrides parameters as --set does. Throws InputError.
+  // Reads a mechanism file, or the catalog entry when `path` is no file but a catalog id
+  // ("crank-rocker", ResolveMechanismName); `set` overrides parameters as --set does. Throws InputError.
   static Model Load(const std::string& path, const ParameterValues& set = {});
   // The same from the text of a mechanism file; `name` stands for the file in messages.
   static Model Parse(const std::string& yaml, const std::string& name = "<string>", const ParameterValues& set = {});
@@ -161,6 +162,9 @@ class Model {
   const std::string& title() const;
   const std::string& path() const;    // the file read, or the name given to Parse
   const Mechanism& mechanism() const; // the model, radians inside (koppel/core/mechanism.hpp)
+  // The label of the file's length unit, as tables give it: "mm" for `units: {length: mm}`,
+  // "length" when the file names none (Loads::LengthUnit).
+  std::string length_unit() const;
   std::string input_name() const;     // "phi"
   bool input_is_angle() const;        // R drive (degrees here) or P drive (length)
   std::vector<std::string> output_names() const;

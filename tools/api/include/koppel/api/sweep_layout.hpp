@@ -12,12 +12,13 @@ namespace koppel {
 
 struct SweepColumns {
   std::vector<std::string> names;
-  std::vector<std::string> units;   // "deg" or "length" for values; "rad/rad^2", "length/rad", ...
+  std::vector<std::string> units;   // "deg" or the length unit for values; "rad/rad^2", "mm/rad", ...
   std::vector<int> order_of_column; // derivative order; -1 for the input and the flag
   std::vector<bool> angle_value;    // the value of an angle: shown in degrees
 };
 
 // Column c >= 1 (up to the flag) holds number c - 1 of PositionSolver::OutputDerivatives.
-SweepColumns SweepLayout(const Mechanism& mechanism, int order);
+// `length_unit` labels lengths: the file's unit (Loads::LengthUnit(), "mm"), "length" when unnamed.
+SweepColumns SweepLayout(const Mechanism& mechanism, int order, const std::string& length_unit = "length");
 
 }  // namespace koppel

@@ -23,7 +23,8 @@ struct AnalyzeArgs {
 
 // The table of a sweep (koppel/api/sweep_layout.hpp): the input, every output's derivatives
 // 0..order, and the singular flag. A transfer function that cannot be computed at a row (above
-// the row's valid order) is empty in CSV and null in JSON, never a number.
+// the row's valid order, or not defined there: an output that is not differentiable) is empty in
+// CSV and null in JSON, never a number.
 std::string ToCsv(const Mechanism& m, const SweepColumns& t, const SweepResult& r) {
   std::string out;
   out.reserve(r.inputs.size() * (r.outputs.cols() + 2) * 16);  // about 16 characters a number
@@ -34,7 +35,8 @@ std::string ToCsv(const Mechanism& m, const SweepColumns& t, const SweepResult& 
     for (int c = 0; c < r.outputs.cols(); ++c) {
       const double v = r.outputs(i, c);
       out += ',';
-      if (t.order_of_column[c + 1] <= r.valid_order[i]) AppendNumber(out, t.angle_value[c + 1] ? RadToDeg(v) : v);
+      if (t.order_of_column[c + 1] <= r.valid_order[i] && r.Defined(static_cast<int>(i), c))
+        AppendNumber(out, t.angle_value[c + 1] ? RadToDeg(v) : v);
     }
     out += r.singular[i] ? ",1\n" : ",0\n";
   }
@@ -49,7 +51,7 @@ nlohmann::json ToJson(const Mechanism& m, const SweepColumns& t, const SweepResu
     for (int c = 0; c < r.outputs.cols(); ++c) {
       const double v = t.angle_value[c + 1] ? RadToDeg(r.outputs(i, c)) : r.outputs(i, c);
       FormatNumber(v);  // the same refusal of non-finite numbers as CSV
-      if (t.order_of_column[c + 1] <= r.valid_order[i]) {
+      if (t.order_of_column[c + 1] <= r.valid_order[i] && r.Defined(static_cast<int>(i), c)) {
         row.push_back(v);
       } else {
         row.push_back(nullptr);
@@ -96,14 +98,19 @@ void RunAnalyze(const AnalyzeArgs& args) {
     j["input"] = {{"name", m.drive.input_name}, {"unit", angle_input ? "deg" : file.loads.LengthUnit()},
                   {"from", from}, {"to", to}, {"step", step}};
     j["order"] = options.order;
-    j["complete"] = result.complete();
+    j["complete"] = result.complete() && result.undefined.empty();
     j["status"] = ToString(result.status);
     j.update(SweepEventsJson(m, EventsOf(result)));
-    if (!result.complete()) j["message"] = result.message;
+    if (!result.message.empty()) j["message"] = result.message;
     WriteOutput(args.out, JsonText(j));
   }
   ReportSweep(args.file, m, EventsOf(result));
   if (!result.complete()) throw Exit{kExitFailed};
+  // every sample there, but an output has no number in some cells (not differentiable there)
+  if (!result.undefined.empty()) {
+    Complain(args.file + ": " + result.message);
+    throw Exit{kExitFailed};
+  }
 }
 
 }  // namespace

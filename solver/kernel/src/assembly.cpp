@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <random>
 
 namespace koppel {
 namespace {
@@ -37,6 +38,58 @@ std::string JointList(const Mechanism& m, const std::vector<int>& joints) {
   return names;
 }
 
+// A P drive's search: +-kSlideSpan L around the hint's input in steps of L / kSlideProbesPerL.
+constexpr double kSlideSpan = 4.0;
+constexpr int kSlideProbesPerL = 8;
+// The seed of the search's random guesses: fixed, so that every run starts where the last did.
+constexpr unsigned kSearchSeed = 1;
+
+// Probe inputs of the search, nearest the hint's input first: hint, hint + step, hint - step, ...
+std::vector<double> SearchProbes(const Mechanism& m, double scale) {
+  const bool angle = m.InputIsAngle();
+  const double step = angle ? 2 * kPi / kAssemblyProbesPerTurn : scale / kSlideProbesPerL;
+  const int each_way = angle ? kAssemblyProbesPerTurn / 2 : static_cast<int>(kSlideSpan * kSlideProbesPerL);
+  std::vector<double> probes{m.hint.input};
+  for (int k = 1; k <= each_way; ++k) {
+    probes.push_back(m.hint.input + k * step);
+    if (!angle || k < each_way) probes.push_back(m.hint.input - k * step);  // +-180 deg is one probe
+  }
+  return probes;
+}
+
+// The search of AssembleRegular when the hint does not assemble: true with a regular pose in q.
+bool SearchPeriod(const Mechanism& m, PositionSolver& solver, double* input, Eigen::VectorXd& q, bool* from_hint) {
+  const double scale = solver.system().length_scale();
+  const std::vector<double> probes = SearchProbes(m, scale);
+  const Eigen::VectorXd hint = solver.HintGuess();
+  for (double probe : probes) {
+    Eigen::VectorXd x = hint;
+    if (solver.AssembleFrom(probe, x).ok() && Regular(solver, x)) {
+      *input = probe;
+      q = x;
+      *from_hint = true;
+      return true;
+    }
+  }
+  std::mt19937 random(kSearchSeed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const int n = solver.NumCoordinates();
+  for (double probe : probes) {
+    for (int s = 0; s < kAssemblyRandomStarts; ++s) {
+      // about the hint's pose: links within 2 L of where the hint puts them, at any angle
+      Eigen::VectorXd x(n);
+      for (int i = 0; i < n; ++i) x(i) = i % 3 == 2 ? kPi * unit(random) : hint(i) + 2.0 * scale * unit(random);
+      if (solver.AssembleFrom(probe, x).ok() && Regular(solver, x)) {
+        *input = probe;
+        q = x;
+        *from_hint = false;
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 Assembly AssembleRegular(const Mechanism& m, PositionSolver& solver, const ContinuationOptions& options) {
@@ -46,7 +99,21 @@ Assembly AssembleRegular(const Mechanism& m, PositionSolver& solver, const Conti
   const SolveReport report = solver.Assemble(a.q);
   if (report.ok() && Regular(solver, a.q)) return a;
   if (!report.ok() && report.status != SolveStatus::kSingular) {
-    a.error = "cannot assemble at " + FormatInput(m, a.input) + ": " + report.message;
+    double input = a.input;
+    bool from_hint = true;
+    if (SearchPeriod(m, solver, &input, a.q, &from_hint)) {
+      a.notes.push_back("the assembly hint does not assemble at " + FormatInput(m, a.input) + " (" + report.message +
+                        "); searching " + (m.InputIsAngle() ? "a turn of the input" : "the input around it") +
+                        ", koppel assembled at " + FormatInput(m, input) + " from " +
+                        (from_hint ? "the hint's pose" : "a seeded random guess") +
+                        " and follows that branch (give the assembly hint at a drivable input to choose)");
+      a.input = input;
+      a.start = AssemblyStart::kSearched;
+      return a;
+    }
+    a.error = "cannot assemble at " + FormatInput(m, a.input) + ": " + report.message + "; nor at any input of " +
+              (m.InputIsAngle() ? "a turn (every 5 deg)" : "+-4 L around it") +
+              ", from the hint's pose or seeded random guesses";
     return a;
   }
   const double shift = options.branch_window * (m.InputIsAngle() ? 1.0 : solver.system().length_scale());
@@ -59,6 +126,7 @@ Assembly AssembleRegular(const Mechanism& m, PositionSolver& solver, const Conti
                       " and follows that branch (give the assembly hint at another input to choose)");
     a.q = q;
     a.input += side * shift;
+    a.start = AssemblyStart::kBesideHint;
     return a;
   }
   a.error = "cannot assemble at " + FormatInput(m, a.input) + ": the pose there is singular and no regular pose was found beside it";

@@ -31,6 +31,16 @@ constexpr double kRootPivotRatio = 1e-12;
 constexpr double kBranchPointLocation = 1e-10;
 // Steps a walk between two nearby regular poses may take (it never passes a singular position).
 constexpr long kRegularWalkSteps = 100000;
+// A target within this of a located limit point (relative to max(1, |input|), times L for a P
+// drive) is the point: a few ulps, below the location's roundoff (about 1e-15).
+constexpr double kAtLimitPoint = 1e-14;
+
+// The stored size of a pose difference in units of L: theta times L, (x, y) as they are.
+Eigen::VectorXd Unscaled(const Eigen::VectorXd& d, double length) {
+  Eigen::VectorXd out = d;
+  for (int i = 2; i < out.size(); i += 3) out(i) *= length;
+  return out;
+}
 
 std::string JointNames(const Mechanism& m, const std::vector<int>& joints) {
   std::string names;
@@ -171,6 +181,7 @@ WalkReport Continuation::Ended(WalkStatus status, std::string message) const {
 }
 
 void Continuation::SetRegularPose(double input, const Eigen::VectorXd& q) {
+  at_limit_ = false;
   input_ = input;
   q_ = q;
   from_window_ = false;
@@ -197,6 +208,7 @@ SolveReport Continuation::Start(double input, const Eigen::VectorXd& q) {
   SolveReport report = solver_.Correct(input, q_trial_);
   if (report.ok()) {
     started_ = true;
+    at_limit_ = false;
     input_ = input;
     q_ = q_trial_;
     factorized_here_ = true;
@@ -254,6 +266,7 @@ void Continuation::Accept(double next) {
   previous_q_ = q_;
   previous_determinant_ = determinant_;
   has_previous_ = true;
+  at_limit_ = false;
   input_ = next;
   q_ = q_trial_;
   factorized_here_ = true;
@@ -447,6 +460,7 @@ void Continuation::EvaluateInWindow(double input) {
   series_ = window_series_;
   series_order_ = kWindowOrder;
   input_ = input;
+  at_limit_ = false;
   q_ = window_series_.col(0);
   from_window_ = true;
   factorized_here_ = false;
@@ -455,9 +469,71 @@ void Continuation::EvaluateInWindow(double input) {
   valid_order_ = rcond_ < kSingularRowRcond ? segment.ValidOrder() : kMaxOrder;
 }
 
+std::string Continuation::LimitMessage(const SingularStructure& s, double input) const {
+  const std::string what = s.kind == SingularKind::kLimitPoint
+                               ? "a limit point of the drive (a singular position: dead centre with respect to the input; joints "
+                               : "a limit point of the drive where loops also fold flat (a singular position no branch passes; joints ";
+  return what + JointNames(solver_.system().mechanism(), s.joints) + ") at " + Where(input) + ": the input cannot pass it on this branch";
+}
+
+void Continuation::SetLimitPose(double input, const Eigen::VectorXd& q) {
+  retreat_input_ = input_;
+  retreat_q_ = q_;
+  at_limit_ = true;
+  input_ = input;
+  q_ = q;
+  from_window_ = false;
+  factorized_here_ = false;
+  has_previous_ = false;
+  rcond_ = ReciprocalCondition(solver_.system(), q_);
+  // the pose is known, its transfer functions are infinite: none is computable here
+  valid_order_ = 0;
+  series_.setZero(q_.size(), kMaxOrder + 1);
+  series_.col(0) = q_;
+  series_order_ = kMaxOrder;
+}
+
+bool Continuation::FinishAtLimitPoint(double target, double direction, WalkReport* finished) {
+  const ConstraintSystem& system = solver_.system();
+  const std::optional<LimitPoint> limit = LocateLimitPoint(system, input_, q_);
+  if (!limit) return false;
+  const double tolerance = kAtLimitPoint * std::max(input_scale_, std::abs(limit->input));
+  // the point must lie ahead of the walk and on its branch (not a fold of another one)
+  if (direction * (limit->input - input_) < -tolerance || ScaledPoseNorm(limit->q, q_) > options_.max_correction) return false;
+  const double beyond = direction * (target - limit->input);
+  if (beyond > tolerance) {
+    const SingularStructure s = AnalyseSingularity(system, limit->q);
+    singular_points_.push_back({SingularKind::kLimitPoint, limit->input, s.rcond, s.joints, options_.at_branch_point});
+    SetLimitPose(limit->input, limit->q);
+    *finished = Ended(WalkStatus::kLimitPoint, LimitMessage(s, limit->input));
+    return true;
+  }
+  if (beyond >= -tolerance) {  // the target is the point, within roundoff
+    SetLimitPose(target, limit->q);
+    *finished = Reached();
+    return true;
+  }
+  // between the walk and the point: from the point along its quadratic branch
+  // q(s) = q* + s null, input(s) = input* + curvature s^2, on the side the walk came from
+  const double delta = target - limit->input;
+  if (limit->curvature == 0.0 || (delta > 0.0) != (limit->curvature > 0.0)) return false;
+  const Eigen::VectorXd null = Unscaled(limit->null, length_scale_);
+  const double side = Unscaled(q_ - limit->q, length_scale_).dot(null) >= 0.0 ? 1.0 : -1.0;
+  Eigen::VectorXd q = limit->q + side * std::sqrt(delta / limit->curvature) * limit->null;
+  if (!solver_.Correct(target, q).ok()) return false;
+  if (Unscaled(q - limit->q, length_scale_).dot(null) * side <= 0.0) return false;  // landed on the other half
+  SetRegularPose(target, q);
+  *finished = Reached();
+  return true;
+}
+
 WalkReport Continuation::AdvanceTo(double target, double max_step) {
   if (!started_) return Ended(WalkStatus::kFailed, "the walk was not started");
   if (!std::isfinite(target) || !(max_step > 0.0)) return Ended(WalkStatus::kFailed, "invalid target or step");
+  if (at_limit_) {
+    if (target == input_) return Reached();
+    SetRegularPose(retreat_input_, retreat_q_);  // back onto the branch, then on as usual
+  }
   const double cap = std::min(max_step, options_.max_step * input_scale_);
   if (std::abs(target - input_) / cap > static_cast<double>(options_.max_steps)) {
     return Ended(WalkStatus::kTooFar, Where(target) + " lies more than " + std::to_string(options_.max_steps) +
@@ -511,6 +587,9 @@ WalkReport Continuation::AdvanceTo(double target, double max_step) {
           examined = false;
           continue;
         }
+      } else if (s.rcond < kNearSingularRcond && s.kind == SingularKind::kLimitPoint &&
+                 FinishAtLimitPoint(target, direction, &finished)) {
+        return finished;
       }
     }
     if (h < options_.limit_resolution * input_scale_) {
@@ -519,12 +598,9 @@ WalkReport Continuation::AdvanceTo(double target, double max_step) {
         // A singular position no step passes ends the branch for the drive: a limit point, or a
         // flat, self-stressed pose whose branches all turn back there (a double fold, such as the
         // Peaucellier cell stretched out) — for the drive that too is a limit.
+        if (s.kind == SingularKind::kLimitPoint && FinishAtLimitPoint(target, direction, &finished)) return finished;
         singular_points_.push_back({SingularKind::kLimitPoint, input_, s.rcond, s.joints, options_.at_branch_point});
-        const std::string what = s.kind == SingularKind::kLimitPoint
-                                     ? "a limit point of the drive (a singular position: dead centre with respect to the input; joints "
-                                     : "a limit point of the drive where loops also fold flat (a singular position no branch passes; joints ";
-        return Ended(WalkStatus::kLimitPoint, what + JointNames(solver_.system().mechanism(), s.joints) + ") at " + Where(input_) +
-                                                  ": the input cannot pass it on this branch");
+        return Ended(WalkStatus::kLimitPoint, LimitMessage(s, input_));
       }
       return Ended(WalkStatus::kFailed, "no pose could be found beyond " + Where(input_) +
                                             " (Newton did not converge, and the pose there is not singular)");

@@ -1,12 +1,24 @@
 #include "koppel/solver/singular.hpp"
 
+#include <Eigen/LU>
 #include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace koppel {
 namespace {
+
+// The augmented Newton of LocateLimitPoint: at most this many iterations (it converges
+// quadratically in about five from a stalled walk); it stops when a step changes no unknown by
+// more than kLimitStep (in units of L, rad and the scaled null vector's unit), or when two
+// steps in a row no longer shrink (roundoff reached).
+constexpr int kLimitIterations = 30;
+constexpr double kLimitStep = 1e-15;
+// A located limit point must close the joints to this (times L) and its null vector to this:
+// a few hundred ulps, as NewtonOptions::tolerance.
+constexpr double kLimitResidual = 1e-12;
 
 // A joint's share of a left singular vector below this fraction of the largest counts as zero:
 // the vector is exact to about 1e-10 at a located singular point.
@@ -147,6 +159,88 @@ std::optional<Eigen::VectorXd> OtherBranchTangent(const ConstraintSystem& system
   const double other = std::abs(alpha1) > std::abs(alpha2) ? alpha1 : alpha2;
   if (other == 0.0) return std::nullopt;
   return Eigen::VectorXd(tangent + other * w);
+}
+
+std::optional<LimitPoint> LocateLimitPoint(const ConstraintSystem& system, double input, const Eigen::VectorXd& q0) {
+  const int n = system.NumCoordinates();
+  if (n == 0 || system.NumEquations() != n) return std::nullopt;
+  const double length = system.length_scale();
+  const double input_scale = system.mechanism().InputIsAngle() ? 1.0 : length;
+  const Eigen::VectorXd scale = ColumnScale(system);
+  Eigen::VectorXd q = q0;
+  double lambda = input;
+  // the null vector's first estimate: the right singular vector of sigma_min of J S
+  Eigen::VectorXd u;
+  {
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(ScaledJacobian(system, q, true), Eigen::ComputeFullV);
+    u = svd.matrixV().col(n - 1);
+  }
+  const Eigen::VectorXd c = u;
+  Eigen::MatrixXd jacobian(n, n), a(2 * n + 1, 2 * n + 1);
+  Eigen::VectorXd g(2 * n + 1), residual(n), e = Eigen::VectorXd::Zero(n);
+  double previous_step = std::numeric_limits<double>::infinity();
+  int growing = 0, it = 0;
+  bool converged = false;
+  for (; it < kLimitIterations; ++it) {
+    system.Jacobian(q.data(), jacobian);
+    const Eigen::MatrixXd scaled = jacobian * scale.asDiagonal();
+    system.Residuals(q.data(), lambda, residual.data());
+    if (!residual.allFinite()) return std::nullopt;
+    const Eigen::VectorXd v = scale.cwiseProduct(u);
+    g.head(n) = residual;
+    g.segment(n, n) = scaled * u;
+    g(2 * n) = c.dot(u) - 1.0;
+    a.setZero();
+    a.topLeftCorner(n, n) = scaled;
+    a(system.DriveRow(), n) = system.InputColumn();
+    // d(J S u)/dx_i = F''[v, S e_i] = (H(v + S e_i) - H(v - S e_i)) / 2, H the half second
+    // derivative: exact, both directions of the size of one unit of L
+    for (int i = 0; i < n; ++i) {
+      e(i) = scale(i);
+      a.block(n, i, n, 1) = 0.5 * (HalfSecondDerivative(system, q, lambda, v + e) - HalfSecondDerivative(system, q, lambda, v - e));
+      e(i) = 0.0;
+    }
+    a.block(n, n + 1, n, n) = scaled;
+    a.block(2 * n, n + 1, 1, n) = c.transpose();
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(a);
+    const Eigen::VectorXd d = lu.solve(-g);
+    if (!d.allFinite()) return std::nullopt;
+    const double step = std::max({(d.head(n).cwiseAbs().maxCoeff()) / length, std::abs(d(n)) / input_scale,
+                                  d.tail(n).cwiseAbs().maxCoeff()});
+    q += scale.cwiseProduct(d.head(n));
+    lambda += d(n);
+    u += d.tail(n);
+    if (step <= kLimitStep * std::max(1.0, std::abs(lambda) / input_scale)) {
+      converged = true;
+      ++it;
+      break;
+    }
+    growing = step >= previous_step ? growing + 1 : 0;
+    if (growing >= 2) {
+      converged = step < 1e-10;  // stalled at roundoff, not diverging
+      ++it;
+      break;
+    }
+    previous_step = step;
+  }
+  if (!converged) return std::nullopt;
+  system.Jacobian(q.data(), jacobian);
+  system.Residuals(q.data(), lambda, residual.data());
+  const Eigen::MatrixXd scaled = jacobian * scale.asDiagonal();
+  if (!(residual.cwiseAbs().maxCoeff() <= kLimitResidual * length) || !((scaled * u).cwiseAbs().maxCoeff() <= kLimitResidual * u.norm()))
+    return std::nullopt;
+  LimitPoint out;
+  out.input = lambda;
+  out.q = q;
+  out.null = scale.cwiseProduct(u / u.norm());
+  out.iterations = it;
+  // curvature: differentiate F(q(s), input(s)) = 0 twice at s = 0 (q' = null, input' = 0) and
+  // project on the left null vector psi: psi.F''[null, null] + psi.F_input input'' = 0
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled, Eigen::ComputeFullU);
+  const Eigen::VectorXd psi = svd.matrixU().col(n - 1);
+  const double along = psi(system.DriveRow()) * system.InputColumn();
+  if (along != 0.0) out.curvature = -psi.dot(HalfSecondDerivative(system, q, lambda, out.null)) / along;
+  return out;
 }
 
 }  // namespace koppel

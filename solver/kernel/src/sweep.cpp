@@ -23,12 +23,51 @@ std::string FormatInterval(const Mechanism& m, double a, double b) {
   return FormatInput(m, a) + " .. " + buffer + (m.InputIsAngle() ? " deg" : "");
 }
 
+// Two singular points of one kind closer than this (rad, or times L) are one point, met by two
+// walks: far above their location's roundoff, far below two distinct singular positions.
+constexpr double kSameSingularPoint = 1e-9;
+
 // The end of one outward walk.
 struct WalkEnd {
   bool complete = true;
+  WalkStatus status = WalkStatus::kReached;
   double input = 0.0;  // where it stopped (when not complete)
   std::string message;
 };
+
+// The outputs with undefined cells, each with the inputs (up to four) and the orders concerned.
+std::string UndefinedMessage(const Mechanism& m, const SweepResult& r, int order) {
+  std::string text;
+  const int per_component = order + 1;
+  const int outputs = static_cast<int>(m.outputs.size());
+  for (int o = 0; o < outputs; ++o) {
+    const int column0 = OutputColumn(m, o, 0, order);
+    const int end = o + 1 < outputs ? OutputColumn(m, o + 1, 0, order) : static_cast<int>(r.outputs.cols());
+    std::vector<int> rows;
+    int lowest = order + 1, highest = -1;
+    for (const SweepResult::Cell& c : r.undefined) {
+      if (c.column < column0 || c.column >= end) continue;
+      if (rows.empty() || rows.back() != c.row) rows.push_back(c.row);
+      lowest = std::min(lowest, c.column % per_component);
+      highest = std::max(highest, c.column % per_component);
+    }
+    if (rows.empty()) continue;
+    std::string inputs;
+    for (size_t k = 0; k < rows.size() && k < 4; ++k) {
+      char buffer[48];
+      std::snprintf(buffer, sizeof buffer, "%.10g", m.InputIsAngle() ? RadToDeg(r.inputs[rows[k]]) : r.inputs[rows[k]]);
+      inputs += (k ? ", " : "") + std::string(buffer);
+    }
+    if (rows.size() > 4) inputs += ", ... (" + std::to_string(rows.size()) + " rows)";
+    const std::string orders = lowest == 0 ? (highest == 0 ? "its value" : "its value and derivatives up to order " + std::to_string(highest))
+                                           : "its derivatives of order " + std::to_string(lowest) +
+                                                 (highest > lowest ? " to " + std::to_string(highest) : "");
+    text += (text.empty() ? "" : "; ") + std::string("output '") + m.outputs[o].name + "' is not differentiable at " +
+            m.drive.input_name + " = " + inputs + (m.InputIsAngle() ? " deg" : "") + ": " + orders +
+            " there are not finite numbers (e.g. a distance through zero) and are left empty";
+  }
+  return text;
+}
 
 }  // namespace
 
@@ -105,35 +144,49 @@ SweepResult Sweep(const Mechanism& m, const SweepOptions& options) {
     return result;
   }
 
+  const double input_scale = m.InputIsAngle() ? 1.0 : solver.system().length_scale();
   const int width = solver.OutputWidth(options.order);
   Table outputs(samples, width), poses(samples, n);
   std::vector<std::uint8_t> done(samples, 0), singular(samples, 0);
   std::vector<std::int8_t> valid(samples, static_cast<std::int8_t>(options.order));
-  // Samples at or above the assembly input are reached walking up, the others walking down; each
-  // walk visits its samples outward from the assembly.
-  std::vector<int> up, down;
-  up.reserve(samples);
-  down.reserve(samples);
-  for (int i = 0; i < samples; ++i) (options.from + i * step >= assembly.input ? up : down).push_back(i);
-  auto by_input = [&](bool ascending) {
-    return [&, ascending](int a, int b) { return ascending == (step > 0) ? a < b : a > b; };
-  };
-  std::sort(up.begin(), up.end(), by_input(true));
-  std::sort(down.begin(), down.end(), by_input(false));
-
+  // Each sample is walked to at its target: its own input, or for an R drive the same angle a
+  // whole number of turns away (the drive row is periodic: the pose at input + 2 pi k is the pose
+  // at input) when the branch reaches it only there. Targets at or above the assembly input are
+  // reached walking up, the others walking down; each walk visits its samples outward.
+  std::vector<SweepResult::Cell> undefined_cells;  // by sample index, then by row
+  std::vector<double> target(samples);
+  for (int i = 0; i < samples; ++i) target[i] = options.from + i * step;
   const int derivative_order = std::max(options.order, 2);
+  // the singular points a walk met, each once (two walks may meet one)
+  auto absorb = [&](const Continuation& path, bool only_in_range) {
+    for (const SingularPoint& p : path.singular_points()) {
+      // an exploring walk's point counts where it bounds part of the range (a turn away, maybe)
+      if (only_in_range && std::ceil((std::min(options.from, options.to) - p.input) / (2 * kPi)) * 2 * kPi + p.input >
+                               std::max(options.from, options.to))
+        continue;
+      const bool known = std::any_of(result.singular_points.begin(), result.singular_points.end(), [&](const SingularPoint& k) {
+        return k.kind == p.kind && std::abs(k.input - p.input) <= kSameSingularPoint * input_scale;
+      });
+      if (!known) result.singular_points.push_back(p);
+    }
+  };
   auto walk = [&](const std::vector<int>& indices) {
     WalkEnd end;
     Continuation path(solver, options.continuation);
     path.Start(assembly.input, assembly.q);
     for (int i : indices) {
-      const WalkReport report = path.AdvanceTo(options.from + i * step, std::numeric_limits<double>::infinity());
+      const WalkReport report = path.AdvanceTo(target[i], std::numeric_limits<double>::infinity());
       if (!report.ok()) {
-        end = {false, report.input, report.message};
+        end = {false, report.status, report.input, report.message};
         break;
       }
       const Eigen::MatrixXd& coefficients = path.Series(derivative_order);
       solver.OutputDerivatives(coefficients, options.order, outputs.row(i).data());
+      for (int column = 0; column < width; ++column) {
+        if (std::isfinite(outputs(i, column))) continue;
+        outputs(i, column) = 0.0;  // never a non-finite number in a result
+        undefined_cells.push_back({i, column});
+      }
       valid[i] = static_cast<std::int8_t>(std::min(path.ValidOrder(), options.order));
       if (valid[i] < options.order) {
         // transfer functions the pose cannot give are zeroed; valid_order tells the reader
@@ -145,23 +198,91 @@ SweepResult Sweep(const Mechanism& m, const SweepOptions& options) {
       poses.row(i) = path.q().transpose();
       done[i] = 1;
     }
-    result.singular_points.insert(result.singular_points.end(), path.singular_points().begin(), path.singular_points().end());
+    absorb(path, false);
     return end;
   };
-  const WalkEnd up_end = walk(up);
-  const WalkEnd down_end = walk(down);
+  // walks up and down over `indices` (by target, outward from the assembly)
+  auto walk_both = [&](const std::vector<int>& indices, WalkEnd* up_end, WalkEnd* down_end) {
+    std::vector<int> up, down;
+    up.reserve(indices.size());
+    down.reserve(indices.size());
+    for (int i : indices) (target[i] >= assembly.input ? up : down).push_back(i);
+    std::sort(up.begin(), up.end(), [&](int a, int b) { return target[a] < target[b]; });
+    std::sort(down.begin(), down.end(), [&](int a, int b) { return target[a] > target[b]; });
+    *up_end = walk(up);
+    *down_end = walk(down);
+  };
+  std::vector<int> all(samples);
+  for (int i = 0; i < samples; ++i) all[i] = i;
+  WalkEnd up_end, down_end;
+  walk_both(all, &up_end, &down_end);
+
+  // the part of the branch the walks cover, [reached_low, reached_high] in the branch's inputs
+  const double low = std::min(options.from, options.to), high = std::max(options.from, options.to);
+  double reached_low = down_end.complete ? std::min(low, assembly.input) : down_end.input;
+  double reached_high = up_end.complete ? std::max(high, assembly.input) : up_end.input;
+  bool periodic = false;  // the covered part repeats every turn (samples were mapped into it)
+  const double turn = 2 * kPi;
+  // Only a branch that ends at limit points (the drive swings) or covers a turn is one closed
+  // interval of the angle: where a walk stopped at a branch point or failed, what lies beyond is
+  // another sheet (a kite's second turn), not this one a turn away.
+  auto ends_in_limit = [](const WalkEnd& e) { return e.complete || e.status == WalkStatus::kLimitPoint; };
+  if (m.InputIsAngle() && ends_in_limit(up_end) && ends_in_limit(down_end) && std::count(done.begin(), done.end(), 1) < samples) {
+    // Samples beyond the branch's ends as numbered from the assembly may lie on it a turn away:
+    // follow the branch to its ends (or over a whole turn), then map each such sample into it.
+    bool closed = true;
+    auto explore = [&](double to) {
+      Continuation path(solver, options.continuation);
+      path.Start(assembly.input, assembly.q);
+      const WalkReport report = path.AdvanceTo(to, std::numeric_limits<double>::infinity());
+      if (!report.ok() && report.status != WalkStatus::kLimitPoint) closed = false;
+      if (closed) absorb(path, true);
+      return report.ok() ? to : report.input;
+    };
+    const double high_end = up_end.complete ? explore(std::max(reached_high, reached_low + turn)) : reached_high;
+    const double low_end = down_end.complete && closed ? explore(std::min(reached_low, high_end - turn)) : reached_low;
+    if (closed) {
+      reached_low = low_end;
+      reached_high = high_end;
+      periodic = true;
+    }
+    std::vector<int> mapped;
+    for (int i = 0; i < samples && periodic; ++i) {
+      if (done[i]) continue;
+      const double x = options.from + i * step;
+      const double k_low = std::ceil((reached_low - x) / turn), k_high = std::floor((reached_high - x) / turn);
+      if (k_low > k_high) continue;
+      const double k = k_low > 0 ? k_low : (k_high < 0 ? k_high : 0.0);  // the fewest turns away
+      target[i] = x + k * turn;
+      mapped.push_back(i);
+    }
+    WalkEnd mapped_up, mapped_down;
+    if (!mapped.empty()) walk_both(mapped, &mapped_up, &mapped_down);
+  }
   std::sort(result.singular_points.begin(), result.singular_points.end(),
             [](const SingularPoint& a, const SingularPoint& b) { return a.input < b.input; });
 
-  // the drivable part of the range, and the gaps around it
-  const double low = std::min(options.from, options.to), high = std::max(options.from, options.to);
-  const double reached_low = down_end.complete ? std::min(low, assembly.input) : down_end.input;
-  const double reached_high = up_end.complete ? std::max(high, assembly.input) : up_end.input;
+  // the gaps: what of [low, high] the covered part and its copies a turn apart (R drive) leave
   result.reached = {reached_low, reached_high};
   std::vector<InputInterval> gaps;  // ascending
-  if (reached_low > low) gaps.push_back({low, std::min(reached_low, high)});
-  if (reached_high < high) gaps.push_back({std::max(reached_high, low), high});
-  if (gaps.size() == 2 && gaps[0].to >= gaps[1].from) gaps = {{low, high}};
+  if (!periodic || reached_high - reached_low < turn) {
+    double covered_to = low;  // [low, covered_to] is covered
+    bool any = false;
+    const double k_first = periodic ? std::floor((low - reached_high) / turn) : 0.0;
+    const double k_last = periodic ? std::ceil((high - reached_low) / turn) : 0.0;
+    for (double k = k_first; k <= k_last; ++k) {
+      const double a = reached_low + k * turn, b = reached_high + k * turn;  // exact for k = 0
+      if (b < low || a > high) continue;
+      if (a > covered_to) gaps.push_back({covered_to, a});
+      covered_to = std::max(covered_to, b);
+      any = true;
+    }
+    if (!any) {
+      gaps.push_back({low, high});
+    } else if (covered_to < high) {
+      gaps.push_back({covered_to, high});
+    }
+  }
   if (step < 0) {
     std::reverse(gaps.begin(), gaps.end());
     for (InputInterval& g : gaps) std::swap(g.from, g.to);
@@ -176,8 +297,10 @@ SweepResult Sweep(const Mechanism& m, const SweepOptions& options) {
   result.inputs.reserve(count);
   result.singular.reserve(count);
   result.valid_order.reserve(count);
+  std::vector<int> row_of(samples, -1);
   for (int i = 0, row = 0; i < samples; ++i) {
     if (!done[i]) continue;
+    row_of[i] = row;
     result.inputs.push_back(options.from + i * step);
     result.outputs.row(row) = outputs.row(i);
     result.poses.row(row) = poses.row(i);
@@ -186,8 +309,15 @@ SweepResult Sweep(const Mechanism& m, const SweepOptions& options) {
     ++row;
   }
 
+  // cells above a row's valid order are not computable anyway (valid_order says so)
+  for (const SweepResult::Cell& c : undefined_cells) {
+    if (done[c.row] && c.column % (options.order + 1) <= valid[c.row]) result.undefined.push_back({row_of[c.row], c.column});
+  }
+  std::sort(result.undefined.begin(), result.undefined.end());
+  const std::string undefined_text = UndefinedMessage(m, result, options.order);
   if (count == samples) {
     result.status = SweepStatus::kComplete;
+    result.message = undefined_text;
     return result;
   }
   result.status = SweepStatus::kPartial;
@@ -197,8 +327,12 @@ SweepResult Sweep(const Mechanism& m, const SweepOptions& options) {
   for (const WalkEnd* end : {&up_end, &down_end}) {
     if (!end->complete) text += "; " + end->message;
   }
-  result.message = text;
+  result.message = text + (undefined_text.empty() ? "" : "; " + undefined_text);
   return result;
+}
+
+bool SweepResult::Defined(int row, int column) const {
+  return !std::binary_search(undefined.begin(), undefined.end(), Cell{row, column});
 }
 
 SweepEvents EventsOf(const SweepResult& sweep) {

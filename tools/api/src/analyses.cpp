@@ -9,6 +9,7 @@
 #include "koppel/core/limits.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace koppel {
 
@@ -95,6 +96,7 @@ SweepTable Model::Sweep(double from, double to, double step, int order, AtBranch
   SweepTable t;
   t.status = FromSweep(result.status);
   t.message = result.message;
+  if (!result.undefined.empty() && t.status == AnalysisStatus::kComplete) t.status = AnalysisStatus::kPartial;  // cells missing
   t.notes = result.notes;
   t.order = order;
   t.columns = layout.names;
@@ -106,6 +108,9 @@ SweepTable Model::Sweep(double from, double to, double step, int order, AtBranch
     DisplayRow(m, layout, result.inputs[i], result.outputs.row(i).data(), result.valid_order[i], result.singular[i] != 0,
                t.values.data() + static_cast<size_t>(i) * t.columns.size());
   }
+  // cells an output has no number for (not differentiable there) are NaN, as those above a row's valid order
+  for (const SweepResult::Cell& c : result.undefined)
+    t.values[static_cast<size_t>(c.row) * t.columns.size() + c.column + 1] = std::numeric_limits<double>::quiet_NaN();
   t.singular_points = Shown(m, result.singular_points);
   t.gaps = Shown(m, result.gaps);
   return t;

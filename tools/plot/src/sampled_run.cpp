@@ -3,6 +3,7 @@
 
 #include "koppel/solver/position.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace koppel::plot {
@@ -18,13 +19,37 @@ SampledRun SampleMechanism(const Mechanism& mechanism, const SweepOptions& optio
   run.inputs = sweep.inputs;
   run.outputs = sweep.outputs;
   run.poses = sweep.poses;
-  if (!run.inputs.empty()) run.stretches.push_back({0, run.size()});
   run.complete = sweep.complete();
   run.message = sweep.message;
-  // the rows of a sweep are one contiguous stretch of the branch (it walks outward from the
-  // assembly); what lies beyond is a gap, and the singular points met are marked
-  for (const SingularPoint& p : sweep.singular_points) run.singular.push_back(p.input);
+  // the rows between two gaps are one contiguous stretch of the branch (an R drive's rows a turn
+  // away from the assembly's are the branch a turn on: the sweep maps them); the singular points
+  // met are marked where the range shows them (modulo a turn for an R drive)
   for (const InputInterval& g : sweep.gaps) run.gaps.push_back({g.from, g.to});
+  int begin = 0;
+  for (int i = 0; i + 1 < run.size(); ++i) {
+    const double a = std::min(run.inputs[i], run.inputs[i + 1]), b = std::max(run.inputs[i], run.inputs[i + 1]);
+    const bool gap_between = std::any_of(sweep.gaps.begin(), sweep.gaps.end(), [&](const InputInterval& g) {
+      return std::min(g.from, g.to) >= a && std::max(g.from, g.to) <= b;
+    });
+    if (gap_between) {
+      run.stretches.push_back({begin, i + 1});
+      begin = i + 1;
+    }
+  }
+  if (!run.inputs.empty()) run.stretches.push_back({begin, run.size()});
+  const double low = std::min(options.from, options.to), high = std::max(options.from, options.to), turn = 2 * kPi;
+  for (const SingularPoint& p : sweep.singular_points) {
+    if (!mechanism.InputIsAngle()) {
+      run.singular.push_back(p.input);
+      continue;
+    }
+    bool shown = false;
+    for (double k = std::ceil((low - p.input) / turn); p.input + k * turn <= high; ++k) {
+      run.singular.push_back(p.input + k * turn);
+      shown = true;
+    }
+    if (!shown) run.singular.push_back(p.input);
+  }
   return run;
 }
 

@@ -12,11 +12,16 @@
 
 namespace koppel {
 
+// Where an assembly started: at the hint, beside it (the hint's input is singular), or where the
+// search over the input's period found a pose (the hint does not assemble).
+enum class AssemblyStart { kHint, kBesideHint, kSearched };
+
 struct Assembly {
   Eigen::VectorXd q;   // the assembled pose
-  double input = 0.0;  // where: the hint's input, or beside it (see below)
+  double input = 0.0;  // where: the hint's input, beside it, or where the search found a pose (see below)
   std::string error;   // empty on success
   std::vector<std::string> notes;
+  AssemblyStart start = AssemblyStart::kHint;  // last: aggregate initialisers elsewhere list the fields above
   bool ok() const { return error.empty(); }
 };
 
@@ -24,6 +29,13 @@ struct Assembly {
 // reciprocal condition of J S there is below kSingularRowRcond), the hint cannot say which of the
 // branches meeting there it means; the mechanism is then assembled a window's half-width
 // (options.branch_window) beside it, where the hint still describes the pose, and a note says so.
+// When the hint does not assemble at all (its input lies outside every drivable range, say), the
+// input's period is searched: a turn of an R drive in steps of 5 degrees, or +-4 L of a P drive in
+// steps of L/8, nearest the hint's input first, each probe from the hint's pose and then from
+// seeded random guesses (reproducible). The first regular pose found is the start; a note names
+// its input and why (the Assembly's `input` and `start` say the same).
+inline constexpr int kAssemblyProbesPerTurn = 72;
+inline constexpr int kAssemblyRandomStarts = 8;
 Assembly AssembleRegular(const Mechanism& mechanism, PositionSolver& solver, const ContinuationOptions& options = {});
 
 // The mobility of a mechanism: the Grübler–Kutzbach count, and n - rank of the joints' equations

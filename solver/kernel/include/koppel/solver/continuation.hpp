@@ -8,7 +8,12 @@
 // singular position was crossed, which is then located and reported.
 //
 // Singular positions (see singular.hpp):
-// - limit point: no step gets past; the walk ends there, located to `limit_resolution`.
+// - limit point: no step gets past. Where the steps stall, the point is located on the augmented
+//   system (singular.hpp, LocateLimitPoint) to roundoff; a target between the walk and the point
+//   is reached from the point along its quadratic branch q(s) = q* + s null (Newton at the
+//   target), a target on the point itself gets the pose there (flagged singular, valid order 0:
+//   the transfer functions are infinite), a target beyond it ends the walk at the point. Should
+//   the augmented Newton fail, the walk ends where steps shorter than `limit_resolution` fail.
 // - branch point: crossed along the incoming branch (ContinuationOptions::at_branch_point says
 //   whether to continue on the branch that continues the incoming one analytically, to stop, or
 //   to switch to the other). The crossing jumps from a pose A a window's half-width before the
@@ -36,7 +41,8 @@ struct ContinuationOptions {
   // Largest continuation step [rad for an R drive, units of L for a P drive]: the predictor's
   // error (~ q''' h^3) stays far below the distance between assembly branches.
   double max_step = 0.05;
-  // Limit points are located to this [rad, or units of L].
+  // The walk gives up stepping towards a singular position when steps this short fail [rad, or
+  // units of L]; a limit point is then located to roundoff on the augmented system (see above).
   double limit_resolution = 1e-11;
   // Steps shorter than this fraction of max_step mean a singular position is near: the pose is
   // examined (an SVD) and a branch point is crossed rather than crept around.
@@ -121,6 +127,11 @@ class Continuation {
   bool RegularWalkTo(double target);
   Crossing CrossBranchPoint(double estimate, double direction, double target, WalkReport* finished);
   Crossing LeaveOrEnterWindow(double target, WalkReport* finished);
+  // At a stall in `direction` towards `target`: locates the limit point ahead and reaches the
+  // target (or ends at the point). False when no limit point was located (the caller goes on).
+  bool FinishAtLimitPoint(double target, double direction, WalkReport* finished);
+  void SetLimitPose(double input, const Eigen::VectorXd& q);
+  std::string LimitMessage(const SingularStructure& s, double input) const;
   void EvaluateInWindow(double input);
   WalkReport Reached() const;
   WalkReport Ended(WalkStatus status, std::string message) const;
@@ -153,6 +164,10 @@ class Continuation {
   Eigen::VectorXd q_trial_, predicted_, tangent_predicted_;
   Eigen::MatrixXd trial_series_;
   std::unique_ptr<Window> window_;
+  // standing on a located limit point: the regular pose the walk came from, to step back to
+  bool at_limit_ = false;
+  double retreat_input_ = 0.0;
+  Eigen::VectorXd retreat_q_;
   std::vector<SingularPoint> singular_points_;
 };
 

@@ -75,6 +75,8 @@ class PositionSolver {
   // The same from the hint's guess, at another input (near the hint's, where the hint still
   // describes the pose): used when the hint's input is itself a singular position.
   SolveReport AssembleAt(double input, Eigen::VectorXd& q);
+  // The first guess AssembleAt starts from: the pose the hint describes (at the hint's input).
+  Eigen::VectorXd HintGuess() const { return InitialGuess(0); }
   // Levenberg–Marquardt and Newton from the guess `q` at `input` (no hint): the tool for
   // finding every assembly of a mechanism from many starting guesses.
   SolveReport AssembleFrom(double input, Eigen::VectorXd& q);

@@ -83,4 +83,27 @@ SingularStructure AnalyseSingularity(const ConstraintSystem& system, const Eigen
 std::optional<Eigen::VectorXd> OtherBranchTangent(const ConstraintSystem& system, const Eigen::VectorXd& q, double input,
                                                   const Eigen::VectorXd& tangent);
 
+// A limit point located on the augmented (Moore–Spence) system
+//   F(q, input) = 0,   J(q) S u = 0,   c . u = 1
+// in the 2n + 1 unknowns q, input and u (the null vector of J S; c its first estimate), by Newton
+// on all three with the exact Jacobian (the second derivatives F''[S u, .] from Taylor<2>
+// residuals by polarisation). The system is regular at a simple fold, so Newton converges
+// quadratically and the input is found to roundoff (about 1e-15 rad relative; the tests hold it
+// to 1e-13 against the triangle inequality), where the walk's step halving alone stops about
+// 1e-10 short.
+struct LimitPoint {
+  double input = 0.0;      // the limit point [rad for an R drive, length for a P drive]
+  Eigen::VectorXd q;       // the pose there
+  Eigen::VectorXd null;    // the motion there with the drive held: J null = 0, unit in the scaled norm
+  // input(s) = input + curvature s^2 + O(s^3) along the branch q(s) = q + s null + O(s^2): the
+  // branch lies on the side sign(curvature) of the limit (0 when the fold is not quadratic)
+  double curvature = 0.0;
+  int iterations = 0;
+};
+
+// Newton on the augmented system from a pose (input, q) near a limit point (q a converged pose
+// of F, e.g. where a walk stalled). Empty when Newton does not converge (not near a simple fold:
+// a branch point, or too far).
+std::optional<LimitPoint> LocateLimitPoint(const ConstraintSystem& system, double input, const Eigen::VectorXd& q);
+
 }  // namespace koppel

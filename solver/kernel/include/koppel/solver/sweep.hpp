@@ -68,6 +68,16 @@ struct SweepResult {
   std::vector<SingularPoint> singular_points;  // met by the walks, in input order
   std::vector<InputInterval> gaps;             // parts of from..to that are not drivable, in sweep order
   InputInterval reached;  // the input interval the walks covered, around the assembly input (low, high)
+  // Cells of `outputs` that are not finite numbers (an output not differentiable there: a distance
+  // through zero has no derivative where it vanishes), stored as 0 and listed here by (row,
+  // column), ascending; `message` names the outputs and inputs (also when complete: the samples
+  // are all there, the status says nothing about cells). Never printed as numbers.
+  struct Cell {
+    int row = 0, column = 0;
+    bool operator<(const Cell& o) const { return row != o.row ? row < o.row : column < o.column; }
+  };
+  std::vector<Cell> undefined;
+  bool Defined(int row, int column) const;
 
   bool complete() const { return status == SweepStatus::kComplete; }
   // One line: status, rows, singular points and gaps.

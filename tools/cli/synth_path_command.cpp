@@ -49,7 +49,7 @@ void Run(const Args& args) {
   request.open = args.open;
   request.top = Whole("--top", args.top, 1, 1000);
   if (!args.candidates.empty()) request.candidates = Whole("--candidates", args.candidates, 1, 10000);
-  if (!args.threads.empty()) request.threads = Whole("--threads", args.threads, 0, 1024);
+  if (!args.threads.empty()) request.threads = Whole("--threads", args.threads, 0, kMaxThreads);
   if (std::string why; !request.IsValid(&why)) {
     Complain(args.points + ": " + why);
     throw Exit{kExitBadInput};
@@ -115,7 +115,7 @@ void AddPathSubcommand(CLI::App& synth) {
   cmd->add_flag("--open", args->open, "The points are an open stretch, not a closed path");
   OutputDirectory(cmd->add_option("-o,--dir", args->dir, "Write each linkage as a mechanism file into this directory"));
   OutputFile(cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout"));
-  cmd->add_option("--threads", args->threads, "Threads (default: one per core)");
+  cmd->add_option("--threads", args->threads, "Threads (default: one per core; at most 256, kMaxThreads)");
   cmd->callback([args] { Run(*args); });
 }
 

@@ -70,6 +70,9 @@ struct SimulationResult {
   // initial input on the hint's branch.
   AnalysisStatus status = AnalysisStatus::kNotRun;
   bool bad_input = false;
+  // Which input is bad: the loads (the mechanism file), the drive law or the options.
+  enum class BadPart { kNone, kLoads, kDrive, kOptions };
+  BadPart bad_part = BadPart::kNone;
   std::string message;
   std::vector<SimulationRow> rows;
   long steps = 0;       // accepted integrator steps

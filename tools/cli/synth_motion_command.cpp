@@ -137,9 +137,13 @@ void Run(const Args& args) {
   if (!args.curves.empty()) WriteCurves(args, spec.poses);
   const std::vector<Dyad> dyads = Dyads(args, spec.poses);
   // the work, estimated before it starts: every ordered pair of dyads is re-analysed
-  CheckCount(static_cast<double>(MotionFourBarCount(dyads.size(), options)),
-             fmt::format("{} dyads ({})", dyads.size(), spec.poses.size() == 3 ? "--grid, --circle-point" : "--samples"),
-             kMotionFourBars);
+  if (const double four_bars = static_cast<double>(MotionFourBarCount(dyads.size(), options)); four_bars > kMotionFourBars.value) {
+    Complain(fmt::format("{}: {} dyads make {:.3g} four-bars to re-analyse, more than the limit of {:.0f} ({}, about 2.5 ms each; see "
+                         "README 'Limits'): fewer dyads",
+                         spec.poses.size() == 3 ? "--grid/--circle-point" : "--samples", dyads.size(), four_bars, kMotionFourBars.value,
+                         kMotionFourBars.name));
+    throw Exit{kExitBadInput};
+  }
 
   const MotionResult result = FourBarsFromDyads(spec.poses, dyads, options);
   std::cerr << fmt::format("koppel synth motion: {} poses, {} dyads, {} four-bars re-analysed through every pose{}\n", spec.poses.size(),

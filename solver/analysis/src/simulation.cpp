@@ -72,9 +72,15 @@ class Dynamics {
     const double input = x[0], speed = x[1];
     if (!std::isfinite(input) || !std::isfinite(speed)) throw Stop{"the motion has no finite state " + Where(m_, t, input)};
     const double turn = m_.InputIsAngle() ? 2.0 * kPi : solver_.system().length_scale();
-    if (std::abs(input - path_.input()) > kLongestWalk * turn)
-      throw Stop{"the motion explodes " + Where(m_, t, input) + ": the input moves " + FormatTurns(std::abs(input - path_.input()) / turn) +
+    const double move = std::abs(input - path_.input());
+    if (move > kLongestWalk * turn)
+      throw Stop{"the motion explodes " + Where(m_, t, input) + ": the input moves " + FormatTurns(move / turn) +
                  " within one step (speed " + FormatTurns(speed / turn) + " per second)"};
+    // the work of a run is the walking: a bound on it bounds the run, whatever the speed
+    walked_ += move;
+    if (walked_ > kMaxSimulationWalk * turn)
+      throw Stop{"the position solver walked the input over more than " + FormatTurns(kMaxSimulationWalk) +
+                 " (kMaxSimulationWalk) by " + Where(m_, t, input) + ": the motion explodes, or the run is longer than one call does"};
     const WalkReport walk = path_.AdvanceTo(input, std::numeric_limits<double>::infinity());
     if (!walk.ok()) throw Stop{"the mechanism cannot move on " + Where(m_, t, input) + ": " + walk.message};
     const Eigen::MatrixXd& series = path_.Series(2);
@@ -158,6 +164,7 @@ class Dynamics {
   PositionSolver& solver_;
   Continuation& path_;
   double largest_inertia_ = 0.0;
+  double walked_ = 0.0;  // input walked by all evaluations so far, there and back [rad or length unit]
   long evaluations_ = 0;
 };
 

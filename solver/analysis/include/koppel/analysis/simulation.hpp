@@ -36,6 +36,12 @@ struct DriveLaw {
   std::vector<double> torques;  // kMotor: one per speed [N m or N]
 };
 
+// Turns (drive lengths of a P drive) the position solver may walk the input over in one
+// simulation, every evaluation's move counted there and back: about 1 ms a turn, so 20 000 is
+// under half a minute, some 10 000 turns of travel (3 000 rpm for 3 min). A torque exp(1000 t)
+// walked 36 000 turns in 0.023 s of simulated time, minutes of work.
+inline constexpr double kMaxSimulationWalk = 20'000;
+
 struct SimulationOptions {
   double t_start = 0.0;        // [s]
   double t_end = 1.0;          // [s] > t_start

@@ -204,7 +204,12 @@ std::string EntryReport::Brief() const {
   if (const CheckOutcome* w = Worst()) {
     char ratio[32];
     std::snprintf(ratio, sizeof ratio, "%.2g", w->Ratio());
-    s += std::string(", worst ") + (std::isinf(w->Ratio()) ? "not computed" : ratio) + " of tolerance (" + w->name + ")";
+    // a deviation against a tolerance of 0 has an unbounded ratio: said so, not "not computed"
+    char deviation[64];
+    std::snprintf(deviation, sizeof deviation, "%.3g against a tolerance of 0", w->worst);
+    const bool computed = w->status != CheckStatus::kNotComputed && w->status != CheckStatus::kNotRun;
+    s += std::string(", worst ") + (!computed ? "not computed" : std::isinf(w->Ratio()) ? deviation : ratio) +
+         (computed && std::isinf(w->Ratio()) ? "" : " of tolerance") + " (" + w->name + ")";
   }
   return s;
 }

@@ -2,7 +2,10 @@
 // (format in README.md, "Masses and loads"). Every problem is reported at its line like the rest
 // of the file's.
 #include "koppel/core/formula.hpp"
+#include "koppel/core/limits.hpp"
 #include "yaml_reader.hpp"
+
+#include <fmt/core.h>
 
 #include <cmath>
 #include <map>
@@ -57,6 +60,13 @@ class LoadsReader {
     if (!metres) return;
     if (!(*metres > 0.0)) {
       r_.Error(length, "units.length", "the length unit must be m, dm, cm, mm, um, km, in, ft or a positive number of metres");
+      return;
+    }
+    // forces and energies scale with powers of the unit: beyond these they overflow a double
+    if (*metres < kMinLengthUnit || *metres > kMaxLengthUnit) {
+      r_.Error(length, "units.length",
+               fmt::format("a length unit of {:g} m is outside {:g} to {:g} m (kMinLengthUnit, kMaxLengthUnit)", *metres,
+                           kMinLengthUnit, kMaxLengthUnit));
       return;
     }
     loads_.metres_per_unit = *metres;

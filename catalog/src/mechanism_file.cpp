@@ -12,6 +12,7 @@
 
 #include <cctype>
 #include <filesystem>
+#include <limits>
 
 namespace koppel {
 namespace {
@@ -75,15 +76,22 @@ class MechanismReader {
           r_.Error(e.value, path, "expected a number or formula");
           continue;
         }
+        bool overridden = false;
         for (size_t i = 0; i < overrides.size(); ++i) {
           if (overrides[i].first == e.key) {
             formula = overrides[i].second;
-            used[i] = true;
+            used[i] = overridden = true;
           }
         }
         if (const Expected<double> v = out_.parameters.Define(e.key, *formula); !v) {
-          // an override's error belongs to the command line; the file's to its line
-          r_.Error(e.value, path, v.error());
+          // an override's error belongs to the command line, the file's to its line; a formula
+          // that fails because it names a failed parameter is that one's error, not a second one
+          if (overridden) {
+            r_.diagnostics().push_back({r_.file(), 0, 0, "--set " + e.key, v.error()});
+          } else if (!r_.NamesFailedParameter(*formula)) {
+            r_.Error(e.value, path, v.error());
+          }
+          r_.MarkFailedParameter(e.key);
         }
       }
     }
@@ -107,7 +115,12 @@ class MechanismReader {
       const YAML::Node points = r_.Require(e.value, "points", path);
       if (points.IsDefined() && !points.IsNull()) {
         for (const YamlReader::Entry& p : r_.Entries(points, Child(path, "points"))) {
-          if (auto v = r_.Vector(p.value, Child(Child(path, "points"), p.key))) link.points.push_back({p.key, *v});
+          if (auto v = r_.Vector(p.value, Child(Child(path, "points"), p.key))) {
+            link.points.push_back({p.key, *v});
+          } else if (p.value.IsSequence() && p.value.size() == 2) {
+            // its number is reported; the point still exists, so joints naming it report nothing more
+            link.points.push_back({p.key, Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN())});
+          }
         }
       }
       if (link.is_frame && m_.FrameLink() >= 0) {

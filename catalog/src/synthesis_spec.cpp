@@ -84,6 +84,9 @@ FunctionSpecFile ParseFunctionSpecText(const std::string& text, const std::strin
   }
   const YAML::Node function = r.Require(root, "function", "");
   if (function.IsDefined()) spec.formula = r.Text(function, "function").value_or("");
+  // an empty formula ('' or "  ") is reported here, at its line, not later without one
+  if (function.IsDefined() && function.IsScalar() && spec.formula.find_first_not_of(" \t") == std::string::npos)
+    r.Error(function, "function", "expected a formula of x, e.g. 'log10(x)', found an empty text");
   const bool ranges = Range(r, r.Require(root, "x", ""), "x", &q.x_from, &q.x_to) &
                       Range(r, r.Require(root, "input", ""), "input", &q.input_from, &q.input_to) &
                       Range(r, r.Require(root, "output", ""), "output", &q.output_from, &q.output_to);

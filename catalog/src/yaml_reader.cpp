@@ -1,6 +1,7 @@
 #include "yaml_reader.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <unordered_set>
 
@@ -136,10 +137,28 @@ std::optional<double> YamlReader::Number(const YAML::Node& node, const std::stri
   }
   const Expected<double> value = parameters.Evaluate(node.Scalar());
   if (!value) {
-    Error(node, path, value.error());
+    if (!NamesFailedParameter(node.Scalar())) Error(node, path, value.error());
     return std::nullopt;
   }
   return *value;
+}
+
+bool YamlReader::NamesFailedParameter(const std::string& formula) const {
+  if (failed_parameters_.empty()) return false;
+  // the formula's names: a letter or '_' then letters, digits, '_' (ParameterSet::ValidName)
+  for (size_t i = 0; i < formula.size();) {
+    const auto word = [&](size_t k) { return k < formula.size() && (std::isalnum(static_cast<unsigned char>(formula[k])) || formula[k] == '_'); };
+    if (!word(i)) {
+      ++i;
+      continue;
+    }
+    size_t end = i;
+    while (word(end)) ++end;
+    const std::string name = formula.substr(i, end - i);
+    if (std::find(failed_parameters_.begin(), failed_parameters_.end(), name) != failed_parameters_.end()) return true;
+    i = end;
+  }
+  return false;
 }
 
 std::optional<int> YamlReader::Count(const YAML::Node& node, const std::string& path) {

@@ -52,11 +52,17 @@ class YamlReader {
   const std::string& file() const { return file_; }
   std::vector<Diagnostic>& diagnostics() { return diagnostics_; }
   void set_parameters(const ParameterSet* parameters) { parameters_ = parameters; }
+
+  // A parameter whose formula failed (reported once, at its line or its --set): a formula naming
+  // it fails too, and Number reports no second error for it (no cascade).
+  void MarkFailedParameter(const std::string& name) { failed_parameters_.push_back(name); }
+  bool NamesFailedParameter(const std::string& formula) const;
   void set_fallback(const YAML::Mark& mark) { fallback_ = mark; }
 
  private:
   std::string file_;
   const ParameterSet* parameters_;
+  std::vector<std::string> failed_parameters_;
   std::vector<Diagnostic> diagnostics_;
   YAML::Mark fallback_ = YAML::Mark::null_mark();
 };

@@ -3,6 +3,8 @@
 
 #include "koppel/core/limits.hpp"
 
+#include "formula_commas.hpp"
+
 #include <muParser.h>
 
 #include <atomic>
@@ -79,13 +81,18 @@ Expected<double> ParameterSet::Evaluate(const std::string& formula) const {
   try {
     parser.SetExpr(formula);
     const double value = parser.Eval();
-    if (std::isfinite(value)) result = value;
+    // "2,6" gives two results, the last returned: one value or none (formula_commas.hpp)
+    if (parser.GetNumResults() > 1) {
+      result = Expected<double>::Error(detail::CommaOperatorError(formula, detail::TopLevelComma(formula)));
+    } else if (std::isfinite(value)) {
+      result = value;
+    }
   } catch (const UnknownName& unknown) {
     result = Expected<double>::Error("formula '" + formula + "' does not parse: unknown name '" + unknown.name + "'");
   } catch (const mu::Parser::exception_type& e) {
     std::string msg = e.GetMsg();
     if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && !e.GetToken().empty()) msg = "unknown name '" + e.GetToken() + "'";
-    result = Expected<double>::Error("formula '" + formula + "' does not parse: " + msg);
+    result = Expected<double>::Error("formula '" + formula + "' does not parse: " + msg + detail::DecimalCommaHint(formula));
   }
   // the bound addresses belong to this set: never leave them in the shared parser
   parser.ClearVar();
@@ -100,6 +107,22 @@ void ParameterSet::DefineValue(const std::string& name, double value) {
   } else {
     values_[it->second].second = value;
   }
+}
+
+Expected<std::vector<double>> ParameterSet::EvaluateList(const std::string& text, size_t count, const std::string& form) const {
+  const std::vector<std::string> items = detail::SplitAtTopLevelCommas(text);
+  if (items.size() != count) {
+    std::string why = "expected " + std::to_string(count) + " values " + form + ", found " + std::to_string(items.size()) + " in '" + text + "'";
+    if (items.size() > count) why += " (a decimal comma? write a decimal point: 2.6, not 2,6)";
+    return Expected<std::vector<double>>::Error(why);
+  }
+  std::vector<double> values;
+  for (const std::string& item : items) {
+    const Expected<double> value = Evaluate(item);
+    if (!value) return Expected<std::vector<double>>::Error(value.error());
+    values.push_back(*value);
+  }
+  return values;
 }
 
 Expected<double> ParameterSet::Define(const std::string& name, const std::string& formula) {

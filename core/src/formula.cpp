@@ -2,6 +2,8 @@
 
 #include "koppel/core/angles.hpp"
 
+#include "formula_commas.hpp"
+
 #include <muParser.h>
 
 #include <cmath>
@@ -41,10 +43,13 @@ Expected<CompiledFormula> CompiledFormula::Compile(const std::string& formula, c
     for (const auto& [name, address] : bound) impl->parser.DefineVar(name, address);
     impl->parser.SetExpr(formula);
     impl->parser.Eval();  // parses now, so that an unknown name is a compile error
+    // "2,6" gives two results, the last returned: one value or none (formula_commas.hpp)
+    if (impl->parser.GetNumResults() > 1)
+      return Expected<CompiledFormula>::Error(detail::CommaOperatorError(formula, detail::TopLevelComma(formula)));
   } catch (const mu::Parser::exception_type& e) {
     std::string message = e.GetMsg();
     if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && !e.GetToken().empty()) message = "unknown name '" + e.GetToken() + "'";
-    return Expected<CompiledFormula>::Error("formula '" + formula + "' does not parse: " + message);
+    return Expected<CompiledFormula>::Error("formula '" + formula + "' does not parse: " + message + detail::DecimalCommaHint(formula));
   }
   CompiledFormula compiled;
   compiled.impl_ = std::move(impl);

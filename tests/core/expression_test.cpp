@@ -84,3 +84,45 @@ TEST_CASE("sets do not see each other's parameters through the shared parser", "
 }
 
 }  // namespace koppel
+
+namespace koppel {
+
+// Issue 23 item 1: muparser reads "2,6" as two results and returned the last (6), so a decimal
+// comma passed silently as another number. The reference is the text itself: 2,6 is not 6.
+TEST_CASE("a comma outside a function's arguments is refused, with the decimal reading", "[expression]") {
+  ParameterSet p;
+  for (const char* text : {"2,6", "1,0.2,5", "max(1,2),3", "2,6+min(1,2)"}) {
+    INFO(text);
+    CHECK_FALSE(p.Evaluate(text));
+  }
+  CHECK_THAT(p.Evaluate("2,6").error(), Catch::Contains("a decimal comma? write 2.6"));
+  CHECK_THAT(p.Evaluate("2,6").error(), Catch::Contains("character 2"));
+  CHECK_THAT(p.Evaluate("1500,0").error(), Catch::Contains("write 1500.0"));
+  // a number that has its point already is no decimal comma's: the general hint, no reading
+  CHECK_THAT(p.Evaluate("1.5,25").error(), !Catch::Contains("1.5.25") && Catch::Contains("decimal comma"));
+  // a comma between a function's arguments is its own: the values are those of the function
+  CHECK(p.Evaluate("min(2,6)").value() == 2.0);
+  CHECK(p.Evaluate("atan2(1,0)").value() == Approx(M_PI / 2).epsilon(1e-15));
+  // a comma that makes a function call wrong gets the hint too
+  CHECK_THAT(p.Evaluate("sin(2,6)").error(), Catch::Contains("a decimal comma? write 2.6"));
+  // Define refuses the same: nothing is defined
+  CHECK_FALSE(p.Define("l2", "2,6"));
+  CHECK_FALSE(p.Has("l2"));
+}
+
+TEST_CASE("a list of values is cut at its top-level commas and its count checked", "[expression]") {
+  const ParameterSet p;
+  const Expected<std::vector<double>> xy = p.EvaluateList("1, min(0.2,5)", 2, "X,Y");
+  REQUIRE(xy);
+  CHECK((*xy)[0] == 1.0);
+  CHECK((*xy)[1] == 0.2);
+  // --circle-point 1,0.2,5 was read as (1, 5): three values for two
+  const Expected<std::vector<double>> three = p.EvaluateList("1,0.2,5", 2, "X,Y");
+  REQUIRE_FALSE(three);
+  CHECK_THAT(three.error(), Catch::Contains("expected 2 values X,Y, found 3"));
+  CHECK_THAT(three.error(), Catch::Contains("decimal comma"));
+  CHECK_FALSE(p.EvaluateList("1", 2, "X,Y"));
+  CHECK_THAT(p.EvaluateList("1,zz", 2, "X,Y").error(), Catch::Contains("unknown name 'zz'"));
+}
+
+}  // namespace koppel

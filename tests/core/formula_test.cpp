@@ -42,3 +42,19 @@ TEST_CASE("a formula that does not parse is refused; one without a value gives N
 }
 
 }  // namespace koppel
+
+namespace koppel {
+
+// Issue 23 item 1: a torque formula "2,5*phi_dot" compiled to 5*phi_dot.
+TEST_CASE("a compiled formula refuses a comma outside a function's arguments", "[formula]") {
+  const ParameterSet none;
+  const Expected<CompiledFormula> f = CompiledFormula::Compile("2,5*x", none, {"x"});
+  REQUIRE_FALSE(f);
+  CHECK_THAT(f.error(), Catch::Contains("a decimal comma? write 2.5"));
+  const Expected<CompiledFormula> g = CompiledFormula::Compile("max(x,1)", none, {"x"});
+  REQUIRE(g);
+  const double x = 3;
+  CHECK(g->Evaluate(&x) == 3.0);
+}
+
+}  // namespace koppel

@@ -1,6 +1,9 @@
 // koppel atlas build|merge: the coupler-curve atlas of path synthesis (atlas.hpp).
 #include "commands.hpp"
 #include "common.hpp"
+#include "progress_bar.hpp"
+
+#include "koppel/core/memory.hpp"
 
 #include "koppel/synthesis/atlas.hpp"
 #include "koppel/synthesis/atlas_file.hpp"
@@ -65,13 +68,23 @@ void Build(const Args& args) {
     o.shard = static_cast<int>(WholeNumber("--shard", args.shard.substr(0, slash), 1'000'000));
     o.shards = static_cast<int>(WholeNumber("--shard", args.shard.substr(slash + 1), 1'000'000));
   }
-  if (!args.threads.empty()) o.threads = static_cast<int>(WholeNumber("--threads", args.threads, 1024));
+  if (!args.threads.empty()) o.threads = static_cast<int>(WholeNumber("--threads", args.threads, kMaxThreads));
   if (std::string why; !o.IsValid(&why)) {
     Complain(why);
     throw Exit{kExitBadInput};
   }
+  // the whole shard is held in memory: refused up front with the figure, not bad_alloc later
+  const MemoryLimit memory = UsableMemory();
+  if (const Outcome fits = CheckAtlasBuildMemory(o, memory.bytes, memory.source); !fits) {
+    Complain("--count " + args.count + (args.shard.empty() ? "" : " --shard " + args.shard) + ": " + fits.error());
+    throw Exit{kExitBadInput};
+  }
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<AtlasEntry> entries = BuildAtlas(o);
+  std::vector<AtlasEntry> entries;
+  {
+    ProgressBar bar("koppel atlas build", !args.quiet);
+    entries = BuildAtlas(o, bar.Callback());
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   WriteOutput(args.out, SerialiseAtlas(entries));
   std::size_t closed = 0;
@@ -127,7 +140,7 @@ void AddAtlasCommand(CLI::App& app) {
   build->add_option("--seed", args->seed, "Seed of the draws (default 1)");
   build->add_option("--shard", args->shard, "k/n: build only the k-th of n parts (0 <= k < n)");
   OutputFile(build->add_option("-o,--output", args->out, "The atlas file to write")->required());
-  build->add_option("--threads", args->threads, "Threads (default: one per core)");
+  build->add_option("--threads", args->threads, "Threads (default: one per core; at most 256, kMaxThreads)");
   build->add_flag("--quiet", args->quiet, "No summary on stderr");
   build->add_option("--format", args->format, "csv or json: also print a summary (curves, closed, rocker_arcs, seconds) on stdout");
   build->callback([args] { Build(*args); });

@@ -20,7 +20,7 @@ struct Args {
 void Run(const Args& args) {
   CheckFormat(args.format);
   const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const PointRef point = ResolvePoint(file.mechanism, args.point);
+  const PointRef point = ResolvePoint(file.mechanism, args.point, "--point");
   const Cognates c = RobertsCognates(file.mechanism, point);
   if (!c.ok()) {
     Complain(args.file + ": " + c.message);

@@ -45,6 +45,16 @@ double ParseNumberFlag(const std::string& flag, const std::string& text) {
   return *value;
 }
 
+std::vector<double> ParseNumberListFlag(const std::string& flag, const std::string& text, size_t count, const std::string& form) {
+  ParameterSet empty;
+  const Expected<std::vector<double>> values = empty.EvaluateList(text, count, "'" + form + "'");
+  if (!values) {
+    Complain(flag + ": " + values.error());
+    throw Exit{kExitBadInput};
+  }
+  return *values;
+}
+
 void CheckCount(double count, const std::string& options, const CountLimit& limit) {
   if (count <= limit.value) return;
   Complain(fmt::format("{} ask for {:.3g}, more than the limit of {:.0f} {} ({}, see README 'Limits'); change {}", options, count,
@@ -150,19 +160,23 @@ nlohmann::json MixedTable::ToJson() const {
 
 std::string MixedTable::Text(const std::string& format) const { return format == "json" ? JsonText(ToJson()) : ToCsv(); }
 
-PointRef ResolvePoint(const Mechanism& m, const std::string& text) {
+PointRef ResolvePoint(const Mechanism& m, const std::string& text, const std::string& flag) {
   const Expected<PointRef> point = FindPointByText(m, text);
   if (point) return *point;
-  Complain(point.error());
+  Complain(flag + " " + text + ": " + point.error());
   throw Exit{kExitBadInput};
 }
 
-int ResolveScalarOutput(const Mechanism& m, const std::string& name) {
+int ResolveScalarOutput(const Mechanism& m, const std::string& name, const std::string& flag, const std::string& path) {
+  std::string scalars;
   for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
     if (m.outputs[o].Components() != 1) continue;
     if (name.empty() || m.outputs[o].name == name) return o;
+    scalars += (scalars.empty() ? "" : ", ") + m.outputs[o].name;
   }
-  Complain(name.empty() ? "the mechanism declares no scalar output" : "no scalar output '" + name + "'");
+  Complain(name.empty() ? path + ": the mechanism declares no scalar output (outputs: an angle or a distance, see README)"
+                        : flag + " " + name + ": " + path + " has no scalar output '" + name + "'" +
+                              (scalars.empty() ? "" : " (its scalar outputs: " + scalars + ")"));
   throw Exit{kExitBadInput};
 }
 

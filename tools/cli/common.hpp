@@ -34,6 +34,10 @@ MechanismFile LoadMechanism(const std::string& path, const std::vector<std::stri
 // A number given on the command line as a formula ("5/6", "2*sqrt(3)"). Exit{2} on error.
 double ParseNumberFlag(const std::string& flag, const std::string& text);
 
+// `count` numbers separated by commas ("X,Y"), each a formula; `form` names them ("X,Y").
+// Exit{2} when the count differs (a decimal comma among them is named) or one does not evaluate.
+std::vector<double> ParseNumberListFlag(const std::string& flag, const std::string& text, size_t count, const std::string& form);
+
 // Marks a command-line option as naming an output file (-o FILE, --yaml, --curves) or a
 // directory that files are written into (-o DIR); returns it. Once the command line is parsed,
 // before a command reads any input or begins its work, main() claims every target given
@@ -69,6 +73,7 @@ struct CountLimit {
 inline constexpr CountLimit kSweepSamples{static_cast<double>(kMaxSweepSamples), "kMaxSweepSamples", "samples per sweep"};
 inline constexpr CountLimit kStraightSearchSamples{static_cast<double>(kMaxStraightSearchSamples), "kMaxStraightSearchSamples",
                                                    "samples per straight-line search"};
+inline constexpr CountLimit kMotionFourBars{static_cast<double>(kMaxMotionFourBars), "kMaxMotionFourBars", "four-bars per motion synthesis"};
 inline constexpr CountLimit kChartCells{static_cast<double>(kMaxChartCells), "kMaxChartCells", "cells per chart"};
 
 // The one sample-count check of every sweeping command, before anything is allocated: a range
@@ -108,12 +113,14 @@ struct MixedTable {
 // Prints "koppel: message" on stderr.
 void Complain(const std::string& message);
 
-// A point of the mechanism named on the command line: a point output (`K`), `link.point`, or a
-// point name that only one link has. Exit{2} with the candidates otherwise.
-PointRef ResolvePoint(const Mechanism& mechanism, const std::string& text);
+// A point of the mechanism named on the command line by `flag` (--point K): a point output
+// (`K`), `link.point`, or a point name that only one link has. Exit{2} naming the flag and the
+// candidates otherwise.
+PointRef ResolvePoint(const Mechanism& mechanism, const std::string& text, const std::string& flag);
 
-// A scalar output by name; empty: the first scalar output. Exit{2} otherwise.
-int ResolveScalarOutput(const Mechanism& mechanism, const std::string& name);
+// A scalar output by name (given by `flag`); empty: the first scalar output of the mechanism file
+// `path`. Exit{2} naming the file or the flag otherwise.
+int ResolveScalarOutput(const Mechanism& mechanism, const std::string& name, const std::string& flag, const std::string& path);
 
 // A one-column-of-names table for summaries: quantity, value, unit.
 struct Summary {

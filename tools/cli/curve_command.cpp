@@ -23,7 +23,7 @@ void Run(const Args& args) {
   CheckFormat(args.format);
   const MechanismFile file = LoadMechanism(args.file, args.sets);
   const Mechanism& m = file.mechanism;
-  const PointRef point = ResolvePoint(m, args.point);
+  const PointRef point = ResolvePoint(m, args.point, "--point");
   const bool angle = m.InputIsAngle();
   auto in = [&](double v) { return angle ? DegToRad(v) : v; };
   auto shown = [&](double v) { return angle ? RadToDeg(v) : v; };

@@ -20,7 +20,7 @@ plot::CycleOptions ReadCycleFlags(const MechanismFile& file, const CycleFlags& f
   const Mechanism& m = file.mechanism;
   plot::CycleOptions options;
   if (flags.trace.empty()) options.traced = plot::PointOutputs(m);
-  for (const std::string& text : flags.trace) options.traced.push_back({ResolvePoint(m, text), text});
+  for (const std::string& text : flags.trace) options.traced.push_back({ResolvePoint(m, text, "--trace"), text});
   options.sizes = plot::DefaultPartSizes(m);
   if (!flags.plate.empty()) options.sizes.plate_width = ParseNumberFlag("--plate", flags.plate);
   if (!flags.pin.empty()) options.sizes.pin_diameter = ParseNumberFlag("--pin", flags.pin);

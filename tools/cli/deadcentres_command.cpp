@@ -114,7 +114,7 @@ void Run(const Args& args) {
   CheckFormat(args.format);
   const MechanismFile file = LoadMechanism(args.file, args.sets);
   const Mechanism& m = file.mechanism;
-  const int output = ResolveScalarOutput(m, args.output);
+  const int output = ResolveScalarOutput(m, args.output, "--output", args.file);
   const Units units{m.InputIsAngle(), m.OutputIsAngle(output), file.loads.LengthUnit()};
   auto in = [&](double v) { return units.angle_in ? DegToRad(v) : v; };
   SweepOptions range;

@@ -39,7 +39,7 @@ void Run(const Args& args) {
     throw Exit{kExitBadInput};
   }
   // one sweep for the view, the guides' lengths, the trace and the poses' starting points
-  const Mechanism traced = args.trace.empty() ? m : WithPointOutput(m, ResolvePoint(m, args.trace));
+  const Mechanism traced = args.trace.empty() ? m : WithPointOutput(m, ResolvePoint(m, args.trace, "--trace"));
   const plot::SampledRun run = plot::SampleMechanism(traced, range);
   if (run.size() == 0) {
     Complain(args.file + ": " + run.message);
@@ -66,7 +66,7 @@ void Run(const Args& args) {
     scene.trace_name = args.trace;
   }
   if (args.deadcentres) {
-    const int output = ResolveScalarOutput(m, args.output);
+    const int output = ResolveScalarOutput(m, args.output, "--output", args.file);
     SweepOptions search = range;
     search.step = in(1.0) < std::abs(range.step) ? in(1.0) : range.step;  // the search resolution of `deadcentres`
     const DeadCentreReport dead = FindDeadCentres(m, output, 0, search);

@@ -148,7 +148,7 @@ void Run(const Args& args) {
   if (!args.transfer.empty()) {
     plot::TransferPlotOptions options;
     options.output = m.FindOutput(args.transfer);
-    if (options.output < 0) options.output = ResolveScalarOutput(m, args.transfer);  // exits 2 with the candidates
+    if (options.output < 0) options.output = ResolveScalarOutput(m, args.transfer, "--transfer", args.file);  // exits 2 with the candidates
     options.order = args.order;
     options.range = range;
     if (!options.IsValid(m, &why)) {
@@ -172,7 +172,7 @@ void Run(const Args& args) {
     Finish(args, plot::MuPlot(m, options));
   } else {
     plot::CurvePlotOptions options;
-    options.point = ResolvePoint(m, args.curve);
+    options.point = ResolvePoint(m, args.curve, "--curve");
     options.range = range;
     options.straight = args.straight;
     options.qg = ParseNumberFlag("--qg", args.qg);

@@ -21,7 +21,7 @@ void Run(const Args& args) {
   CheckFormat(args.format);
   const MechanismFile file = LoadMechanism(args.file, args.sets);
   const Mechanism& m = file.mechanism;
-  const int output = ResolveScalarOutput(m, args.output);
+  const int output = ResolveScalarOutput(m, args.output, "--output", args.file);
   const bool angle = m.InputIsAngle();
   auto in = [&](double v) { return angle ? DegToRad(v) : v; };
   const double from = in(ParseNumberFlag("--from", args.from)), to = in(ParseNumberFlag("--to", args.to));

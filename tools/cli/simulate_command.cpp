@@ -42,9 +42,8 @@ std::pair<double, double> ParseTimeSpan(const std::string& text) {
 
 // "a,b" -> {a, b}
 std::pair<double, double> ParsePair(const std::string& flag, const std::string& text) {
-  const auto comma = text.find(',');
-  if (comma == std::string::npos) BadInput(flag + ": expected two numbers 'input,speed', found '" + text + "'");
-  return {ParseNumberFlag(flag, text.substr(0, comma)), ParseNumberFlag(flag, text.substr(comma + 1))};
+  const std::vector<double> values = ParseNumberListFlag(flag, text, 2, "input,speed");
+  return {values[0], values[1]};
 }
 
 // A motor curve: "speed:torque,speed:torque,..." or a file of "speed,torque" lines
@@ -70,7 +69,10 @@ DriveLaw ParseMotor(const std::string& text, bool angle) {
     std::stringstream list(text);
     for (std::string item; std::getline(list, item, ',');) {
       const auto colon = item.find(':');
-      if (colon == std::string::npos) BadInput("--motor: expected 'speed:torque,...' or a file, found '" + item + "'");
+      // "1500:2,5" splits into "1500:2" and "5": a decimal comma, most likely
+      if (colon == std::string::npos)
+        BadInput("--motor: expected 'speed:torque,...' or a file, found '" + item + "' in '" + text +
+                 "' (a decimal comma? write a decimal point: 2.5, not 2,5)");
       points.emplace_back(item.substr(0, colon), item.substr(colon + 1));
     }
   }
@@ -110,7 +112,13 @@ void RunSimulate(const SimulateArgs& args) {
   if (!options.IsValid(&why)) BadInput("--t/--initial/--dt/--tolerance: " + why);
 
   const SimulationResult result = Simulate(m, file.loads, law, options);
-  if (result.bad_input) BadInput(args.file + ": " + result.message);
+  // the message goes to the input it is about: the file (loads), the drive flag or the options
+  switch (result.bad_part) {
+    case SimulationResult::BadPart::kNone: break;
+    case SimulationResult::BadPart::kLoads: BadInput(args.file + ": " + result.message);
+    case SimulationResult::BadPart::kDrive: BadInput((args.torque.empty() ? "--motor " : "--torque ") + (args.torque.empty() ? args.motor : args.torque) + ": " + result.message);
+    case SimulationResult::BadPart::kOptions: BadInput("--t/--initial/--dt/--tolerance: " + result.message);
+  }
 
   Table table;
   std::vector<std::string> units = {"s", angle ? "deg" : "length", angle ? "rpm" : "length/s"};

@@ -22,12 +22,8 @@ struct Args {
 };
 
 Eigen::Vector2d ParsePoint(const std::string& flag, const std::string& text) {
-  const auto comma = text.find(',');
-  if (comma == std::string::npos) {
-    Complain(flag + ": expected X,Y, found '" + text + "'");
-    throw Exit{kExitBadInput};
-  }
-  return {ParseNumberFlag(flag, text.substr(0, comma)), ParseNumberFlag(flag, text.substr(comma + 1))};
+  const std::vector<double> xy = ParseNumberListFlag(flag, text, 2, "X,Y");
+  return {xy[0], xy[1]};
 }
 
 int Whole(const std::string& flag, const std::string& text, int lo, int hi) {
@@ -137,14 +133,19 @@ void Run(const Args& args) {
     }
     options.require_crank = true;
   }
-  if (!args.threads.empty()) options.threads = Whole("--threads", args.threads, 0, 1024);
+  if (!args.threads.empty()) options.threads = Whole("--threads", args.threads, 0, kMaxThreads);
   const int top = args.top.empty() ? 0 : Whole("--top", args.top, 1, 1'000'000);
   if (!args.curves.empty()) WriteCurves(args, spec.poses);
   const std::vector<Dyad> dyads = Dyads(args, spec.poses);
-  if (dyads.size() > 2000) {
-    Complain(fmt::format("{} dyads make {} four-bars: fewer, please (--grid, --samples)", dyads.size(), dyads.size() * (dyads.size() - 1)));
+  // the work, estimated before it starts: every ordered pair of dyads is re-analysed
+  if (const double four_bars = static_cast<double>(MotionFourBarCount(dyads.size(), options)); four_bars > kMotionFourBars.value) {
+    Complain(fmt::format("{}: {} dyads make {:.3g} four-bars to re-analyse, more than the limit of {:.0f} ({}, about 2.5 ms each; see "
+                         "README 'Limits'): fewer dyads",
+                         spec.poses.size() == 3 ? "--grid/--circle-point" : "--samples", dyads.size(), four_bars, kMotionFourBars.value,
+                         kMotionFourBars.name));
     throw Exit{kExitBadInput};
   }
+
   const MotionResult result = FourBarsFromDyads(spec.poses, dyads, options);
   std::cerr << fmt::format("koppel synth motion: {} poses, {} dyads, {} four-bars re-analysed through every pose{}\n", spec.poses.size(),
                            dyads.size(), result.four_bars.size(),
@@ -208,7 +209,7 @@ void AddMotionSubcommand(CLI::App& synth) {
   OutputDirectory(cmd->add_option("-o,--dir", args->dir, "Write each four-bar as a mechanism file into this directory"));
   OutputFile(cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout"));
   cmd->add_option("--format", args->format, "The table as csv (default) or json ({\"columns\", \"rows\"}; grashof a string)");
-  cmd->add_option("--threads", args->threads, "Threads for the re-analyses (default: one per core)");
+  cmd->add_option("--threads", args->threads, "Threads for the re-analyses (default: one per core; at most 256, kMaxThreads)");
   cmd->callback([args] { Run(*args); });
 }
 

@@ -50,7 +50,7 @@ void Run(const Args& args) {
   request.open = args.open;
   request.top = Whole("--top", args.top, 1, 1000);
   if (!args.candidates.empty()) request.candidates = Whole("--candidates", args.candidates, 1, 10000);
-  if (!args.threads.empty()) request.threads = Whole("--threads", args.threads, 0, 1024);
+  if (!args.threads.empty()) request.threads = Whole("--threads", args.threads, 0, kMaxThreads);
   if (std::string why; !request.IsValid(&why)) {
     Complain(args.points + ": " + why);
     throw Exit{kExitBadInput};
@@ -114,7 +114,7 @@ void AddPathSubcommand(CLI::App& synth) {
   OutputDirectory(cmd->add_option("-o,--dir", args->dir, "Write each linkage as a mechanism file into this directory"));
   OutputFile(cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout"));
   cmd->add_option("--format", args->format, "The table as csv (default) or json ({\"columns\", \"rows\"}; grashof a string, cognate_of null when none)");
-  cmd->add_option("--threads", args->threads, "Threads (default: one per core)");
+  cmd->add_option("--threads", args->threads, "Threads (default: one per core; at most 256, kMaxThreads)");
   cmd->callback([args] { Run(*args); });
 }
 

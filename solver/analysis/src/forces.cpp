@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace koppel {
 namespace {
@@ -18,6 +21,18 @@ double LoadScale(const PoseMotion& pose, const AppliedLoads& loads) {
   for (const AppliedLoads::Force& f : loads.forces) scale += f.force.norm() * lever;
   for (const AppliedLoads::Torque& t : loads.torques) scale += std::abs(t.torque);
   return pose.system().mechanism().InputIsAngle() ? scale : scale / lever;
+}
+
+// The name of the first value that is not a finite number, or nullptr.
+const char* FirstNonFinite(const std::vector<std::pair<const char*, double>>& values) {
+  for (const auto& [name, value] : values) {
+    if (!std::isfinite(value)) return name;
+  }
+  return nullptr;
+}
+
+std::string NotFiniteMessage(const char* quantity) {
+  return std::string(quantity) + " is not a finite number: it overflows a double (loads, masses or length unit too large)";
 }
 
 }  // namespace
@@ -67,6 +82,12 @@ Outcome ForcesAt(const ForcesContext& c, Eigen::MatrixXd& series, ForcesRow& row
   if (Outcome evaluated = c.model.Evaluate(pose, state, &applied); !evaluated) return evaluated;
   if (c.options.speed) applied.Add(InertiaLoads(pose, c.loads.masses, state));
   const ReducedInertia inertia = ReduceInertia(pose, c.loads.masses);
+  // a number that overflowed (huge loads, masses or length unit) is no force: the sample says which
+  if (const char* name = FirstNonFinite({{"the reduced moment of inertia", inertia.value},
+                                         {"its derivative", inertia.derivative},
+                                         {"the drive torque by virtual work", VirtualWorkDrive(applied)},
+                                         {"the loads' size", LoadScale(pose, applied)}}))
+    return Outcome::Error(NotFiniteMessage(name));
   row.reduced_inertia = inertia.value;
   row.reduced_inertia_derivative = inertia.derivative;
   row.drive_virtual_work = VirtualWorkDrive(applied);
@@ -76,6 +97,11 @@ Outcome ForcesAt(const ForcesContext& c, Eigen::MatrixXd& series, ForcesRow& row
   Reactions reactions;
   if (!JointReactions(c.solver, row.q, GeneralizedForces(pose, applied), c.loads.metres_per_unit, &reactions))
     return Outcome::Error("the multipliers could not be solved for at this pose");
+  std::vector<std::pair<const char*, double>> reaction_values = {{"the drive torque from the joint reactions", reactions.drive}};
+  for (const JointReaction& j : reactions.joints) {
+    for (double v : {j.force.x(), j.force.y(), j.normal, j.moment}) reaction_values.emplace_back("a joint reaction", v);
+  }
+  if (const char* name = FirstNonFinite(reaction_values)) return Outcome::Error(NotFiniteMessage(name));
   row.drive = reactions.drive;
   row.joints = std::move(reactions.joints);
   row.computed = true;

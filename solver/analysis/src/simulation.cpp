@@ -3,6 +3,7 @@
 #include "koppel/analysis/inertia.hpp"
 #include "koppel/analysis/loads_at_pose.hpp"
 #include "koppel/core/angles.hpp"
+#include "koppel/core/limits.hpp"
 #include "koppel/solver/assembly.hpp"
 
 #include <boost/numeric/odeint.hpp>
@@ -29,11 +30,29 @@ struct Stop {
 constexpr double kVanishingInertia = 1e-12;
 // A step this much shorter than the output step that still fails means the failure is real.
 constexpr double kSmallestRetryStep = 1e-10;
+// The step size has collapsed when this many accepted steps in a row are shorter than
+// kCollapsedStep of the run: a stiff equation (-1e9*phi_dot against a small inertia needs steps
+// of 1e-12 s) or one that explodes; the explicit integrator would take hours, printing nothing.
+// After a failed trial (a dead centre ahead) the controller regrows its step within a few dozen
+// steps, so a run of this length is not that.
+constexpr double kCollapsedStep = 1e-9;
+constexpr int kCollapsedSteps = 1000;
+// The input one right-hand side may move from the last pose, in turns of the drive (or drive
+// lengths of a P drive): the continuation walks there pose by pose, so a speed that explodes
+// (a torque exp(1000 t)) would make one evaluation walk millions of turns.
+constexpr double kLongestWalk = 50.0;
 
 std::string Where(const Mechanism& m, double t, double input) {
   char buffer[128];
   std::snprintf(buffer, sizeof buffer, "at t = %.9g s, %s = %.9g%s", t, m.drive.input_name.c_str(),
                 m.InputIsAngle() ? RadToDeg(input) : input, m.InputIsAngle() ? " deg" : "");
+  return buffer;
+}
+
+// "1.5e+06 turns" (or drive lengths of a P drive, said the same way: a scale, not a unit).
+std::string FormatTurns(double turns) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.3g turns", turns);
   return buffer;
 }
 
@@ -52,6 +71,16 @@ class Dynamics {
   Point Evaluate(const State& x, double t) {
     const double input = x[0], speed = x[1];
     if (!std::isfinite(input) || !std::isfinite(speed)) throw Stop{"the motion has no finite state " + Where(m_, t, input)};
+    const double turn = m_.InputIsAngle() ? 2.0 * kPi : solver_.system().length_scale();
+    const double move = std::abs(input - path_.input());
+    if (move > kLongestWalk * turn)
+      throw Stop{"the motion explodes " + Where(m_, t, input) + ": the input moves " + FormatTurns(move / turn) +
+                 " within one step (speed " + FormatTurns(speed / turn) + " per second)"};
+    // the work of a run is the walking: a bound on it bounds the run, whatever the speed
+    walked_ += move;
+    if (walked_ > kMaxSimulationWalk * turn)
+      throw Stop{"the position solver walked the input over more than " + FormatTurns(kMaxSimulationWalk) +
+                 " (kMaxSimulationWalk) by " + Where(m_, t, input) + ": the motion explodes, or the run is longer than one call does"};
     const WalkReport walk = path_.AdvanceTo(input, std::numeric_limits<double>::infinity());
     if (!walk.ok()) throw Stop{"the mechanism cannot move on " + Where(m_, t, input) + ": " + walk.message};
     const Eigen::MatrixXd& series = path_.Series(2);
@@ -76,6 +105,13 @@ class Dynamics {
     p.acceleration = (moment - 0.5 * inertia.derivative * speed_si * speed_si) / inertia.value / per_input;
     p.kinetic = 0.5 * inertia.value * speed_si * speed_si;
     p.potential = model_.PotentialEnergy(pose);
+    // an overflow (a huge torque, speed or mass) ends the motion there, named, never a row
+    for (const auto& [name, value] : {std::pair<const char*, double>{"the drive torque", p.drive},
+                                      {"the acceleration", p.acceleration},
+                                      {"the kinetic energy", p.kinetic},
+                                      {"the potential energy", p.potential}}) {
+      if (!std::isfinite(value)) throw Stop{std::string(name) + " is not a finite number (it overflows a double) " + Where(m_, t, input)};
+    }
     ++evaluations_;
     return p;
   }
@@ -113,7 +149,8 @@ class Dynamics {
         size_t k = 1;
         while (k + 1 < n.size() && state.speed > n[k]) ++k;
         const double f = (state.speed - n[k - 1]) / (n[k] - n[k - 1]);
-        return drive_.torques[k - 1] + f * (drive_.torques[k] - drive_.torques[k - 1]);
+        // weighted, not a + f (b - a): the difference of two finite torques may overflow
+        return (1.0 - f) * drive_.torques[k - 1] + f * drive_.torques[k];
       }
     }
     return 0.0;
@@ -127,6 +164,7 @@ class Dynamics {
   PositionSolver& solver_;
   Continuation& path_;
   double largest_inertia_ = 0.0;
+  double walked_ = 0.0;  // input walked by all evaluations so far, there and back [rad or length unit]
   long evaluations_ = 0;
 };
 
@@ -135,7 +173,7 @@ Outcome CheckDriveLaw(const DriveLaw& drive) {
   if (drive.speeds.size() < 2 || drive.speeds.size() != drive.torques.size())
     return Outcome::Error("a motor curve needs at least two points (speed, torque)");
   for (size_t k = 0; k < drive.speeds.size(); ++k) {
-    if (!std::isfinite(drive.speeds[k]) || !std::isfinite(drive.torques[k]) || (k > 0 && !(drive.speeds[k] > drive.speeds[k - 1])))
+    if (!std::isfinite(drive.speeds[k]) || !std::isfinite(drive.torques[k]) || (k > 0 && !(drive.speeds[k] > drive.speeds[k - 1] && std::isfinite(drive.speeds[k] - drive.speeds[k - 1]))))
       return Outcome::Error("the motor curve's speeds must be finite and strictly ascending, its torques finite");
   }
   return Done();
@@ -151,7 +189,15 @@ bool SimulationOptions::IsValid(std::string* why) const {
   if (!(std::isfinite(t_start) && std::isfinite(t_end) && t_end > t_start)) return fail("the end time must come after the start time");
   if (!std::isfinite(initial_input) || !std::isfinite(initial_speed)) return fail("the initial input and speed must be finite");
   if (!(std::isfinite(output_step) && output_step > 0.0)) return fail("the output step must be a positive number of seconds");
-  if ((t_end - t_start) / output_step > 1e7) return fail("the run asks for more than 10 million output rows");
+  if ((t_end - t_start) / output_step + 1 > kMaxSimulationRows) {
+    if (why) {
+      char text[160];
+      std::snprintf(text, sizeof text, "the run asks for %.3g output rows, more than the limit of %ld (kMaxSimulationRows): a longer step",
+                    (t_end - t_start) / output_step + 1, kMaxSimulationRows);
+      *why = text;
+    }
+    return false;
+  }
   if (!(relative_tolerance > 0.0 && absolute_tolerance > 0.0 && relative_tolerance < 1.0))
     return fail("the tolerances must be positive (and the relative one below 1)");
   if (max_steps <= 0) return fail("the step budget must be positive");
@@ -167,32 +213,34 @@ std::string SimulationResult::Brief() const {
 
 SimulationResult Simulate(const Mechanism& m, const Loads& loads, const DriveLaw& drive, const SimulationOptions& options) {
   SimulationResult result;
-  auto fail = [&](std::string message, bool bad_input) {
+  using BadPart = SimulationResult::BadPart;
+  auto fail = [&](std::string message, BadPart bad) {
     result.status = AnalysisStatus::kFailed;
     result.message = std::move(message);
-    result.bad_input = bad_input;
+    result.bad_input = bad != BadPart::kNone;
+    result.bad_part = bad;
     return result;
   };
   std::string why;
-  if (!options.IsValid(&why)) return fail(why, true);
+  if (!options.IsValid(&why)) return fail(why, BadPart::kOptions);
   LoadModel model;
-  if (const Outcome prepared = model.Prepare(m, loads); !prepared) return fail(prepared.error(), true);
-  if (const Outcome checked = CheckDriveLaw(drive); !checked) return fail(checked.error(), true);
+  if (const Outcome prepared = model.Prepare(m, loads); !prepared) return fail(prepared.error(), BadPart::kLoads);
+  if (const Outcome checked = CheckDriveLaw(drive); !checked) return fail(checked.error(), BadPart::kDrive);
   CompiledFormula formula;
   if (drive.kind == DriveLaw::Kind::kFormula) {
     Expected<CompiledFormula> compiled = CompiledFormula::Compile(drive.formula, loads.parameters, LoadVariables(m));
-    if (!compiled) return fail(compiled.error(), true);
+    if (!compiled) return fail(compiled.error(), BadPart::kDrive);
     formula = std::move(*compiled);
   }
-  if (!loads.HasMass()) return fail("no link has a mass or a moment of inertia: the motion is not determined", true);
+  if (!loads.HasMass()) return fail("no link has a mass or a moment of inertia: the motion is not determined", BadPart::kLoads);
 
   PositionSolver solver(m);
   const Assembly assembly = AssembleRegular(m, solver, options.continuation);
-  if (!assembly.ok()) return fail(assembly.error, false);
+  if (!assembly.ok()) return fail(assembly.error, BadPart::kNone);
   Continuation path(solver, options.continuation);
   path.Start(assembly.input, assembly.q);
   if (const WalkReport to_start = path.AdvanceTo(options.initial_input, std::numeric_limits<double>::infinity()); !to_start.ok())
-    return fail("the initial input cannot be reached on the assembly's branch: " + to_start.message, false);
+    return fail("the initial input cannot be reached on the assembly's branch: " + to_start.message, BadPart::kNone);
 
   Dynamics dynamics(m, loads, drive, model, &formula, solver, path);
   State x = {options.initial_input, options.initial_speed};
@@ -223,15 +271,19 @@ SimulationResult Simulate(const Mechanism& m, const Loads& loads, const DriveLaw
   }
 
   const double span = options.t_end - options.t_start;
-  const long outputs = static_cast<long>(std::ceil(span / options.output_step - 1e-9));
-  // rows every output_step from the start, the last one at t_end
+  // rows every output_step from the start, the last one at t_end whatever the step: at least one
+  // row after the start (an output step longer than the run, --dt 1e308, gave only the t_start row)
+  const long outputs = std::max(1L, static_cast<long>(std::ceil(span / options.output_step - 1e-9)));
   auto output_time = [&](long k) { return k == outputs ? options.t_end : options.t_start + k * options.output_step; };
-  auto stepper = odeint::make_dense_output(options.absolute_tolerance, options.relative_tolerance, options.output_step,
-                                           odeint::runge_kutta_dopri5<State>());
+  // the integrator's longest step: an output step, never more than the run
+  const double longest_step = std::min(options.output_step, span);
+  auto stepper =
+      odeint::make_dense_output(options.absolute_tolerance, options.relative_tolerance, longest_step, odeint::runge_kutta_dopri5<State>());
   double t = options.t_start;
-  double dt = options.output_step * 1e-3;  // the controller grows it from here
+  double dt = longest_step * 1e-3;  // the controller grows it from here
   stepper.initialize(x, t, dt);
   long next = 1;
+  int tiny_steps = 0;  // accepted steps in a row shorter than kCollapsedStep of the run
   std::string last_failure;
   while (next <= outputs) {
     if (result.steps >= options.max_steps)
@@ -249,7 +301,7 @@ SimulationResult Simulate(const Mechanism& m, const Loads& loads, const DriveLaw
       // start again from the last accepted state with a shorter step; a failure that persists at
       // the shortest step is where the motion really ends
       dt = std::min(dt, stepper.current_time_step()) / 8.0;
-      if (dt < kSmallestRetryStep * options.output_step) return stop(AnalysisStatus::kPartial, last_failure);
+      if (dt < kSmallestRetryStep * longest_step) return stop(AnalysisStatus::kPartial, last_failure);
       stepper.initialize(x, t, dt);
       last_failure.clear();
       continue;
@@ -258,6 +310,15 @@ SimulationResult Simulate(const Mechanism& m, const Loads& loads, const DriveLaw
     x = stepper.current_state();
     t = stepper.current_time();
     dt = stepper.current_time_step();
+    tiny_steps = dt < kCollapsedStep * span ? tiny_steps + 1 : 0;
+    if (tiny_steps >= kCollapsedSteps && t < options.t_end) {
+      char size[32];
+      std::snprintf(size, sizeof size, "%.3g", dt);
+      // the rows up to here are kept: the motion is known that far
+      return stop(AnalysisStatus::kPartial, std::string("the step size collapsed to ") + size + " s " + Where(m, t, x[0]) +
+                                                ": the equation is stiff (a damping or stiffness far too large for the inertia) or "
+                                                "the motion explodes");
+    }
     try {
       while (next <= outputs && output_time(next) <= t) {
         State at;

@@ -1,6 +1,10 @@
 #include "koppel/synthesis/atlas.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/limits.hpp"
+#include "koppel/core/memory.hpp"
+#include "koppel/synthesis/atlas_file.hpp"
+#include "worker_threads.hpp"
 
 #include <fmt/core.h>
 
@@ -196,30 +200,57 @@ bool AtlasBuildOptions::IsValid(std::string* why) const {
   if (count < 1 || count > kMaxAtlasCurves) problem = fmt::format("count must be between 1 and {}", kMaxAtlasCurves);
   else if (shards < 1 || shard < 0 || shard >= shards) problem = "the shard k/n needs 0 <= k < n";
   else if (static_cast<std::uint64_t>(shards) > count) problem = "more shards than curves";
-  else if (threads < 0) problem = "threads must not be negative (0: one per core)";
+  else if (threads < 0 || threads > kMaxThreads)
+    problem = "threads must be 0 (one per core) to " + std::to_string(kMaxThreads) + " (kMaxThreads)";
   if (why) *why = problem;
   return problem.empty();
 }
 
-std::vector<AtlasEntry> BuildAtlas(const AtlasBuildOptions& o) {
-  if (!o.IsValid(nullptr)) return {};
-  // indices [first, last) of this shard: every index in exactly one shard
+namespace {
+
+// Indices [first, last) of the options' shard: every index in exactly one shard.
+std::pair<std::uint64_t, std::uint64_t> ShardRange(const AtlasBuildOptions& o) {
   const auto bound = [&](int k) { return static_cast<std::uint64_t>((static_cast<unsigned __int128>(o.count) * k) / o.shards); };
-  const std::uint64_t first = bound(o.shard), last = bound(o.shard + 1);
-  std::vector<AtlasEntry> entries(last - first);
+  return {bound(o.shard), bound(o.shard + 1)};
+}
+
+}  // namespace
+
+std::uint64_t AtlasBuildBytes(const AtlasBuildOptions& o) {
+  const auto [first, last] = ShardRange(o);
+  return (last - first) * sizeof(AtlasEntry) + AtlasFileSize(last - first);
+}
+
+Outcome CheckAtlasBuildMemory(const AtlasBuildOptions& o, std::uint64_t usable_bytes, const std::string& source) {
+  const std::uint64_t needed = AtlasBuildBytes(o);
+  if (needed <= usable_bytes) return Done();
+  const std::uint64_t shards = (needed + usable_bytes / 2 - 1) / (usable_bytes / 2);  // each shard at most half of it
+  return Outcome::Error(fmt::format("{} curves need about {} of memory (the curves and the file written from them), more than the {} "
+                                    "this process may have ({}); build them in shards, e.g. --shard k/{}, and merge them with "
+                                    "koppel atlas merge",
+                                    ShardRange(o).second - ShardRange(o).first, FormatBytes(static_cast<double>(needed)),
+                                    FormatBytes(static_cast<double>(usable_bytes)), source, std::max<std::uint64_t>(2, shards)));
+}
+
+std::vector<AtlasEntry> BuildAtlas(const AtlasBuildOptions& o, const std::function<void(double)>& progress) {
+  if (!o.IsValid(nullptr)) return {};
+  const std::pair<std::uint64_t, std::uint64_t> range = ShardRange(o);
+  const std::uint64_t first = range.first;
+  std::vector<AtlasEntry> entries(range.second - range.first);
   constexpr std::uint64_t kChunk = 1024;
   std::atomic<std::uint64_t> next{0};
+  const std::thread::id caller = std::this_thread::get_id();
   auto work = [&] {
     for (std::uint64_t start = next.fetch_add(kChunk); start < entries.size(); start = next.fetch_add(kChunk)) {
       const std::uint64_t end = std::min<std::uint64_t>(start + kChunk, entries.size());
       for (std::uint64_t i = start; i < end; ++i) entries[i] = DrawAtlasEntry(o.seed, first + i);
+      // the callback runs on the caller's thread only: it need not be thread-safe
+      if (progress && std::this_thread::get_id() == caller)
+        progress(std::min(1.0, static_cast<double>(next.load()) / static_cast<double>(entries.size())));
     }
   };
-  const unsigned threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+  RunOnThreads(o.threads, work);
+  if (progress) progress(1.0);
   return entries;
 }
 

@@ -6,6 +6,8 @@
 
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
+#include "koppel/core/limits.hpp"
+#include "worker_threads.hpp"
 
 #include <ceres/ceres.h>
 #include <fmt/core.h>
@@ -153,11 +155,7 @@ std::vector<StartOutcome> RunStarts(const MechanismBuilder& builder, const Targe
       }
     }
   };
-  const int threads = std::min(o.threads > 0 ? o.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency())), o.starts);
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+  RunOnThreads(std::min(o.threads > 0 ? o.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency())), o.starts), work);
   return outcomes;
 }
 
@@ -213,7 +211,8 @@ bool FitOptions::IsValid(std::string* why) const {
   std::string problem;
   if (starts < 1 || starts > 100000) problem = "starts must be between 1 and 100000";
   else if (max_iterations < 0) problem = "max_iterations must not be negative";
-  else if (threads < 0) problem = "threads must not be negative (0: one per core)";
+  else if (threads < 0 || threads > kMaxThreads)
+    problem = "threads must be 0 (one per core) to " + std::to_string(kMaxThreads) + " (kMaxThreads)";
   else if (!(std::isfinite(require_from) && std::isfinite(require_to))) problem = "the required range must be finite";
   else if (!(length_tolerance > 0 && angle_tolerance > 0)) problem = "the tolerances must be positive";
   if (why) *why = problem;

@@ -6,6 +6,8 @@
 #include "koppel/solver/position.hpp"
 #include "koppel/solver/sweep.hpp"
 #include "koppel/synthesis/four_bar_design.hpp"
+#include "koppel/core/limits.hpp"
+#include "worker_threads.hpp"
 
 #include <fmt/core.h>
 
@@ -69,7 +71,7 @@ std::optional<double> PoseErrorAssembledAt(const Mechanism& m, const std::vector
 
 bool MotionOptions::IsValid(std::string* why) const {
   std::string problem;
-  if (threads < 0) problem = "threads must not be negative (0: one per core)";
+  if (threads < 0 || threads > kMaxThreads) problem = "threads must be 0 (one per core) to " + std::to_string(kMaxThreads) + " (kMaxThreads)";
   if (why) *why = problem;
   return problem.empty();
 }
@@ -186,6 +188,12 @@ MotionFourBar AnalyseMotionFourBar(const std::vector<Pose>& poses, const Dyad& c
   return f;
 }
 
+std::uint64_t MotionFourBarCount(std::size_t dyads, const MotionOptions& options) {
+  const std::uint64_t n = dyads;
+  const std::uint64_t pairs = n < 2 ? 0 : n * (n - 1);  // ordered: each pair driven at either centre
+  return options.both_drives ? pairs : pairs / 2;
+}
+
 MotionResult FourBarsFromDyads(const std::vector<Pose>& poses, const std::vector<Dyad>& dyads, const MotionOptions& options) {
   std::vector<std::pair<int, int>> pairs;
   for (int i = 0; i < static_cast<int>(dyads.size()); ++i) {
@@ -199,11 +207,7 @@ MotionResult FourBarsFromDyads(const std::vector<Pose>& poses, const std::vector
   auto work = [&] {
     for (size_t k = next++; k < pairs.size(); k = next++) all[k] = AnalyseMotionFourBar(poses, dyads[pairs[k].first], dyads[pairs[k].second]);
   };
-  const unsigned threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+  RunOnThreads(options.threads, work);
   MotionResult result;
   for (MotionFourBar& f : all) {
     if (!f.passes) {

@@ -4,6 +4,8 @@
 #include "koppel/synthesis/fit.hpp"
 
 #include "path_prepolish.hpp"
+#include "koppel/core/limits.hpp"
+#include "worker_threads.hpp"
 
 #include <fmt/core.h>
 #include <nanoflann.hpp>
@@ -248,11 +250,7 @@ void OnEveryCore(size_t n, int threads_wanted, const std::function<void(size_t)>
   auto work = [&] {
     for (size_t i = next++; i < n; i = next++) job(i);
   };
-  const unsigned threads = threads_wanted > 0 ? threads_wanted : std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+  RunOnThreads(threads_wanted, work);
 }
 
 // The candidates in `order` polished from `next` on, `count` of them, on every core.
@@ -316,7 +314,13 @@ bool PathRequest::IsValid(std::string* why) const {
   else if (points.size() > 10'000) problem = "at most 10000 points";
   else if (top < 1 || top > 1000) problem = "top must be between 1 and 1000";
   else if (candidates < 0 || candidates > 10'000) problem = "candidates must be between 0 and 10000";
-  else if (threads < 0) problem = "threads must not be negative (0: one per core)";
+  // the work, estimated before it starts: each of the top linkages is fitted over every point
+  else if (static_cast<long>(top) * static_cast<long>(points.size()) > kMaxPathPointFits)
+    problem = "top " + std::to_string(top) + " linkages fitted over " + std::to_string(points.size()) + " points ask for " +
+              std::to_string(static_cast<long>(top) * static_cast<long>(points.size())) + " point fits, more than the limit of " +
+              std::to_string(kMaxPathPointFits) + " (kMaxPathPointFits, about 9 ms each): a smaller top (--top)";
+  else if (threads < 0 || threads > kMaxThreads)
+    problem = "threads must be 0 (one per core) to " + std::to_string(kMaxThreads) + " (kMaxThreads)";
   for (const Eigen::Vector2d& p : points)
     if (problem.empty() && !p.allFinite()) problem = "every point must be finite";
   if (why) *why = problem;

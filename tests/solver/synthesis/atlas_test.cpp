@@ -117,4 +117,33 @@ TEST_CASE("atlas builds do not depend on threads or shards; merge refuses a shar
   CHECK_FALSE(o.IsValid(&error));
 }
 
+// Issue 23 item 7: --count 100000000 ended in std::bad_alloc after the work began. The estimate is
+// the entries plus the file image (AtlasFileSize), checked before anything is allocated.
+TEST_CASE("an atlas build that cannot fit in memory is refused up front with the figures", "[atlas]") {
+  AtlasBuildOptions o;
+  o.count = 100'000'000;
+  const std::uint64_t bytes = AtlasBuildBytes(o);
+  CHECK(bytes == o.count * sizeof(AtlasEntry) + AtlasFileSize(o.count));
+  const Outcome refused = CheckAtlasBuildMemory(o, 4'000'000'000ULL, "ulimit -v");
+  REQUIRE_FALSE(refused);
+  CHECK_THAT(refused.error(), Catch::Contains("4 GB") && Catch::Contains("ulimit -v") && Catch::Contains("--shard"));
+  CHECK(CheckAtlasBuildMemory(o, bytes, "physical memory"));  // exactly enough is enough
+  // a shard needs its share only
+  o.shards = 8;
+  CHECK(AtlasBuildBytes(o) < bytes / 7);
+}
+
+TEST_CASE("an atlas build reports its progress, rising to 1, from the calling thread", "[atlas]") {
+  AtlasBuildOptions o;
+  o.count = 20'000;
+  o.threads = 2;
+  std::vector<double> reported;
+  const std::vector<AtlasEntry> entries = BuildAtlas(o, [&](double f) { reported.push_back(f); });
+  CHECK(entries.size() == 20'000);
+  REQUIRE(reported.size() >= 2);
+  CHECK(std::is_sorted(reported.begin(), reported.end()));
+  CHECK(reported.front() >= 0.0);
+  CHECK(reported.back() == 1.0);
+}
+
 }  // namespace koppel

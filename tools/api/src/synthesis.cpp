@@ -5,6 +5,7 @@
 
 #include "koppel/catalog/fit_problem.hpp"
 #include "koppel/core/angles.hpp"
+#include "koppel/core/limits.hpp"
 #include "koppel/synthesis/cognates.hpp"
 #include "koppel/synthesis/deadcentre_synthesis.hpp"
 #include "koppel/synthesis/function_synthesis.hpp"
@@ -281,9 +282,11 @@ Designs SynthesiseMotion(const MotionSpec& spec) {
     return out;
   }
   // every ordered pair is a four-bar to re-analyse: the CLI's bound on the work
-  Require(dyads.dyads.size() <= 2000, "curve_samples/circle_points",
-          fmt::format("{} dyads make {} four-bars: fewer, please", dyads.dyads.size(), dyads.dyads.size() * (dyads.dyads.size() - 1)));
   MotionOptions options;
+  const std::uint64_t four_bars = MotionFourBarCount(dyads.dyads.size(), options);
+  Require(four_bars <= static_cast<std::uint64_t>(kMaxMotionFourBars), "curve_samples/circle_points",
+          fmt::format("{} dyads make {} four-bars, more than the limit of {} (kMaxMotionFourBars): fewer, please", dyads.dyads.size(),
+                      four_bars, kMaxMotionFourBars));
   options.require_crank = spec.require_crank;
   options.threads = spec.threads;
   const MotionResult result = FourBarsFromDyads(poses, dyads.dyads, options);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace koppel::plot {
@@ -58,7 +59,10 @@ bool RangeIsValid(const SweepOptions& range, int max_samples, std::string* why) 
     return false;
   }
   if (SampleCount(range.from, range.to, range.step) > max_samples) {
-    *why = "more than " + std::to_string(max_samples - 1) + " samples: use a larger step";
+    char count[32];
+    std::snprintf(count, sizeof count, "%.6g", SampleCount(range.from, range.to, range.step));
+    *why = std::string("the input range (--from/--to/--step, else the file's sweep) asks for ") + count + " samples, more than " +
+           std::to_string(max_samples - 1) + ": use a larger --step";
     return false;
   }
   return true;

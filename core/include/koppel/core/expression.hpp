@@ -1,7 +1,8 @@
 // Parameters given as formulas (muparser syntax: + - * / ^, sqrt, sin, cos, tan, asin, acos,
 // atan, atan2, exp, log, abs, min, max ...), each able to name the parameters defined before it.
 // Trigonometric functions work in radians; the constants `pi` and `deg` (= pi/180) are defined,
-// so `30*deg` is thirty degrees in radians.
+// so `30*deg` is thirty degrees in radians. A formula is one value: a comma outside a function's
+// arguments ("2,6", a decimal comma) is refused, never read as muparser's list of results.
 #pragma once
 
 #include "koppel/core/expected.hpp"
@@ -32,6 +33,11 @@ class ParameterSet {
   // number of parameters (names are looked up by hash). Not for concurrent use of the same set
   // from several threads.
   Expected<double> Evaluate(const std::string& formula) const;
+
+  // A list of `count` formulas separated by commas ("X,Y"; commas inside a function's brackets
+  // belong to it: "min(1,2),3" is two values), each evaluated as by Evaluate. The error names the
+  // count found against `form` (e.g. "X,Y") and hints at a decimal comma when there are too many.
+  Expected<std::vector<double>> EvaluateList(const std::string& text, size_t count, const std::string& form) const;
 
   // Defines `name` with an exact value (no formula round trip), e.g. the input of a sample.
   void DefineValue(const std::string& name, double value);

@@ -35,6 +35,32 @@ inline constexpr int kMaxYamlDepth = 64;
 // formula is a line a person reads.
 inline constexpr std::size_t kMaxFormulaLength = 1000;
 
+// Four-bars of one motion synthesis (synth motion: every ordered pair of dyads is a four-bar,
+// re-analysed through every pose at about 2.5 ms each, measured): 12 000 is half a minute on one
+// core. --grid 20 made 160 000 (7 min), --samples 1000 with four poses millions.
+inline constexpr long kMaxMotionFourBars = 12'000;
+
+// Point fits of one path synthesis (synth path: --top linkages polished by a least-squares fit
+// over every point, plus the repeats of a better design dropped on the way): about 9 ms a point
+// fit (measured: --top 10 on 24 points, 70 polishes, in 2.2 s), so 3 000 is half a minute on one
+// core. --top 1000 on 24 points asked for 24 000.
+inline constexpr long kMaxPathPointFits = 3'000;
+
+// Rows of one simulation (simulate --t/--dt): each row is a solved pose and a line of output;
+// --t 0:1e6 --dt 1 asked for a million.
+inline constexpr long kMaxSimulationRows = 100'000;
+
+// Metres per length unit of a file (units: {length: ...}): a nanometre to a thousand kilometres.
+// Forces, energies and moments of inertia scale with up to the fifth power of the unit (a mass's
+// inertia in kg m^2 times speeds squared), so a unit of 1e308 m makes every force overflow.
+inline constexpr double kMinLengthUnit = 1e-9;
+inline constexpr double kMaxLengthUnit = 1e6;
+
+// Threads of one command (--threads, a spec's threads): far above the cores of any machine koppel
+// runs on; each thread reserves a stack (8 MB of address space), so --threads 600 under
+// `ulimit -v` could not be had. Threads that cannot be created are done without (fewer run).
+inline constexpr int kMaxThreads = 256;
+
 // Frames of one animation (koppel animate --frames): 3 600 is ten frames per degree of a turn,
 // far more than any eye needs; each frame is drawn and encoded anew.
 inline constexpr int kMaxAnimationFrames = 3'600;

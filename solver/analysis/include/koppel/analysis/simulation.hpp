@@ -36,6 +36,12 @@ struct DriveLaw {
   std::vector<double> torques;  // kMotor: one per speed [N m or N]
 };
 
+// Turns (drive lengths of a P drive) the position solver may walk the input over in one
+// simulation, every evaluation's move counted there and back: about 1 ms a turn, so 20 000 is
+// under half a minute, some 10 000 turns of travel (3 000 rpm for 3 min). A torque exp(1000 t)
+// walked 36 000 turns in 0.023 s of simulated time, minutes of work.
+inline constexpr double kMaxSimulationWalk = 20'000;
+
 struct SimulationOptions {
   double t_start = 0.0;        // [s]
   double t_end = 1.0;          // [s] > t_start
@@ -70,6 +76,9 @@ struct SimulationResult {
   // initial input on the hint's branch.
   AnalysisStatus status = AnalysisStatus::kNotRun;
   bool bad_input = false;
+  // Which input is bad: the loads (the mechanism file), the drive law or the options.
+  enum class BadPart { kNone, kLoads, kDrive, kOptions };
+  BadPart bad_part = BadPart::kNone;
   std::string message;
   std::vector<SimulationRow> rows;
   long steps = 0;       // accepted integrator steps

@@ -27,6 +27,7 @@
 #include <array>
 #include <complex>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -77,8 +78,15 @@ struct AtlasBuildOptions {
   bool IsValid(std::string* why) const;
 };
 
-// The shard's entries in index order (the same numbers on any number of threads).
-std::vector<AtlasEntry> BuildAtlas(const AtlasBuildOptions& options);
+// The bytes a build holds at its peak: the shard's entries and the file image written from them.
+std::uint64_t AtlasBuildBytes(const AtlasBuildOptions& options);
+// Done when AtlasBuildBytes fits in `usable_bytes` (koppel/core/memory.hpp's UsableMemory, named
+// by `source`); else the error gives both figures and the way out (shards, merged afterwards).
+Outcome CheckAtlasBuildMemory(const AtlasBuildOptions& options, std::uint64_t usable_bytes, const std::string& source);
+
+// The shard's entries in index order (the same numbers on any number of threads). `progress`,
+// when given, is called now and then from the calling thread with the fraction done (0..1).
+std::vector<AtlasEntry> BuildAtlas(const AtlasBuildOptions& options, const std::function<void(double)>& progress = {});
 
 // The atlas file (writing, reading, its checksums) is atlas_file.hpp.
 

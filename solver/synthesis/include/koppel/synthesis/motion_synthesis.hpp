@@ -17,6 +17,7 @@
 #include "koppel/core/mechanism.hpp"
 #include "koppel/synthesis/burmester.hpp"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,10 @@ struct MotionResult {
   int failed = 0;                        // did not pass the re-analysis (a defect of the synthesis)
   std::vector<std::string> failures;     // their messages
 };
+
+// The four-bars FourBarsFromDyads makes of `dyads` dyads (the work: about 2.5 ms each), to be
+// checked against kMaxMotionFourBars before the work starts.
+std::uint64_t MotionFourBarCount(std::size_t dyads, const MotionOptions& options);
 
 // Every pair of distinct dyads made a four-bar and re-analysed, on every core.
 MotionResult FourBarsFromDyads(const std::vector<Pose>& poses, const std::vector<Dyad>& dyads, const MotionOptions& options);

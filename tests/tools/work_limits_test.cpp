@@ -88,7 +88,9 @@ TEST_CASE("simulate: a stiff or exploding integration stops with its rows and sa
     CHECK_THAT(r.err, Catch::Contains("step size collapsed") || Catch::Contains("explodes") || Catch::Contains("not a finite number"));
     CHECK_THAT(r.err, !Catch::Contains("internal error"));
     CHECK(r.out.rfind("t,phi,speed", 0) == 0);  // the header and the rows up to there
+#if !defined(__SANITIZE_ADDRESS__)  // the checked build runs several times slower; the Release run holds the bound
     CHECK(ChildCpuSeconds() - cpu_before < 30);
+#endif
   }
 }
 
@@ -113,6 +115,9 @@ TEST_CASE("synth path: more point fits than the limit are refused before the atl
   CHECK_THAT(r.err, Catch::Contains("--top") && Catch::Contains("24000 point fits") && Catch::Contains("kMaxPathPointFits"));
 }
 
+// AddressSanitizer reserves terabytes of shadow address space at start-up, so nothing runs under
+// `ulimit -v` in the checked build: these two run in the Release build only.
+#if !defined(__SANITIZE_ADDRESS__)
 TEST_CASE("threads beyond the limit are refused; threads that cannot be created are done without", "[cli][limits]") {
   test::TempDir dir;
   const std::string one = (dir.path() / "one.bin").string(), many = (dir.path() / "many.bin").string();
@@ -144,5 +149,6 @@ TEST_CASE("atlas build: an atlas that cannot fit in memory is refused with the f
   CHECK_THAT(r.err, !Catch::Contains("bad_alloc"));
   CHECK(Seconds(start) < 5);
 }
+#endif  // !__SANITIZE_ADDRESS__
 
 }  // namespace koppel

@@ -93,7 +93,8 @@ TEST_CASE("a rocker at its dead centre stands still: its pole is B0, from the ac
 TEST_CASE("a slider's pole against the frame is at infinity, perpendicular to the slide", "[instant_centres]") {
   const Mechanism m = test::SliderCrank(1, 2.6, 0.8);
   const Solved s(m, DegToRad(60));
-  const InstantCentre& p = Find(InstantCentres(s.solver.system(), s.series), m.FindLink("frame"), m.FindLink("slider"));
+  const std::vector<InstantCentre> centres = InstantCentres(s.solver.system(), s.series);  // kept: p refers into it
+  const InstantCentre& p = Find(centres, m.FindLink("frame"), m.FindLink("slider"));
   REQUIRE(p.at_infinity);
   CHECK(std::abs(p.direction.x()) < 1e-12);
 }
@@ -108,7 +109,8 @@ TEST_CASE("the fixed and moving centrodes: the coupler's pole at each input, in 
   REQUIRE(c.points.size() == inputs.size());
   // at 70 deg the fixed centrode's point is the pole found from the pose alone
   const Solved s(m, DegToRad(70));
-  const InstantCentre& p = Find(InstantCentres(s.solver.system(), s.series), m.FindLink("frame"), coupler);
+  const std::vector<InstantCentre> centres = InstantCentres(s.solver.system(), s.series);  // kept: p refers into it
+  const InstantCentre& p = Find(centres, m.FindLink("frame"), coupler);
   CHECK((c.points[7].fixed - p.position).norm() < 1e-9);
   // and the moving centrode's point, carried by the coupler's pose, is the same point
   const int i = s.solver.system().CoordinateOf(coupler);

@@ -32,4 +32,16 @@ std::map<std::string, double> ParseSummary(const std::string& csv) {
   return values;
 }
 
+std::vector<std::vector<std::string>> CsvCells(const std::string& csv) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(csv);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string>& cells = rows.emplace_back();
+    std::istringstream l(line);
+    for (std::string cell; std::getline(l, cell, ',');) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();
+  }
+  return rows;
+}
+
 }  // namespace koppel::test

@@ -3,6 +3,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace koppel::test {
 
@@ -13,5 +14,7 @@ std::string Replace(std::string text, const std::string& from, const std::string
 int LineOf(const std::string& text, const std::string& needle);
 // A "quantity,value,unit" CSV as a map quantity -> value.
 std::map<std::string, double> ParseSummary(const std::string& csv);
+// A CSV as rows of cells, an empty cell kept where it is (also the last one: "1,,").
+std::vector<std::vector<std::string>> CsvCells(const std::string& csv);
 
 }  // namespace koppel::test

@@ -5,6 +5,7 @@
 // cannot give empty, names the output and the input, and exits 1.
 #include "support/closed_forms.hpp"
 #include "support/run.hpp"
+#include "support/text.hpp"
 #include "support/temp_file.hpp"
 
 #include <catch2/catch.hpp>
@@ -18,19 +19,6 @@
 namespace koppel {
 namespace {
 
-std::vector<std::vector<std::string>> Cells(const std::string& csv) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(csv);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::istringstream l(line);
-    for (std::string cell; std::getline(l, cell, ',');) cells.push_back(cell);
-    if (!line.empty() && line.back() == ',') cells.push_back("");
-    rows.push_back(cells);
-  }
-  return rows;
-}
-
 constexpr double kDeg = M_PI / 180;
 
 }  // namespace
@@ -41,7 +29,7 @@ TEST_CASE("issue 22 item 6: analyze triple-rocker --from 260 --to 360 takes 260 
   const test::RunResult r = test::RunKoppel("analyze " + test::CatalogEntryPath("triple-rocker") + " --from 260 --to 360 --step 10");
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
-  const auto rows = Cells(r.out);
+  const auto rows = test::CsvCells(r.out);
   REQUIRE(rows.size() == 12);  // header and 260, 270, ..., 360
   const double a = 3, b = 4, c = 2.5, d = 5;
   for (size_t i = 1; i < rows.size(); ++i) {
@@ -55,7 +43,7 @@ TEST_CASE("issue 22 item 6: analyze triple-rocker --from 260 --to 360 takes 260 
   // 250 deg = -110 deg lies beyond the limit: one row missing, the gap named, exit 1
   const test::RunResult s = test::RunKoppel("analyze " + test::CatalogEntryPath("triple-rocker") + " --from 250 --to 360 --step 10");
   CHECK(s.exit_code == 1);
-  CHECK(Cells(s.out).size() == 12);
+  CHECK(test::CsvCells(s.out).size() == 12);
   CHECK_THAT(s.err, Catch::Contains("1 of 12 samples") && Catch::Contains("phi = 250 deg .. 254.0379858 deg"));
 }
 
@@ -70,15 +58,15 @@ TEST_CASE("issue 22 item 4: a sample 1e-9 deg inside the crossed triple-rocker's
                                             " --to " + inside + " --step 1");
   INFO(r.err);
   CHECK(r.exit_code == 0);
-  CHECK(Cells(r.out).size() == 2);
+  CHECK(test::CsvCells(r.out).size() == 2);
   const test::RunResult s = test::RunKoppel("analyze " + test::TestDataPath("crossed-triple-rocker.yaml") + " --from " + beyond +
                                             " --to " + beyond + " --step 1");
   CHECK(s.exit_code == 1);
-  CHECK(Cells(s.out).size() == 1);
+  CHECK(test::CsvCells(s.out).size() == 1);
   // range reports the limits to the printed digits of the closed form
   const test::RunResult range = test::RunKoppel("range " + test::TestDataPath("crossed-triple-rocker.yaml"));
   REQUIRE(range.exit_code == 0);
-  const auto rows = Cells(range.out);
+  const auto rows = test::CsvCells(range.out);
   REQUIRE(rows.size() == 2);
   CHECK(std::stod(rows[1][1]) == Approx(-phi_g).margin(1e-9));
   CHECK(std::stod(rows[1][2]) == Approx(phi_g).margin(1e-9));
@@ -90,7 +78,7 @@ TEST_CASE("issue 22 item 7: range starts where a search finds a pose when the hi
   const test::RunResult r = test::RunKoppel("range " + test::TestDataPath("short-rod-slider-crank.yaml"));
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
-  const auto rows = Cells(r.out);
+  const auto rows = test::CsvCells(r.out);
   REQUIRE(rows.size() == 2);
   CHECK(std::stod(rows[1][1]) == Approx(std::asin(1.0 / 6) / kDeg).margin(1e-9));
   CHECK(std::stod(rows[1][2]) == Approx(std::asin(5.0 / 6) / kDeg).margin(1e-9));
@@ -100,7 +88,7 @@ TEST_CASE("issue 22 item 7: range starts where a search finds a pose when the hi
   // every branch: both intervals on both sides of A
   const test::RunResult all = test::RunKoppel("range " + test::TestDataPath("short-rod-slider-crank.yaml") + " --all-branches");
   REQUIRE(all.exit_code == 0);
-  const auto branches = Cells(all.out);
+  const auto branches = test::CsvCells(all.out);
   REQUIRE(branches.size() == 5);
   int low = 0, high = 0;
   for (size_t i = 1; i < branches.size(); ++i) {
@@ -113,7 +101,7 @@ TEST_CASE("issue 22 item 7: range starts where a search finds a pose when the hi
   // analyze starts there too
   const test::RunResult a = test::RunKoppel("analyze " + test::TestDataPath("short-rod-slider-crank.yaml") + " --from 20 --to 40 --step 10");
   CHECK(a.exit_code == 0);
-  CHECK(Cells(a.out).size() == 4);
+  CHECK(test::CsvCells(a.out).size() == 4);
   CHECK_THAT(a.err, Catch::Contains("assembled at phi = 10 deg"));
 }
 
@@ -123,7 +111,7 @@ TEST_CASE("issue 22 item 12: a distance through zero prints its rows, leaves d' 
   const test::RunResult r = test::RunKoppel("analyze " + test::TestDataPath("distance-through-zero.yaml") + " --from -20 --to 20 --step 10");
   INFO(r.err);
   CHECK(r.exit_code == 1);
-  const auto rows = Cells(r.out);
+  const auto rows = test::CsvCells(r.out);
   REQUIRE(rows.size() == 6);
   REQUIRE(rows[0][0] == "phi");
   REQUIRE(rows[0][1] == "d");

@@ -23,26 +23,12 @@ std::string Digits12(double v) {
   return text;
 }
 
-std::vector<std::vector<std::string>> CsvCells(const std::string& csv) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(csv);
-  std::string line;
-  while (std::getline(in, line)) {
-    rows.emplace_back();
-    std::istringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) rows.back().push_back(cell);
-    if (!line.empty() && line.back() == ',') rows.back().emplace_back();
-  }
-  return rows;
-}
-
 // The JSON table {"columns", "rows", "version"} holds what the CSV holds: the header as columns,
 // every number equal at CSV's %.12g, every word equal, an empty CSV cell as null.
 void CheckSameTable(const std::string& csv, const std::string& json_text) {
   const nlohmann::json j = nlohmann::json::parse(json_text);
   CHECK(j.at("version").is_string());
-  const std::vector<std::vector<std::string>> cells = CsvCells(csv);
+  const std::vector<std::vector<std::string>> cells = test::CsvCells(csv);
   REQUIRE(!cells.empty());
   CHECK(j.at("columns").get<std::vector<std::string>>() == cells[0]);
   REQUIRE(j.at("rows").size() == cells.size() - 1);

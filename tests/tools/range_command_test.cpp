@@ -14,24 +14,12 @@
 namespace koppel {
 namespace {
 
-std::vector<std::vector<std::string>> Cells(const std::string& csv) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(csv);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::istringstream l(line);
-    for (std::string cell; std::getline(l, cell, ',');) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
-
 }  // namespace
 
 TEST_CASE("issue 9: analyze parallelogram.yaml --step 10 stays on the parallelogram, psi'' is not 3e13", "[cli][branches]") {
   const test::RunResult r = test::RunKoppel("analyze " + test::TestDataPath("parallelogram.yaml") + " --step 10");
   REQUIRE(r.exit_code == 0);
-  const auto rows = Cells(r.out);
+  const auto rows = test::CsvCells(r.out);
   REQUIRE(rows[0] == std::vector<std::string>{"phi", "psi", "psi_d1", "psi_d2", "singular"});
   REQUIRE(rows.size() == 38);
   for (size_t i = 1; i < rows.size(); ++i) {
@@ -54,7 +42,7 @@ TEST_CASE("issue 9: deadcentres parallelogram.yaml --output psi finds none (psi 
 TEST_CASE("issue 9: slider-crank with l2 = l1 + e: rows at 0 and 360 carry the branch's s', flagged", "[cli][branches]") {
   const test::RunResult r = test::RunKoppel("analyze " + test::CatalogEntryPath("slider-crank-offset") + " --set l2=1.8 --step 10");
   REQUIRE(r.exit_code == 0);
-  const auto rows = Cells(r.out);
+  const auto rows = test::CsvCells(r.out);
   // the branch that continues analytically: s'(0) = l1 + sqrt(l1^2 + e l1), s'(360) = l1 - sqrt(...)
   // (derivation in tests/solver/kernel/continuation_test.cpp)
   CHECK(std::stod(rows[1][2]) == Approx(1 + std::sqrt(1.8)).margin(1e-8));
@@ -69,14 +57,14 @@ TEST_CASE("--at-branch-point switch and stop; a bad value is bad input", "[cli][
   const test::RunResult s =
       test::RunKoppel("analyze " + test::TestDataPath("parallelogram.yaml") + " --from 90 --to 270 --step 90 --at-branch-point switch");
   REQUIRE(s.exit_code == 0);
-  const auto rows = Cells(s.out);
+  const auto rows = test::CsvCells(s.out);
   // after 180 deg on the antiparallelogram: tan(psi/2) = -2 tan(phi/2) -> psi(270) = 126.87 deg
   const double expected = 2 * std::atan2(-2 * std::sin(3 * M_PI / 4), std::cos(3 * M_PI / 4)) * 180 / M_PI;
   CHECK(std::abs(std::remainder(std::stod(rows.back()[1]) - expected, 360.0)) < 1e-8);
   const test::RunResult t =
       test::RunKoppel("analyze " + test::TestDataPath("parallelogram.yaml") + " --from 90 --to 270 --step 90 --at-branch-point stop");
   CHECK(t.exit_code == 1);
-  CHECK(Cells(t.out).size() == 3);  // header, 90, 180
+  CHECK(test::CsvCells(t.out).size() == 3);  // header, 90, 180
   CHECK_THAT(t.err, Catch::Contains("stopped there"));
   CHECK(test::RunKoppel("analyze " + test::TestDataPath("parallelogram.yaml") + " --at-branch-point jump").exit_code == 2);
 }
@@ -90,7 +78,7 @@ TEST_CASE("a sweep whose --from lies outside the drivable range prints the rows 
   const std::string text = test::ReadText(json);
   CHECK_THAT(text, Catch::Contains("\"gaps\"") && Catch::Contains("\"kind\": \"limit\"") && Catch::Contains("\"complete\": false"));
   const test::RunResult csv = test::RunKoppel("analyze " + test::TestDataPath("triple-rocker.yaml") + " --from -180 --to 180 --step 10");
-  const auto rows = Cells(csv.out);
+  const auto rows = test::CsvCells(csv.out);
   CHECK(rows.size() == 1 + 25);  // -120 .. 120 deg: |phi| < 129.84
   CHECK(std::stod(rows[1][0]) == -120);
   CHECK_THAT(csv.err, Catch::Contains("phi = -180 deg .. -129.83844") && Catch::Contains("phi = 129.83844"));
@@ -108,7 +96,7 @@ TEST_CASE("koppel range: full turns, limits, periods, all branches", "[cli][rang
   const double limit = std::acos((4.0 + 16.0 - 30.25) / 16.0) * 180 / M_PI;
   CHECK_THAT(triple.out, Catch::Contains("\"from_kind\": \"limit\"") && Catch::Contains("\"to_kind\": \"limit\""));
   const test::RunResult csv = test::RunKoppel("range " + test::TestDataPath("triple-rocker.yaml"));
-  const auto rows = Cells(csv.out);
+  const auto rows = test::CsvCells(csv.out);
   CHECK(std::stod(rows[1][1]) == Approx(-limit).margin(1e-7));
   CHECK(std::stod(rows[1][2]) == Approx(limit).margin(1e-7));
   const test::RunResult stop = test::RunKoppel("range " + test::TestDataPath("parallelogram.yaml") + " --at-branch-point stop");
@@ -118,7 +106,7 @@ TEST_CASE("koppel range: full turns, limits, periods, all branches", "[cli][rang
 TEST_CASE("koppel classify: Grashof types with their inequality; mobility errors are bad input", "[cli][classify]") {
   const test::RunResult seed = test::RunKoppel("classify " + test::CatalogEntryPath("mzc-crank-rocker"));
   REQUIRE(seed.exit_code == 0);
-  const auto v = Cells(seed.out);
+  const auto v = test::CsvCells(seed.out);
   CHECK(v[0] == std::vector<std::string>{"quantity", "value", "unit"});
   CHECK_THAT(seed.out, Catch::Contains("mobility,1,1\nrank_mobility,1,1\ndrive_rotation,full,\ngrashof,crank-rocker,"));
   const test::RunResult parallelogram = test::RunKoppel("classify " + test::TestDataPath("parallelogram.yaml"));

@@ -20,6 +20,12 @@ constexpr int kAssemblyIterations = 400;
 // Assembly hands over to Newton once the residual is this small relative to L: Newton then
 // converges quadratically on the branch LM found.
 constexpr double kAssemblyHandover = 1e-8;
+// LM gives up when a window of this many iterations lowered |F|^2 by less than this fraction: a
+// local minimum of |F| that is not zero (no pose there), or a crawl that would take millions of
+// steps. Ceres' function_tolerance stops on 1e-6 in a single step; a window is more patient with
+// a step that overshoots, and a converging run (linear even at a singular pose) gains far more.
+constexpr int kAssemblyStallWindow = 16;
+constexpr double kAssemblyStallGain = 1e-3;
 // A pivot ratio below this counts as a singular Jacobian (about 100 ulps).
 constexpr double kSingularPivotRatio = 1e-14;
 
@@ -328,7 +334,12 @@ SolveReport PositionSolver::AssembleFromGuess(double input, Eigen::VectorXd& x) 
   Eigen::VectorXd gradient = j_hat.transpose() * residual_ / scale;
   double lambda = 1e-3 * std::max(normal.diagonal().maxCoeff(), 1e-12);
   int it = 0;
+  double window_cost = cost;
   for (; it < kAssemblyIterations && residual_.lpNorm<Eigen::Infinity>() > kAssemblyHandover * scale; ++it) {
+    if (it > 0 && it % kAssemblyStallWindow == 0) {
+      if (cost > (1.0 - kAssemblyStallGain) * window_cost) break;
+      window_cost = cost;
+    }
     Eigen::MatrixXd damped = normal;
     damped.diagonal() += lambda * (normal.diagonal().array() + 1e-9).matrix();
     const Eigen::VectorXd dz = -damped.ldlt().solve(gradient);

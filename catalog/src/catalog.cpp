@@ -4,6 +4,7 @@
 #include "koppel/catalog/classes.hpp"
 
 #include "yaml_reader.hpp"
+#include "lower_case.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -24,11 +25,6 @@
 
 namespace koppel {
 namespace {
-
-std::string Lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
 
 // Declared values win (they are what the document lists, and `check` proves them equal to the
 // computed ones); computed values fill what the card leaves out.

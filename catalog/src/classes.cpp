@@ -1,17 +1,13 @@
 #include "koppel/catalog/classes.hpp"
 
 #include "koppel/analysis/classification.hpp"
+#include "lower_case.hpp"
 
 #include <algorithm>
 #include <cctype>
 
 namespace koppel {
 namespace {
-
-std::string Lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
 
 std::string Trim(const std::string& s) {
   const auto b = s.find_first_not_of(' ');

@@ -2,6 +2,7 @@
 
 #include "koppel/catalog/mechanism_file.hpp"
 #include "koppel/core/expression.hpp"
+#include "koppel/core/limits.hpp"
 #include "input_file.hpp"
 #include "text_lines.hpp"
 
@@ -10,7 +11,6 @@
 namespace koppel {
 namespace {
 
-constexpr std::size_t kMaxReported = 20;  // problems listed before the reader stops
 
 }  // namespace
 
@@ -23,7 +23,7 @@ MotorCurveFile ParseMotorCurveText(const std::string& text, const std::string& p
   const ParameterSet no_parameters;
   bool first = true;
   for (const TextLine& line : SplitLines(text)) {
-    if (problems.size() > kMaxReported) break;
+    if (problems.size() > kMaxReportedProblems) break;
     const std::vector<TextField> fields = SplitFields(line.text, ',');
     const bool blank = fields.size() == 1 && fields[0].text.empty();
     if (blank || fields[0].text.rfind('#', 0) == 0) continue;

@@ -1,6 +1,7 @@
 #include "koppel/catalog/path_points.hpp"
 
 #include "koppel/catalog/mechanism_file.hpp"
+#include "koppel/core/limits.hpp"
 #include "input_file.hpp"
 #include "text_lines.hpp"
 
@@ -11,7 +12,6 @@
 namespace koppel {
 namespace {
 
-constexpr std::size_t kMaxReported = 20;  // problems listed before the reader stops
 
 // A finite decimal number, the whole field (a leading '+' allowed); empty otherwise.
 std::optional<double> Number(const std::string& field) {
@@ -42,7 +42,7 @@ std::vector<Eigen::Vector2d> ParsePathPoints(const std::string& text, const std:
   }
   const std::vector<TextField> header = SplitFields(lines[first].text, ',');
   if (header.size() != 2 || header[0].text != "x" || header[1].text != "y") problem(lines[first].number, 1, "expected the header x,y");
-  for (std::size_t i = first + 1; i < lines.size() && problems.size() <= kMaxReported; ++i) {
+  for (std::size_t i = first + 1; i < lines.size() && problems.size() <= kMaxReportedProblems; ++i) {
     const std::vector<TextField> fields = SplitFields(lines[i].text, ',');
     if (blank(fields)) continue;
     if (fields.size() != 2) {

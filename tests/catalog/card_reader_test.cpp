@@ -9,7 +9,7 @@
 
 #include <catch2/catch.hpp>
 
-namespace koppel {
+namespace koppel::card_reader_test {
 namespace {
 
 using test::LineOf;
@@ -170,4 +170,4 @@ TEST_CASE("all problems of a card are reported at once, each with its line", "[c
   CHECK(std::count(lines.begin(), lines.end(), LineOf(text, "kind: transfr")) == 1);
 }
 
-}  // namespace koppel
+}  // namespace koppel::card_reader_test

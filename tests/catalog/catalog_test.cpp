@@ -15,7 +15,7 @@
 #include <optional>
 #include <sstream>
 
-namespace koppel {
+namespace koppel::catalog_test {
 namespace {
 
 std::vector<std::string> Ids(const Catalog& catalog, const FeatureQuery& q) {
@@ -198,9 +198,9 @@ TEST_CASE("a catalog directory that does not exist is reported", "[catalog]") {
   CHECK_THROWS_AS(Catalog::Load("/nonexistent/koppel/catalog"), InputError);
 }
 
-}  // namespace koppel
+}  // namespace koppel::catalog_test
 
-namespace koppel {
+namespace koppel::catalog_test {
 namespace {
 
 // The reference for the keyword search: "straight" and "line" joined by one hyphen or space,
@@ -275,4 +275,4 @@ TEST_CASE("an id names its entry's file; a near id is suggested (issue 22, items
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::catalog_test

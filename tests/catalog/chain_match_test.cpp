@@ -10,7 +10,7 @@
 #include <numeric>
 #include <random>
 
-namespace koppel {
+namespace koppel::chain_match_test {
 namespace {
 
 // The mechanism with its links and joints renamed and re-ordered by `random` (geometry and
@@ -107,4 +107,4 @@ TEST_CASE("different counts or degrees are never isomorphic", "[catalog][like]")
   CHECK_FALSE(SameKinematicChain(four_bar, fewer));
 }
 
-}  // namespace koppel
+}  // namespace koppel::chain_match_test

@@ -10,7 +10,7 @@
 
 #include <catch2/catch.hpp>
 
-namespace koppel {
+namespace koppel::check_test {
 namespace {
 
 using test::LineOf;
@@ -177,4 +177,4 @@ TEST_CASE("malformed catalog cards are rejected with their line", "[catalog][che
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::check_test

@@ -11,7 +11,7 @@
 
 #include <algorithm>
 
-namespace koppel {
+namespace koppel::classes_test {
 namespace {
 
 bool HasClass(const std::vector<std::string>& classes, const std::string& c) {
@@ -96,4 +96,4 @@ TEST_CASE("motion words: the form is checked and queries match side by side", "[
   CHECK_FALSE(MotionMatches(motion, "rotation -> oscillating rotation"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::classes_test

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <set>
 
-namespace koppel {
+namespace koppel::figures_test {
 namespace {
 
 using Catch::Matchers::WithinAbs;
@@ -167,4 +167,4 @@ TEST_CASE("a figure outside its tolerance fails and says both values", "[catalog
   CHECK_FALSE(r.passed());
 }
 
-}  // namespace koppel
+}  // namespace koppel::figures_test

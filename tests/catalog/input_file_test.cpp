@@ -14,7 +14,7 @@
 #include <thread>
 #include <unistd.h>
 
-namespace koppel {
+namespace koppel::input_file_test {
 namespace {
 
 // A four-bar whose crank length is the last of `count` chained parameters p0..p{count-1}.
@@ -119,4 +119,4 @@ TEST_CASE("more than kMaxParameters parameters are refused before they are evalu
   CHECK(ParameterSet::ParameterReads() == before);
 }
 
-}  // namespace koppel
+}  // namespace koppel::input_file_test

@@ -7,7 +7,7 @@
 
 #include <catch2/catch.hpp>
 
-namespace koppel {
+namespace koppel::loads_reader_test {
 namespace {
 
 using test::LineOf;
@@ -183,4 +183,4 @@ TEST_CASE("bad masses and loads are reported at their line", "[loads]") {
   ExpectError(Replace(good, "brake: {torque: crank, magnitude: -2}", "brake: {torque: crank}"), "brake", "missing required key 'magnitude'");
 }
 
-}  // namespace koppel
+}  // namespace koppel::loads_reader_test

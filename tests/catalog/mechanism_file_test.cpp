@@ -10,7 +10,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::mechanism_file_test {
 namespace {
 
 using test::LineOf;
@@ -201,4 +201,4 @@ TEST_CASE("random garbage never crashes the reader", "[reader]") {
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::mechanism_file_test

@@ -10,7 +10,7 @@
 
 #include <filesystem>
 
-namespace koppel {
+namespace koppel::mechanism_writer_test {
 namespace {
 
 // Coordinates go through 17 significant digits, angles through degrees: a few ulps.
@@ -98,4 +98,4 @@ TEST_CASE("write -> read gives the same mechanism for every catalog entry", "[ca
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::mechanism_writer_test

@@ -8,7 +8,7 @@
 
 #include <catch2/catch.hpp>
 
-namespace koppel {
+namespace koppel::motor_curve_test {
 namespace {
 
 std::vector<Diagnostic> Problems(const std::string& text) {
@@ -54,4 +54,4 @@ TEST_CASE("a motor curve file is read within the input limit", "[motor][limits]"
   CHECK(c.speeds.size() == 2);
 }
 
-}  // namespace koppel
+}  // namespace koppel::motor_curve_test

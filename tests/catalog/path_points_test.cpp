@@ -7,7 +7,7 @@
 
 #include <catch2/catch.hpp>
 
-namespace koppel {
+namespace koppel::path_points_test {
 namespace {
 
 std::vector<Diagnostic> Problems(const std::string& text) {
@@ -51,4 +51,4 @@ TEST_CASE("a points file stops reporting after 20 problems", "[points]") {
   CHECK(Problems(text).size() == 21);
 }
 
-}  // namespace koppel
+}  // namespace koppel::path_points_test

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace koppel {
+namespace koppel::build_test {
 namespace {
 
 using Catch::Matchers::Contains;
@@ -70,4 +70,4 @@ TEST_CASE("a name that does not exist is an error naming it", "[build]") {
 }
 
 }  // namespace
-}  // namespace koppel
+}  // namespace koppel::build_test

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::expression_test {
 
 TEST_CASE("formulas name earlier parameters; pi and deg are constants", "[expression]") {
   ParameterSet p;
@@ -37,9 +37,9 @@ TEST_CASE("formula errors say what is wrong", "[expression]") {
   CHECK_FALSE(ParameterSet::ValidName("pi"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::expression_test
 
-namespace koppel {
+namespace koppel::expression_test {
 
 TEST_CASE("a formula costs the same whatever came before it: 20 000 parameters read linearly", "[expression][limits]") {
   // each formula names one earlier parameter: the work (parameter values bound into formulas)
@@ -83,9 +83,9 @@ TEST_CASE("sets do not see each other's parameters through the shared parser", "
   CHECK(a.Evaluate("x").value() == 2.0);
 }
 
-}  // namespace koppel
+}  // namespace koppel::expression_test
 
-namespace koppel {
+namespace koppel::expression_test {
 
 // Issue 23 item 1: muparser reads "2,6" as two results and returned the last (6), so a decimal
 // comma passed silently as another number. The reference is the text itself: 2,6 is not 6.
@@ -125,4 +125,4 @@ TEST_CASE("a list of values is cut at its top-level commas and its count checked
   CHECK_THAT(p.EvaluateList("1,zz", 2, "X,Y").error(), Catch::Contains("unknown name 'zz'"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::expression_test

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::formula_test {
 
 TEST_CASE("a compiled formula reads its variables and the parameters", "[formula]") {
   ParameterSet parameters;
@@ -41,9 +41,9 @@ TEST_CASE("a formula that does not parse is refused; one without a value gives N
   CHECK(std::isnan(reciprocal->Evaluate(zero)));
 }
 
-}  // namespace koppel
+}  // namespace koppel::formula_test
 
-namespace koppel {
+namespace koppel::formula_test {
 
 // Issue 23 item 1: a torque formula "2,5*phi_dot" compiled to 5*phi_dot.
 TEST_CASE("a compiled formula refuses a comma outside a function's arguments", "[formula]") {
@@ -57,4 +57,4 @@ TEST_CASE("a compiled formula refuses a comma outside a function's arguments", "
   CHECK(g->Evaluate(&x) == 3.0);
 }
 
-}  // namespace koppel
+}  // namespace koppel::formula_test

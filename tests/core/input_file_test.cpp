@@ -14,7 +14,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace koppel {
+namespace koppel::input_file_test {
 namespace {
 
 // The FileError's message, or "no error".
@@ -106,4 +106,4 @@ TEST_CASE("a file claimed as an output is refused as an input, also through a li
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::input_file_test

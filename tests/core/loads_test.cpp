@@ -3,7 +3,7 @@
 
 #include <catch2/catch.hpp>
 
-namespace koppel {
+namespace koppel::loads_test {
 
 namespace {
 Mechanism TwoLinks() {
@@ -59,4 +59,4 @@ TEST_CASE("CheckLoads names each problem", "[loads]") {
   CHECK(has("force 'F' names no point"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::loads_test

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace koppel {
+namespace koppel::mechanism_test {
 namespace {
 
 using Catch::Matchers::Contains;
@@ -169,4 +169,4 @@ TEST_CASE("the length scale is the largest body-frame point distance, without a 
 }
 
 }  // namespace
-}  // namespace koppel
+}  // namespace koppel::mechanism_test

@@ -14,7 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-namespace koppel {
+namespace koppel::output_file_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -135,4 +135,4 @@ TEST_CASE("an atomic write makes a new file, replaces one keeping its mode, and 
   CHECK(Listing(dir.path()) == std::vector<std::string>{"table.csv"});
 }
 
-}  // namespace koppel
+}  // namespace koppel::output_file_test

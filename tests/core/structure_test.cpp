@@ -6,7 +6,7 @@
 
 #include <catch2/catch.hpp>
 
-namespace koppel {
+namespace koppel::structure_test {
 
 TEST_CASE("seed 001's structure: 6 links (4 binary, 2 ternary), 7 joints (4 D, 3 S)", "[structure]") {
   const Mechanism m = test::ProportionalLinkage(1.0, 0.5, 1.83);
@@ -43,4 +43,4 @@ TEST_CASE("consistency check names each problem", "[structure]") {
   CHECK(problems.size() == 3);
 }
 
-}  // namespace koppel
+}  // namespace koppel::structure_test

@@ -13,7 +13,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-namespace koppel {
+namespace koppel::temporary_files_test {
 namespace {
 
 struct ChildEnd {
@@ -83,4 +83,4 @@ TEST_CASE("the table holds kMaxTemporaryFiles paths and refuses what it cannot h
   io::ForgetTemporaryFile(again);
 }
 
-}  // namespace koppel
+}  // namespace koppel::temporary_files_test

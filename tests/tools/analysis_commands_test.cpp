@@ -11,7 +11,7 @@
 #include <map>
 #include <sstream>
 
-namespace koppel {
+namespace koppel::analysis_commands_test {
 namespace {
 
 }  // namespace
@@ -128,4 +128,4 @@ TEST_CASE("cognates writes two mechanism files that koppel analyses", "[cli]") {
   CHECK(rows == 13);
 }
 
-}  // namespace koppel
+}  // namespace koppel::analysis_commands_test

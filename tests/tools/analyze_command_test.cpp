@@ -8,7 +8,7 @@
 #include <cmath>
 #include <sstream>
 
-namespace koppel {
+namespace koppel::analyze_command_test {
 namespace {
 
 std::vector<std::string> Lines(const std::string& text) {
@@ -100,4 +100,4 @@ TEST_CASE("--help teaches", "[cli]") {
   CHECK_THAT(r.out, Catch::Contains("NAME_d1") && Catch::Contains("degrees") && Catch::Contains("Example"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::analyze_command_test

@@ -8,7 +8,7 @@
 
 #include <filesystem>
 
-namespace koppel {
+namespace koppel::animate_command_test {
 namespace {
 
 std::string Mzc() { return test::CatalogEntryPath("mzc-crank-rocker"); }
@@ -63,4 +63,4 @@ TEST_CASE("animate: bad input", "[cli][animate]") {
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::animate_command_test

@@ -14,7 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-namespace koppel {
+namespace koppel::atlas_command_test {
 namespace {
 
 std::vector<std::string> Listing(const std::filesystem::path& folder) {
@@ -135,4 +135,4 @@ TEST_CASE("SIGINT or SIGTERM while atlas build writes leaves no temporary file (
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::atlas_command_test

@@ -11,7 +11,7 @@
 #include <set>
 #include <sstream>
 
-namespace koppel {
+namespace koppel::bad_input_test {
 namespace {
 
 struct Expectation {
@@ -67,4 +67,4 @@ TEST_CASE("every bad input exits with its code, message and line", "[cli][bad]")
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::bad_input_test

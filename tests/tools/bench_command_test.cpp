@@ -9,7 +9,7 @@
 
 #include <map>
 
-namespace koppel {
+namespace koppel::bench_command_test {
 namespace {
 
 std::map<std::string, nlohmann::json> ByName(const std::string& out) {
@@ -80,4 +80,4 @@ TEST_CASE("bench: a filter that matches nothing, a broken expression and an unkn
   CHECK_THAT(format.err, Catch::Contains("--format"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::bench_command_test

@@ -9,7 +9,7 @@
 
 #include <algorithm>
 
-namespace koppel {
+namespace koppel::catalog_command_test {
 namespace {
 
 int Lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
@@ -153,4 +153,4 @@ TEST_CASE("catalog list and show", "[cli][catalog]") {
   CHECK_THAT(missing.err, Catch::Contains("no catalog entry"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::catalog_command_test

@@ -13,7 +13,7 @@
 #include <sys/wait.h>
 #include <vector>
 
-namespace koppel {
+namespace koppel::catalog_id_test {
 namespace {
 
 // `koppel ARGUMENTS` run in `folder` (not the source tree): exit code and stdout.
@@ -113,4 +113,4 @@ TEST_CASE("a mistyped id is one line naming the nearest id (issue 22, item 10)",
   CHECK(path.err.find("catalog") == std::string::npos);
 }
 
-}  // namespace koppel
+}  // namespace koppel::catalog_id_test

@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <chrono>
 
-namespace koppel {
+namespace koppel::common_test {
 namespace {
 
 struct Hostile {
@@ -82,4 +82,4 @@ TEST_CASE("JSON outputs carry koppel's version", "[cli]") {
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::common_test

@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace koppel {
+namespace koppel::curvature_command_test {
 namespace {
 
 // seed 003 at phi = 180 deg: A = (-1, 0); B on the perpendicular bisector of A and B0 = (4, 0)
@@ -93,4 +93,4 @@ TEST_CASE("poles --centrode: the coupler's centrodes, the moving one carried to 
   CHECK(at[2].get<double>() == Approx(at[6].get<double>()).margin(1e-9));
 }
 
-}  // namespace koppel
+}  // namespace koppel::curvature_command_test

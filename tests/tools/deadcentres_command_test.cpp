@@ -10,7 +10,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::deadcentres_command_test {
 namespace {
 
 constexpr double kDeg = 180 / M_PI;
@@ -102,4 +102,4 @@ TEST_CASE("deadcentres --summary without two dead centres exits 1", "[cli][deadc
   CHECK_THAT(r.err, Catch::Contains("no summary") && Catch::Contains("1 dead centre found"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::deadcentres_command_test

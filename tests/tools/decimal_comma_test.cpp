@@ -10,7 +10,7 @@
 
 #include <string>
 
-namespace koppel {
+namespace koppel::decimal_comma_test {
 namespace {
 
 void RequireRefused(const std::string& arguments, const std::string& place, const std::string& hint) {
@@ -53,4 +53,4 @@ TEST_CASE("commas between a function's arguments still work on the command line"
   CHECK_THAT(r.out, Catch::Contains("\n0,0,600,"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::decimal_comma_test

@@ -8,7 +8,7 @@
 
 #include <string>
 
-namespace koppel {
+namespace koppel::diagnostic_place_test {
 namespace {
 
 std::string Loads() { return test::TestDataPath("slider-crank-loads.yaml"); }
@@ -96,4 +96,4 @@ TEST_CASE("an empty function formula is reported at its line", "[cli][diagnostic
   CHECK_THAT(r.err, Catch::Contains("f.yaml:2:") && Catch::Contains("found an empty text"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::diagnostic_place_test

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace koppel {
+namespace koppel::drive_input_test {
 namespace {
 
 constexpr double kDeg = M_PI / 180;
@@ -131,4 +131,4 @@ TEST_CASE("issue 22 item 12: a distance through zero prints its rows, leaves d' 
   CHECK_THAT(r.err, !Catch::Contains("internal error"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::drive_input_test

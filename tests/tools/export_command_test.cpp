@@ -8,7 +8,7 @@
 
 #include <filesystem>
 
-namespace koppel {
+namespace koppel::export_command_test {
 namespace {
 
 std::string Mzc() { return test::CatalogEntryPath("mzc-crank-rocker"); }
@@ -68,4 +68,4 @@ TEST_CASE("export: bad input and unreachable poses", "[cli][export]") {
   CHECK(test::RunKoppel("export " + Mzc() + " --dxf -o " + Mzc()).exit_code == 2);
 }
 
-}  // namespace koppel
+}  // namespace koppel::export_command_test

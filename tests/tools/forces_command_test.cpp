@@ -13,7 +13,7 @@
 #include <sstream>
 #include <vector>
 
-namespace koppel {
+namespace koppel::forces_command_test {
 namespace {
 
 // A CSV table: header and rows of cells (empty cells kept).
@@ -150,9 +150,9 @@ TEST_CASE("forces: bad input is exit 2 with the file's line", "[cli][forces]") {
   CHECK(test::RunKoppel("forces " + Example() + " --step 0").exit_code == 2);
 }
 
-}  // namespace koppel
+}  // namespace koppel::forces_command_test
 
-namespace koppel {
+namespace koppel::forces_command_test {
 
 TEST_CASE("plot --forces draws the drive torque and polar diagrams of joint forces", "[cli][forces]") {
   test::TempDir dir;
@@ -168,4 +168,4 @@ TEST_CASE("plot --forces draws the drive torque and polar diagrams of joint forc
   CHECK(test::RunKoppel("plot " + test::TestDataPath("slider-crank-loads.yaml") + " --forces --mu").exit_code == 2);
 }
 
-}  // namespace koppel
+}  // namespace koppel::forces_command_test

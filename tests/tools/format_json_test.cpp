@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace koppel {
+namespace koppel::format_json_test {
 namespace {
 
 std::string Digits12(double v) {
@@ -99,4 +99,4 @@ TEST_CASE("atlas build, atlas merge and synth path take --format json (issue 22,
   CHECK(test::RunKoppel(path + " --format tsv").exit_code == 2);
 }
 
-}  // namespace koppel
+}  // namespace koppel::format_json_test

@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <unistd.h>
 
-namespace koppel {
+namespace koppel::input_limits_test {
 namespace {
 
 // A file of `bytes` zeros that takes no disk space.
@@ -71,4 +71,4 @@ TEST_CASE("an atlas is read as far as its checksummed header promises, not to th
   CHECK_FALSE(std::filesystem::exists(dir.path() / "m.bin"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::input_limits_test

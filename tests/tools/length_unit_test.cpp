@@ -8,7 +8,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-namespace koppel {
+namespace koppel::length_unit_test {
 
 TEST_CASE("tables label lengths with the file's unit (issue 22, item 14)", "[cli][units]") {
   test::TempDir dir;
@@ -35,4 +35,4 @@ TEST_CASE("tables label lengths with the file's unit (issue 22, item 14)", "[cli
   CHECK_THAT(plain.out, Catch::Contains(",length\n"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::length_unit_test

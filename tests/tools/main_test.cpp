@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-namespace koppel {
+namespace koppel::main_test {
 
 TEST_CASE("koppel --version prints the project's version and exits 0", "[cli]") {
   const test::RunResult r = test::RunKoppel("--version");
@@ -31,4 +31,4 @@ TEST_CASE("synth fit --quiet leaves stderr clean: no glog lines from starts that
   if (hard.exit_code == 1) CHECK(std::count(hard.err.begin(), hard.err.end(), '\n') == 1);
 }
 
-}  // namespace koppel
+}  // namespace koppel::main_test

@@ -18,7 +18,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-namespace koppel {
+namespace koppel::output_file_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -289,4 +289,4 @@ TEST_CASE("a reader that closes the pipe early ends koppel by SIGPIPE, quietly (
   CHECK(WTERMSIG(status) == SIGPIPE);
 }
 
-}  // namespace koppel
+}  // namespace koppel::output_file_test

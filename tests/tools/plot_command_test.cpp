@@ -10,7 +10,7 @@
 
 #include <filesystem>
 
-namespace koppel {
+namespace koppel::plot_command_test {
 namespace {
 
 pugi::xml_document Svg(const std::string& path) {
@@ -108,4 +108,4 @@ TEST_CASE("view writes one self-contained page", "[cli]") {
   CHECK(page.find(" href=") == std::string::npos);
 }
 
-}  // namespace koppel
+}  // namespace koppel::plot_command_test

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <vector>
 
-namespace koppel {
+namespace koppel::range_command_test {
 namespace {
 
 }  // namespace
@@ -127,4 +127,4 @@ TEST_CASE("koppel classify: Grashof types with their inequality; mobility errors
   CHECK_THAT(redundant.err, Catch::Contains("overconstrained but consistent"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::range_command_test

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <vector>
 
-namespace koppel {
+namespace koppel::simulate_command_test {
 namespace {
 
 std::vector<std::vector<double>> Rows(const std::string& csv, std::string* header) {
@@ -92,4 +92,4 @@ TEST_CASE("simulate: bad input is exit 2", "[cli][simulate]") {
   CHECK(test::RunKoppel("simulate " + file + " --t 0:1 --torque 1 --initial 30").exit_code == 2);
 }
 
-}  // namespace koppel
+}  // namespace koppel::simulate_command_test

@@ -11,7 +11,7 @@
 #include <map>
 #include <sstream>
 
-namespace koppel {
+namespace koppel::synth_command_test {
 namespace {
 
 }  // namespace
@@ -219,4 +219,4 @@ TEST_CASE("synth fit: a design that does not assemble over require reports its d
   CHECK_THAT(b.err, Catch::Contains("bad.yaml:5:") && Catch::Contains("positive"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::synth_command_test

@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <sstream>
 
-namespace koppel {
+namespace koppel::synth_function_command_test {
 
 TEST_CASE("synth function log10: the rows, the error curve and the mechanism", "[cli][function]") {
   test::TempDir dir;
@@ -98,4 +98,4 @@ TEST_CASE("synth function: an exact design on the wrong branch is refused, not p
   CHECK(s.count("error_max") == 0);
 }
 
-}  // namespace koppel
+}  // namespace koppel::synth_function_command_test

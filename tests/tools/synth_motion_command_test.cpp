@@ -10,7 +10,7 @@
 #include <cmath>
 #include <sstream>
 
-namespace koppel {
+namespace koppel::synth_motion_command_test {
 namespace {
 
 constexpr double kRecovered = 1e-9;
@@ -123,4 +123,4 @@ TEST_CASE("synth motion refuses bad requests", "[cli][motion]") {
   CHECK_THAT(off.err, Catch::Contains("not on the circle-point curve"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::synth_motion_command_test

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace koppel {
+namespace koppel::synth_path_command_test {
 namespace {
 
 const std::string& CiAtlas() {
@@ -85,4 +85,4 @@ TEST_CASE("synth path refuses bad points files", "[cli][path]") {
   CHECK(test::RunKoppel("synth path " + test::TestDataPath("path-points.csv") + " --atlas " + dir.Write("a.bin", "nope")).exit_code == 2);
 }
 
-}  // namespace koppel
+}  // namespace koppel::synth_path_command_test

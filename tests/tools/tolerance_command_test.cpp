@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace koppel {
+namespace koppel::tolerance_command_test {
 
 // issue 27, "Done when"
 TEST_CASE("tolerance: issue 27's slider-crank at 60 deg prints every named quantity, proved by the closed form", "[cli][tolerance]") {
@@ -98,9 +98,9 @@ TEST_CASE("tolerance past the mechanism's limits: the samples that do not assemb
   CHECK(j["status"] == "partial");
 }
 
-}  // namespace koppel
+}  // namespace koppel::tolerance_command_test
 
-namespace koppel {
+namespace koppel::tolerance_command_test {
 
 TEST_CASE("plot --tolerance draws the nominal output in its worst-case band, the Monte Carlo extremes and the shares", "[cli][tolerance]") {
   const std::string file = test::CatalogEntryPath("slider-crank-offset");
@@ -117,4 +117,4 @@ TEST_CASE("plot --tolerance draws the nominal output in its worst-case band, the
   CHECK_THAT(none.err, Catch::Contains("at least one tolerance"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::tolerance_command_test

@@ -14,7 +14,7 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 
-namespace koppel {
+namespace koppel::work_limits_test {
 namespace {
 
 std::string Loads() { return test::TestDataPath("slider-crank-loads.yaml"); }
@@ -151,4 +151,4 @@ TEST_CASE("atlas build: an atlas that cannot fit in memory is refused with the f
 }
 #endif  // !__SANITIZE_ADDRESS__
 
-}  // namespace koppel
+}  // namespace koppel::work_limits_test

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 namespace koppel::bench {
+namespace analyze_bench {  // this file's own names, apart from the other benchmarks' in a unity build
 namespace {
 
 void TimeAnalyze(benchmark::State& state) {
@@ -44,8 +45,10 @@ void TimeAnalyze(benchmark::State& state) {
 }
 
 }  // namespace
+}  // namespace analyze_bench
 
 std::vector<Case> AnalyzeCases() {
+  using namespace analyze_bench;
   Case c;
   c.name = "analyze-360000";
   c.per = Per::kRun;

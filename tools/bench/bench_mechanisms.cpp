@@ -7,6 +7,7 @@
 #include <string>
 
 namespace koppel::bench {
+namespace bench_mechanisms {  // this file's own names, apart from the other benchmarks' in a unity build
 namespace {
 
 // seed 003
@@ -18,8 +19,10 @@ const double kCrank = 1.0, kCoupler = 2.6, kOffset = 0.8;
 const double kFrame6 = 1.0, kCrank1 = 0.5, kSlideH = 1.83;
 
 }  // namespace
+}  // namespace bench_mechanisms
 
 Mechanism SeedFourBar() {
+  using namespace bench_mechanisms;
   Mechanism m;
   m.name = "fourbar";
   AddLink(m, "frame", {{"A0", {0, 0}}, {"B0", {kL4, 0}}}, true);
@@ -40,6 +43,7 @@ Mechanism SeedFourBar() {
 }
 
 Mechanism SeedSliderCrank() {
+  using namespace bench_mechanisms;
   Mechanism m;
   m.name = "slider-crank";
   AddLink(m, "frame", {{"A0", {0, -kOffset}}, {"F", {0, 0}}}, true);
@@ -58,6 +62,7 @@ Mechanism SeedSliderCrank() {
 }
 
 Mechanism SeedProportional() {
+  using namespace bench_mechanisms;
   Mechanism m;
   m.name = "proportional";
   AddLink(m, "frame", {{"A0", {0, 0}}, {"B0", {kFrame6, 0}}, {"G", {kFrame6 - kSlideH, 0}}}, true);
@@ -80,6 +85,7 @@ Mechanism SeedProportional() {
 }
 
 Mechanism Chain(int loops) {
+  using namespace bench_mechanisms;
   Mechanism m;
   m.name = "chain" + std::to_string(loops);
   // the first loop at phi = 0: A = (1, 0), B where |AB| = 3.5 and |B0 B| = 3, above A0B0
@@ -114,6 +120,7 @@ Mechanism Chain(int loops) {
 }
 
 FourBarValues SeedFourBarClosedForm(double phi) {
+  using namespace bench_mechanisms;
   const double ca = std::cos(phi), sa = std::sin(phi);
   const double ax = kL1 * ca, ay = kL1 * sa;
   // B by circle intersection, left of A -> B0
@@ -146,6 +153,7 @@ FourBarValues SeedFourBarClosedForm(double phi) {
 }
 
 SliderCrankValues SeedSliderCrankClosedForm(double phi) {
+  using namespace bench_mechanisms;
   const double sa = std::sin(phi), ca = std::cos(phi);
   const double sp = (kOffset + kCrank * ca) / kCoupler, cp = std::sqrt(1 - sp * sp);  // coupler angle psi
   const double p1 = -kCrank * sa / (kCoupler * cp);
@@ -159,6 +167,7 @@ SliderCrankValues SeedSliderCrankClosedForm(double phi) {
 }
 
 Jet SeedProportionalClosedForm(double phi) {
+  using namespace bench_mechanisms;
   const double lambda = kCrank1 / kFrame6, c = kCrank1 * kSlideH / kFrame6;
   const double sa = std::sin(phi), ca = std::cos(phi), d = 1 - lambda * ca;
   return {c * sa / d, c * (ca - lambda) / (d * d), -c * sa * (1 - 2 * lambda * lambda + lambda * ca) / (d * d * d)};

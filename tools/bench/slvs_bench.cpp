@@ -21,6 +21,7 @@ namespace koppel::bench {
 void TimeFourBarPositions(benchmark::State& state);  // walk_bench.cpp
 
 #ifdef KOPPEL_HAVE_SLVS
+namespace slvs_bench {  // this file's own names, apart from the other benchmarks' in a unity build
 namespace {
 
 constexpr int kStepsPerTurn = 360;
@@ -111,9 +112,11 @@ void TimeSlvs(benchmark::State& state) {
 }
 
 }  // namespace
+}  // namespace slvs_bench
 #endif
 
 std::vector<Case> SlvsCases() {
+  using namespace slvs_bench;
   Case slvs;
   slvs.name = "fourbar-slvs";
   slvs.per = Per::kStep;

@@ -17,6 +17,7 @@
 #include <vector>
 
 namespace koppel::bench {
+namespace walk_bench {  // this file's own names, apart from the other benchmarks' in a unity build
 namespace {
 
 constexpr int kStepsPerTurn = 360;
@@ -155,8 +156,10 @@ Case WalkCase(std::string name, Mechanism (*mechanism)(), std::function<double(d
 }
 
 }  // namespace
+}  // namespace walk_bench
 
 std::vector<Case> WalkCases() {
+  using namespace walk_bench;
   std::vector<Case> cases;
   cases.push_back(ClosedFormCase("fourbar-closed-form", SeedFourBarClosedForm));
   cases.push_back(WalkCase("fourbar", SeedFourBar, FourBarCheck));
@@ -175,6 +178,9 @@ std::vector<Case> WalkCases() {
 
 // The positions alone (the walk step without the outputs' transfer functions), the side of the
 // libslvs comparison that koppel runs.
-void TimeFourBarPositions(benchmark::State& state) { TimeWalk(state, SeedFourBar(), false, kStepsPerTurn, FourBarCheck); }
+void TimeFourBarPositions(benchmark::State& state) {
+  using namespace walk_bench;
+  TimeWalk(state, SeedFourBar(), false, kStepsPerTurn, FourBarCheck);
+}
 
 }  // namespace koppel::bench

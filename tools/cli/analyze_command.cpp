@@ -10,6 +10,7 @@
 #include <fmt/core.h>
 
 namespace koppel::cli {
+namespace analyze_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct AnalyzeArgs {
@@ -114,8 +115,10 @@ void RunAnalyze(const AnalyzeArgs& args) {
 }
 
 }  // namespace
+}  // namespace analyze_command
 
 void AddAnalyzeCommand(CLI::App& app) {
+  using namespace analyze_command;
   auto args = std::make_shared<AnalyzeArgs>();
   CLI::App* cmd = app.add_subcommand(
       "analyze",

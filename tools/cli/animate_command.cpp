@@ -10,6 +10,7 @@
 #include <tuple>
 
 namespace koppel::cli {
+namespace animate_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -55,8 +56,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace animate_command
 
 void AddAnimateCommand(CLI::App& app) {
+  using namespace animate_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "animate",

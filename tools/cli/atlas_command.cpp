@@ -14,6 +14,7 @@
 #include <iostream>
 
 namespace koppel::cli {
+namespace atlas_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -123,8 +124,10 @@ void Merge(const Args& args) {
 }
 
 }  // namespace
+}  // namespace atlas_command
 
 void AddAtlasCommand(CLI::App& app) {
+  using namespace atlas_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("atlas", "The coupler-curve atlas of path synthesis (koppel synth path): build it, merge shards.");
   cmd->require_subcommand(1);

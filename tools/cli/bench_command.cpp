@@ -15,6 +15,7 @@
 #include <thread>
 
 namespace koppel::cli {
+namespace bench_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct BenchArgs {
@@ -196,8 +197,10 @@ void RunBench(const BenchArgs& args) {
 }
 
 }  // namespace
+}  // namespace bench_command
 
 void AddBenchCommand(CLI::App& app) {
+  using namespace bench_command;
   auto args = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand(
       "bench",

@@ -9,6 +9,7 @@
 #include <iostream>
 
 namespace koppel::cli {
+namespace catalog_check {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 std::string Status(const CheckOutcome& c) { return ToString(c.status); }
@@ -67,8 +68,10 @@ std::string Lines(const std::vector<EntryReport>& reports, bool verbose) {
 }
 
 }  // namespace
+}  // namespace catalog_check
 
 void RunCheck(const CatalogArgs& args) {
+  using namespace catalog_check;
   CheckCatalogFormat(args.format);
   const auto start = std::chrono::steady_clock::now();
   const Catalog catalog = LoadCatalog(args);

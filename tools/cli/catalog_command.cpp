@@ -38,6 +38,7 @@ const CatalogEntry& FindOrFail(const Catalog& catalog, const std::string& id, co
   throw Exit{kExitBadInput};
 }
 
+namespace catalog_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 // display width of UTF-8 text: count the bytes that start a character
@@ -57,8 +58,10 @@ int Count(const std::map<std::string, int>& m, const std::string& k) {
 }
 
 }  // namespace
+}  // namespace catalog_command
 
 std::string TextTable(const std::vector<std::vector<std::string>>& rows) {
+  using namespace catalog_command;
   std::vector<size_t> widths;
   for (const auto& row : rows) {
     if (widths.size() < row.size()) widths.resize(row.size(), 0);
@@ -77,6 +80,7 @@ std::string TextTable(const std::vector<std::vector<std::string>>& rows) {
 }
 
 std::string CsvField(const std::string& s) {
+  using namespace catalog_command;
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
   std::string q = "\"";
   for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c);
@@ -84,17 +88,20 @@ std::string CsvField(const std::string& s) {
 }
 
 std::string Join(const std::vector<std::string>& items, const std::string& separator) {
+  using namespace catalog_command;
   std::string s;
   for (const std::string& i : items) s += (s.empty() ? "" : separator) + i;
   return s;
 }
 
 std::string Short(double value, int digits) {
+  using namespace catalog_command;
   if (std::isinf(value)) return "inf";
   return fmt::format("{:.{}g}", value, digits);
 }
 
 std::string LinksText(const AccessFeatures& f) {
+  using namespace catalog_command;
   std::vector<std::string> parts;
   for (const auto& [degree, n] : f.links_by_degree) {
     if (n > 0) parts.push_back(std::to_string(n) + " " + DegreeName(degree));
@@ -103,6 +110,7 @@ std::string LinksText(const AccessFeatures& f) {
 }
 
 std::string JointsText(const AccessFeatures& f) {
+  using namespace catalog_command;
   std::vector<std::string> parts;
   for (const auto& [type, n] : f.joints_by_type) {
     if (n > 0) parts.push_back(std::to_string(n) + " " + type);
@@ -110,9 +118,11 @@ std::string JointsText(const AccessFeatures& f) {
   return std::to_string(f.joints) + " (" + Join(parts, ", ") + ")";
 }
 
+namespace catalog_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 nlohmann::json FeaturesJson(const AccessFeatures& f) {
+  using namespace catalog_command;
   nlohmann::json by_degree = nlohmann::json::object(), by_type = nlohmann::json::object();
   for (const auto& [d, n] : f.links_by_degree) by_degree[DegreeName(d)] = n;
   for (const auto& [t, n] : f.joints_by_type) by_type[t] = n;
@@ -122,6 +132,7 @@ nlohmann::json FeaturesJson(const AccessFeatures& f) {
 }
 
 void PrintEntries(const std::vector<const CatalogEntry*>& entries, const CatalogArgs& args) {
+  using namespace catalog_command;
   if (args.format == "json") {
     nlohmann::json j = nlohmann::json::array();
     for (const CatalogEntry* e : entries) {
@@ -158,6 +169,7 @@ void PrintEntries(const std::vector<const CatalogEntry*>& entries, const Catalog
 }
 
 std::optional<CountRange> Range(const std::string& flag, const std::string& text) {
+  using namespace catalog_command;
   if (text.empty()) return std::nullopt;
   auto r = CountRange::Parse(text);
   if (!r) {
@@ -168,6 +180,7 @@ std::optional<CountRange> Range(const std::string& flag, const std::string& text
 }
 
 FeatureQuery QueryOf(const CatalogArgs& args) {
+  using namespace catalog_command;
   FeatureQuery q;
   q.links = Range("--links", args.links);
   q.binary = Range("--binary", args.binary);
@@ -200,6 +213,7 @@ FeatureQuery QueryOf(const CatalogArgs& args) {
 }
 
 void RunFind(const CatalogArgs& args, bool all) {
+  using namespace catalog_command;
   CheckCatalogFormat(args.format);
   const FeatureQuery q = all ? FeatureQuery{} : QueryOf(args);
   const Catalog catalog = LoadCatalog(args);
@@ -207,14 +221,17 @@ void RunFind(const CatalogArgs& args, bool all) {
 }
 
 std::string ClassHelp() {
+  using namespace catalog_command;
   std::string s = "Class (declared by the entry, or shown by its joint graph):";
   for (const CatalogClass& c : CatalogClasses()) s += std::string("\n  ") + c.name + ": " + c.meaning;
   return s;
 }
 
 }  // namespace
+}  // namespace catalog_command
 
 void AddCatalogCommand(CLI::App& app) {
+  using namespace catalog_command;
   auto args = std::make_shared<CatalogArgs>();
   CLI::App* cmd = app.add_subcommand(
       "catalog",

@@ -10,6 +10,7 @@
 #include "koppel/plot/scheme.hpp"
 
 namespace koppel::cli {
+namespace catalog_page {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 std::string Escape(const std::string& text) {
@@ -77,8 +78,10 @@ std::string OutputPlot(const CatalogEntry& e, const std::string& name, std::vect
 }
 
 }  // namespace
+}  // namespace catalog_page
 
 std::string EntryHtml(const CatalogEntry& e, const std::string& text_page, std::vector<std::string>* problems) {
+  using namespace catalog_page;
   const CatalogCard& c = *e.file.card;
   std::string figures = Scheme(e, problems);
   for (const std::string& o : c.outputs) figures += OutputPlot(e, o, problems);

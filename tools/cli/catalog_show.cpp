@@ -12,6 +12,7 @@
 #include <sstream>
 
 namespace koppel::cli {
+namespace catalog_show {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 // The outcomes of one equation or figure, over the variants it runs in.
@@ -180,8 +181,10 @@ nlohmann::json PageJson(const CatalogEntry& e, const EntryReport& report) {
 }
 
 }  // namespace
+}  // namespace catalog_show
 
 void RunShow(const CatalogArgs& args) {
+  using namespace catalog_show;
   if (args.format != "html") CheckCatalogFormat(args.format);
   if (args.format == "csv") {
     Complain("catalog show prints a page (table, the default), html or json, not csv");

@@ -7,6 +7,7 @@
 #include <array>
 
 namespace koppel::cli {
+namespace classify_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -63,8 +64,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace classify_command
 
 void AddClassifyCommand(CLI::App& app) {
+  using namespace classify_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "classify",

@@ -9,6 +9,7 @@
 #include <filesystem>
 
 namespace koppel::cli {
+namespace cognates_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -63,8 +64,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace cognates_command
 
 void AddCognatesCommand(CLI::App& app) {
+  using namespace cognates_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "cognates",

@@ -7,6 +7,7 @@
 #include <optional>
 
 namespace koppel::cli {
+namespace curvature_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -47,8 +48,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace curvature_command
 
 void AddCurvatureCommand(CLI::App& app) {
+  using namespace curvature_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "curvature",

@@ -10,6 +10,7 @@
 #include <algorithm>
 
 namespace koppel::cli {
+namespace curve_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -117,8 +118,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace curve_command
 
 void AddCurveCommand(CLI::App& app) {
+  using namespace curve_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "curve",

@@ -8,6 +8,7 @@
 #include "koppel/analysis/dead_centres.hpp"
 
 namespace koppel::cli {
+namespace deadcentres_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -140,8 +141,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace deadcentres_command
 
 void AddDeadCentresCommand(CLI::App& app) {
+  using namespace deadcentres_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "deadcentres",

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 namespace koppel::cli {
+namespace draw_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -96,8 +97,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace draw_command
 
 void AddDrawCommand(CLI::App& app) {
+  using namespace draw_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "draw",

@@ -7,6 +7,7 @@
 #include "koppel/export/export.hpp"
 
 namespace koppel::cli {
+namespace export_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -31,8 +32,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace export_command
 
 void AddExportCommand(CLI::App& app) {
+  using namespace export_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "export",

@@ -12,6 +12,7 @@
 #include <iostream>
 
 namespace koppel::cli {
+namespace fit_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -109,8 +110,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace fit_command
 
 void AddFitSubcommand(CLI::App& synth) {
+  using namespace fit_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = synth.add_subcommand(
       "fit",

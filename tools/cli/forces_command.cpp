@@ -13,6 +13,7 @@
 #include <optional>
 
 namespace koppel::cli {
+namespace forces_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct ForcesArgs {
@@ -148,8 +149,10 @@ void RunForces(const ForcesArgs& args) {
 }
 
 }  // namespace
+}  // namespace forces_command
 
 void AddForcesCommand(CLI::App& app) {
+  using namespace forces_command;
   auto args = std::make_shared<ForcesArgs>();
   CLI::App* cmd = app.add_subcommand(
       "forces",

@@ -14,6 +14,7 @@
 #include <iostream>
 
 namespace koppel::cli {
+namespace output_file {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct OutputOption {
@@ -41,18 +42,22 @@ void WriteStandardOutput(const std::string& text) {
 }
 
 }  // namespace
+}  // namespace output_file
 
 CLI::Option* OutputFile(CLI::Option* option) {
+  using namespace output_file;
   OutputOptions().push_back({option, false});
   return option;
 }
 
 CLI::Option* OutputDirectory(CLI::Option* option) {
+  using namespace output_file;
   OutputOptions().push_back({option, true});
   return option;
 }
 
 void ClaimOutputs() {
+  using namespace output_file;
   for (const OutputOption& o : OutputOptions()) {
     std::string flag = o.option->get_name(false, true);  // "-o,--output-file" -> "-o/--output-file"
     std::replace(flag.begin(), flag.end(), ',', '/');
@@ -67,6 +72,7 @@ void ClaimOutputs() {
 }
 
 void WriteOutput(const std::string& path, const std::string& text) {
+  using namespace output_file;
   if (path.empty() || path == "-") return WriteStandardOutput(text);
   io::WriteFileAtomically(path, text);
 }
@@ -74,6 +80,7 @@ void WriteOutput(const std::string& path, const std::string& text) {
 void MakeOutputDirectory(const std::string& path) { io::MakeOutputDirectory(path); }
 
 int FinishStandardOutput(int code) {
+  using namespace output_file;
   errno = 0;
   const bool failed = std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
   const int error = errno;

@@ -15,6 +15,7 @@
 
 
 namespace koppel::cli {
+namespace plot_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -186,8 +187,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace plot_command
 
 void AddPlotCommand(CLI::App& app) {
+  using namespace plot_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "plot",

@@ -5,6 +5,7 @@
 #include "model_loading.hpp"
 
 namespace koppel::cli {
+namespace poles_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -108,8 +109,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace poles_command
 
 void AddPolesCommand(CLI::App& app) {
+  using namespace poles_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "poles",

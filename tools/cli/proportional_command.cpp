@@ -9,6 +9,7 @@
 #include "koppel/analysis/proportionality.hpp"
 
 namespace koppel::cli {
+namespace proportional_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -79,8 +80,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace proportional_command
 
 void AddProportionalCommand(CLI::App& app) {
+  using namespace proportional_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "proportional",

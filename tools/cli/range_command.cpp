@@ -7,6 +7,7 @@
 #include "koppel/core/angles.hpp"
 
 namespace koppel::cli {
+namespace range_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -58,8 +59,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace range_command
 
 void AddRangeCommand(CLI::App& app) {
+  using namespace range_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "range",

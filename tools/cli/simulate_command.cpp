@@ -15,6 +15,7 @@
 #include <sstream>
 
 namespace koppel::cli {
+namespace simulate_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct SimulateArgs {
@@ -165,8 +166,10 @@ void RunSimulate(const SimulateArgs& args) {
 }
 
 }  // namespace
+}  // namespace simulate_command
 
 void AddSimulateCommand(CLI::App& app) {
+  using namespace simulate_command;
   auto args = std::make_shared<SimulateArgs>();
   CLI::App* cmd = app.add_subcommand(
       "simulate",

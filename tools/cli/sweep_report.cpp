@@ -9,6 +9,7 @@
 #include <iostream>
 
 namespace koppel::cli {
+namespace sweep_report {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 double Shown(const Mechanism& m, double input) { return m.InputIsAngle() ? RadToDeg(input) : input; }
@@ -34,8 +35,10 @@ std::string Describe(const Mechanism& m, const SingularPoint& p) {
 }
 
 }  // namespace
+}  // namespace sweep_report
 
 void AddBranchPointOption(CLI::App* command, std::string& value) {
+  using namespace sweep_report;
   command->add_option("--at-branch-point", value,
                       "Where two branches cross (change point of a Grashof-neutral linkage, a loop folding flat):\n"
                       "continue (default) on the branch that continues the incoming one analytically, stop there, or\n"
@@ -43,6 +46,7 @@ void AddBranchPointOption(CLI::App* command, std::string& value) {
 }
 
 BranchPointAction ParseBranchPointFlag(const std::string& text) {
+  using namespace sweep_report;
   if (text.empty()) return BranchPointAction::kContinue;
   if (const auto action = ParseBranchPointAction(text)) return *action;
   Complain("--at-branch-point must be continue, stop or switch, not '" + text + "'");
@@ -50,14 +54,17 @@ BranchPointAction ParseBranchPointFlag(const std::string& text) {
 }
 
 std::string FormatInput(const Mechanism& m, double input) {
+  using namespace sweep_report;
   return m.drive.input_name + " = " + FormatNumber(Shown(m, input)) + (m.InputIsAngle() ? " deg" : "");
 }
 
 void ReportSingularPoints(const std::string& file, const Mechanism& m, const std::vector<SingularPoint>& points) {
+  using namespace sweep_report;
   for (const SingularPoint& p : points) Complain(file + ": " + Describe(m, p));
 }
 
 void ReportSweep(const std::string& file, const Mechanism& m, const SweepEvents& sweep) {
+  using namespace sweep_report;
   for (const std::string& note : sweep.notes) Complain(file + ": " + note);
   ReportSingularPoints(file, m, sweep.singular_points);
   std::string flagged;
@@ -75,6 +82,7 @@ void ReportSweep(const std::string& file, const Mechanism& m, const SweepEvents&
 }
 
 nlohmann::json SingularPointsJson(const Mechanism& m, const std::vector<SingularPoint>& points) {
+  using namespace sweep_report;
   nlohmann::json list = nlohmann::json::array();
   for (const SingularPoint& p : points) {
     nlohmann::json joints = nlohmann::json::array();
@@ -87,6 +95,7 @@ nlohmann::json SingularPointsJson(const Mechanism& m, const std::vector<Singular
 }
 
 nlohmann::json SweepEventsJson(const Mechanism& m, const SweepEvents& sweep) {
+  using namespace sweep_report;
   nlohmann::json gaps = nlohmann::json::array();
   for (const InputInterval& g : sweep.gaps) gaps.push_back({{"from", Shown(m, g.from)}, {"to", Shown(m, g.to)}});
   return {{"singular_points", SingularPointsJson(m, sweep.singular_points)},

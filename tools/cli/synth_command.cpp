@@ -19,6 +19,7 @@
 #include <thread>
 
 namespace koppel::cli {
+namespace synth_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -357,8 +358,10 @@ void RunMzc(const Args& args) {
 }
 
 }  // namespace
+}  // namespace synth_command
 
 void AddSynthCommand(CLI::App& app) {
+  using namespace synth_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("synth", "Synthesis: dead-centre synthesis, design charts, Meyer zur Capellen linkages, least-squares fitting.");
   cmd->require_subcommand(1);

@@ -11,6 +11,7 @@
 #include <iostream>
 
 namespace koppel::cli {
+namespace synth_function_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -75,8 +76,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace synth_function_command
 
 void AddFunctionSubcommand(CLI::App& synth) {
+  using namespace synth_function_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = synth.add_subcommand(
       "function",

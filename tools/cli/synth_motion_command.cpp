@@ -14,6 +14,7 @@
 #include <iostream>
 
 namespace koppel::cli {
+namespace synth_motion_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -177,8 +178,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace synth_motion_command
 
 void AddMotionSubcommand(CLI::App& synth) {
+  using namespace synth_motion_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = synth.add_subcommand(
       "motion",

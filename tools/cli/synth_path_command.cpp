@@ -17,6 +17,7 @@
 #include <cmath>
 
 namespace koppel::cli {
+namespace synth_path_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -88,8 +89,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace synth_path_command
 
 void AddPathSubcommand(CLI::App& synth) {
+  using namespace synth_path_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = synth.add_subcommand(
       "path",

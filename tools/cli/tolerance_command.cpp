@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 namespace koppel::cli {
+namespace tolerance_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -121,8 +122,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace tolerance_command
 
 void AddToleranceCommand(CLI::App& app) {
+  using namespace tolerance_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "tolerance",

@@ -7,6 +7,7 @@
 #include "koppel/plot/view_page.hpp"
 
 namespace koppel::cli {
+namespace view_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
@@ -44,8 +45,10 @@ void Run(const Args& args) {
 }
 
 }  // namespace
+}  // namespace view_command
 
 void AddViewCommand(CLI::App& app) {
+  using namespace view_command;
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "view",

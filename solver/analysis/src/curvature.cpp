@@ -1,14 +1,12 @@
 #include "koppel/analysis/curvature.hpp"
 
+#include "koppel/core/plane.hpp"
 #include "pose_walk.hpp"
 
 #include <cmath>
 
 namespace koppel {
 namespace {
-
-Eigen::Vector2d Perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
-double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // Below this fraction of its scale a length or rate counts as zero: roundoff of Taylor
 // coefficients good to ~1e-14, with room for cancellation.

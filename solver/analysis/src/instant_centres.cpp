@@ -1,5 +1,6 @@
 #include "koppel/analysis/instant_centres.hpp"
 
+#include "koppel/core/plane.hpp"
 #include "pose_walk.hpp"
 
 #include <Eigen/Geometry>
@@ -8,9 +9,6 @@
 
 namespace koppel {
 namespace {
-
-// J v: v turned by +90 degrees.
-Eigen::Vector2d Perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
 // A pole farther than this many L is at infinity: a relative turn rate of 1e-9 of the velocities
 // is the roundoff of transfer functions good to ~1e-14, amplified by near-cancellation.

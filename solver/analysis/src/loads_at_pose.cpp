@@ -1,21 +1,10 @@
 #include "koppel/analysis/loads_at_pose.hpp"
 
+#include "koppel/core/plane.hpp"
+
 #include <cmath>
 
 namespace koppel {
-namespace {
-
-Eigen::Vector2d Rotate(double theta, const Eigen::Vector2d& v) {
-  const double c = std::cos(theta), s = std::sin(theta);
-  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
-}
-
-Eigen::Vector2d Perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }  // k x v
-
-double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-}  // namespace
-
 PoseMotion::PoseMotion(const ConstraintSystem& system, const Eigen::MatrixXd& series, double metres_per_unit)
     : system_(system),
       series_(series),

@@ -15,8 +15,6 @@ namespace {
 // Columns of the order-3 sweep of the single output: s, s', s'', s'''.
 constexpr int kS = 0, kS1 = 1, kS2 = 2;
 
-bool SignChange(double d0, double d1) { return d0 == 0.0 || (d0 > 0) != (d1 > 0); }
-
 // Bisections of a sign change of s'': the bracket shrinks to 1e-15 of a step; near a multiple
 // root the sign is roundoff sooner, and any input there is as flat as the function can tell.
 constexpr int kBisections = 50;

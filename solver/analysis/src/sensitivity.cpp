@@ -6,16 +6,6 @@
 #include <cmath>
 
 namespace koppel {
-namespace {
-
-// The difference a - b wrapped to (-pi, pi].
-double Wrapped(double difference) {
-  const double r = std::remainder(difference, 2 * kPi);
-  return r <= -kPi ? r + 2 * kPi : r;
-}
-
-}  // namespace
-
 bool Perturb(const MechanismBuilder& builder, const std::vector<double>& p, Perturbations* out, double relative_step) {
   const size_t n = p.size();
   out->plus.resize(n);
@@ -61,7 +51,7 @@ void OutputSensitivity(const PositionSolver& solver, const Eigen::VectorXd& q, d
     for (int c = 0; c < comps; ++c) {
       // the output's own dependence on p at the fixed pose, plus its change along dq/dp
       const double change = sp.Output(output, first_component + c, q.data()) - sm.Output(output, first_component + c, q.data());
-      (*d)(c, j) = (angle ? Wrapped(change) : change) / (2 * h) + OutputDirectional(solver.system(), output, first_component + c, q, dq);
+      (*d)(c, j) = (angle ? WrapToHalfTurn(change) : change) / (2 * h) + OutputDirectional(solver.system(), output, first_component + c, q, dq);
     }
   }
 }

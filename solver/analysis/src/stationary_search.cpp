@@ -23,8 +23,6 @@ constexpr double kConstantOutput = 1e-12;
 // Whole turns tried for the period of a rotating drive (as ranges.hpp's max_turns).
 constexpr int kMaxTurns = 4;
 
-bool SignChange(double d0, double d1) { return d0 == 0.0 || (d0 > 0) != (d1 > 0); }
-
 // A sign change of y' between two samples; `closing`: the second is sample 0 one period on.
 struct Bracket {
   int first = 0, second = 0;

@@ -21,6 +21,10 @@
 
 namespace koppel {
 
+// y' changes sign between two neighbouring samples d0, d1 (or is zero at the first): a root of y'
+// lies between them.
+inline bool SignChange(double d0, double d1) { return d0 == 0.0 || (d0 > 0) != (d1 > 0); }
+
 struct StationarySearch {
   SweepResult sweep;  // of order 2, over the range asked for
   int column = -1;    // the output's column in sweep.outputs; y' and y'' follow it

@@ -14,12 +14,6 @@
 namespace koppel {
 namespace {
 
-// The difference a - b wrapped to (-pi, pi].
-double Wrapped(double difference) {
-  const double r = std::remainder(difference, 2 * kPi);
-  return r <= -kPi ? r + 2 * kPi : r;
-}
-
 // SplitMix64 (Steele, Lea, Flood 2014): a small generator whose every seed gives an independent
 // stream, so sample k draws from (seed, k) alone.
 class Random {
@@ -100,7 +94,7 @@ std::vector<double> RunSamples(const MechanismBuilder& builder, const std::vecto
             Eigen::VectorXd q = poses[row].q;
             if (!solver.Correct(poses[row].input, q).ok()) continue;
             const double y = solver.system().Output(o.output, o.component, q.data());
-            values[row * n + k] = angle ? nominal_y[row] + Wrapped(y - nominal_y[row]) : y;
+            values[row * n + k] = angle ? nominal_y[row] + WrapToHalfTurn(y - nominal_y[row]) : y;
           }
         }
         done.fetch_add(1);

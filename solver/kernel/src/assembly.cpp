@@ -13,20 +13,12 @@
 namespace koppel {
 namespace {
 
-// An assembled pose with a pivot gauge above this is taken as regular without an SVD.
-constexpr double kRegularPivotRatio = 1e-3;
 // Singular values of J_c S below this fraction of the largest count as zero for the rank: far
 // above roundoff (1e-16), far below the smallest singular value of a regular pose of a real
 // mechanism (1e-3 and up).
 constexpr double kRankThreshold = 1e-9;
 // A joint's share of the left null space below this fraction of the largest counts as zero.
-constexpr double kJointShare = 1e-6;
-
-std::string FormatInput(const Mechanism& m, double input) {
-  char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "%s = %.10g", m.drive.input_name.c_str(), m.InputIsAngle() ? RadToDeg(input) : input);
-  return std::string(buffer) + (m.InputIsAngle() ? " deg" : "");
-}
+constexpr double kRedundantJointShare = 1e-6;
 
 bool Regular(PositionSolver& solver, const Eigen::VectorXd& q) {
   return solver.PivotRatio() > kRegularPivotRatio || ReciprocalCondition(solver.system(), q) >= kSingularRowRcond;
@@ -91,6 +83,12 @@ bool SearchPeriod(const Mechanism& m, PositionSolver& solver, double* input, Eig
 }
 
 }  // namespace
+
+std::string FormatInput(const Mechanism& m, double input) {
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "%s = %.10g", m.drive.input_name.c_str(), m.InputIsAngle() ? RadToDeg(input) : input);
+  return std::string(buffer) + (m.InputIsAngle() ? " deg" : "");
+}
 
 Assembly AssembleRegular(const Mechanism& m, PositionSolver& solver, const ContinuationOptions& options) {
   Assembly a;
@@ -163,7 +161,7 @@ MobilityReport CheckMobility(const Mechanism& m) {
       largest = std::max(largest, share[k]);
     }
     for (size_t k = 0; k < m.joints.size(); ++k) {
-      if (share[k] > kJointShare * largest) r.redundant.push_back(static_cast<int>(k));
+      if (share[k] > kRedundantJointShare * largest) r.redundant.push_back(static_cast<int>(k));
     }
   }
   if (r.rank_mobility != 1) {

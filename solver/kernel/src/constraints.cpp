@@ -1,15 +1,10 @@
 #include "koppel/solver/constraints.hpp"
 
+#include "koppel/core/plane.hpp"
+
 #include <cmath>
 
 namespace koppel {
-namespace {
-
-// v turned by +90 degrees: the derivative of R(theta) v with respect to theta.
-Eigen::Vector2d Perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
-
-}  // namespace
-
 Expected<TransmissionGeometry> ResolveTransmission(const Mechanism& m, const Output& o) {
   using Result = Expected<TransmissionGeometry>;
   TransmissionGeometry g;

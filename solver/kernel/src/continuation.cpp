@@ -2,6 +2,7 @@
 
 #include "hermite.hpp"
 #include "koppel/core/angles.hpp"
+#include "koppel/solver/singular.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,10 +13,6 @@
 namespace koppel {
 namespace {
 
-// A pose whose pivot gauge is above this is taken as regular without an SVD: on mechanism
-// Jacobians the pivot ratio of partial pivoting tracks the reciprocal condition within a modest
-// factor, and rows are flagged only three decades further down.
-constexpr double kRegularPivotRatio = 1e-3;
 // A pose examined at a stall is near a singular position below this reciprocal condition.
 constexpr double kNearSingularRcond = 1e-3;
 // Taylor order at the two ends of a branch-point window: orders up to 3 are accurate at both

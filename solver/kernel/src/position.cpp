@@ -1,5 +1,7 @@
 #include "koppel/solver/position.hpp"
 
+#include "koppel/core/plane.hpp"
+
 #include <Eigen/Cholesky>
 
 #include <algorithm>
@@ -7,11 +9,6 @@
 
 namespace koppel {
 namespace {
-
-Eigen::Vector2d Rotate(double theta, const Eigen::Vector2d& v) {
-  const double c = std::cos(theta), s = std::sin(theta);
-  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
-}
 
 // Guesses tried for links whose angle the hint leaves open.
 constexpr int kAssemblyAttempts = 12;

@@ -22,7 +22,7 @@ constexpr double kLimitResidual = 1e-12;
 
 // A joint's share of a left singular vector below this fraction of the largest counts as zero:
 // the vector is exact to about 1e-10 at a located singular point.
-constexpr double kJointShare = 1e-4;
+constexpr double kSingularJointShare = 1e-4;
 
 Eigen::VectorXd ColumnScale(const ConstraintSystem& system) {
   Eigen::VectorXd scale = Eigen::VectorXd::Ones(system.NumCoordinates());
@@ -44,7 +44,7 @@ std::vector<int> JointsOf(const ConstraintSystem& system, const Eigen::VectorXd&
   const double largest = *std::max_element(share.begin(), share.end());
   std::vector<int> joints;
   for (int k = 0; k < n_joints; ++k) {
-    if (share[k] > kJointShare * largest) joints.push_back(k);
+    if (share[k] > kSingularJointShare * largest) joints.push_back(k);
   }
   return joints;
 }

@@ -11,12 +11,6 @@
 namespace koppel {
 namespace {
 
-std::string FormatInput(const Mechanism& m, double input) {
-  char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "%s = %.10g", m.drive.input_name.c_str(), m.InputIsAngle() ? RadToDeg(input) : input);
-  return std::string(buffer) + (m.InputIsAngle() ? " deg" : "");
-}
-
 std::string FormatInterval(const Mechanism& m, double a, double b) {
   char buffer[48];
   std::snprintf(buffer, sizeof buffer, "%.10g", m.InputIsAngle() ? RadToDeg(b) : b);

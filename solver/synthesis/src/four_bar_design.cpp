@@ -1,14 +1,12 @@
 #include "koppel/synthesis/four_bar_design.hpp"
 
 #include "koppel/core/build.hpp"
+#include "koppel/core/plane.hpp"
 
 #include <cmath>
 
 namespace koppel {
 namespace {
-
-double Angle(const Eigen::Vector2d& v) { return std::atan2(v.y(), v.x()); }
-double Cross(const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); }
 
 // A global point in the body frame (origin, angle).
 Eigen::Vector2d Local(const Eigen::Vector2d& global, const Eigen::Vector2d& origin, double angle) {
@@ -39,11 +37,11 @@ Mechanism DesignedFourBar(const FourBarGeometry& g, const std::string& name) {
   Revolute(m, "B", "coupler", "rocker");
   Revolute(m, "B0", "frame", "rocker");
   // joint angle of A0 = the crank's angle against +x; the input reads `input` in this pose
-  const double crank_angle = Angle(g.a - g.a0);
+  const double crank_angle = Direction(g.a - g.a0);
   SetDrive(m, "A0", crank_angle - g.input.value_or(crank_angle));
   PointOutput(m, "P", "coupler", "P");
   LinkAngleOutput(m, "theta", "coupler");
-  const double rocker_angle = Angle(g.b - g.b0);
+  const double rocker_angle = Direction(g.b - g.b0);
   LinkAngleOutput(m, "psi", "rocker").offset = rocker_angle - g.psi.value_or(rocker_angle);
   TransmissionOutput(m, "mu", "coupler", "B");
   HintInput(m, g.input.value_or(crank_angle));
@@ -62,7 +60,7 @@ std::optional<Eigen::Vector2d> FourBarJointB(const Eigen::Vector2d& a, const Eig
   // law of cosines in the triangle A B B0: the angle at A between A -> B0 and A -> B
   const double cos_gamma = (b * b + r * r - c * c) / (2 * std::abs(b) * r);
   if (!(cos_gamma >= -1 && cos_gamma <= 1)) return std::nullopt;
-  const double gamma = Angle(d) + branch * std::acos(cos_gamma);
+  const double gamma = Direction(d) + branch * std::acos(cos_gamma);
   return Eigen::Vector2d(a + std::abs(b) * Eigen::Vector2d(std::cos(gamma), std::sin(gamma)));
 }
 

@@ -181,12 +181,12 @@ FunctionDesign Refused(FunctionDesign& design, FunctionStatus status, std::strin
 }
 
 using Build = std::function<std::optional<Mechanism>(const Dimensions&)>;
-using Usable = std::function<bool(const Dimensions&)>;
+using UsableDimensions = std::function<bool(const Dimensions&)>;
 
 // More precision points than unknowns: the least-squares design polished on the true output
 // through the solver, kept when the fit assembles over the whole input range.
 void PolishByFit(const FunctionRequest& r, const std::vector<double>& phi, const std::vector<double>& out, const Build& build,
-                 const Usable& usable, Dimensions& dim, FunctionDesign& design) {
+                 const UsableDimensions& usable, Dimensions& dim, FunctionDesign& design) {
   const MechanismBuilder builder = [&](const std::vector<double>& v) -> Expected<Mechanism> {
     const std::optional<Mechanism> built = build({v[0], v[1], v[2]});
     if (!built) return Expected<Mechanism>::Error("does not close at the first precision point");
@@ -324,7 +324,7 @@ FunctionDesign SynthesiseFunction(const FunctionRequest& r) {
   }
   const Build build = [&](const Dimensions& d) { return four_bar ? FourBarAt(d, r.frame, phi[0], branch) : SliderCrankAt(d, phi[0], branch); };
   const double size = four_bar ? r.frame : std::abs(r.output_to - r.output_from);
-  const Usable usable = [&](const Dimensions& d) {
+  const UsableDimensions usable = [&](const Dimensions& d) {
     return std::min({std::abs(d.a), std::abs(d.b), four_bar ? std::abs(d.third) : 1e300}) > kShortestLink * size;
   };
   if (!usable(dim) || !build(dim))

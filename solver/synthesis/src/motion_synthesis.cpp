@@ -3,6 +3,7 @@
 #include "koppel/analysis/extremes.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/core/build.hpp"
+#include "koppel/core/plane.hpp"
 #include "koppel/solver/position.hpp"
 #include "koppel/solver/sweep.hpp"
 #include "koppel/synthesis/four_bar_design.hpp"
@@ -26,7 +27,6 @@ constexpr double kPoseTolerance = 1e-9;
 // them (a four-bar's mu has at most two stationary points and two folds a turn), Newton refines.
 constexpr double kMuStep = kPi / 180;
 
-double Angle(const Eigen::Vector2d& v) { return std::atan2(v.y(), v.x()); }
 double Positive(double angle) {
   const double r = std::fmod(angle, 2 * kPi);
   return r < 0 ? r + 2 * kPi : r;
@@ -104,7 +104,7 @@ MotionFourBar AnalyseMotionFourBar(const std::vector<Pose>& poses, const Dyad& c
   std::vector<int> branch(n);
   for (int j = 0; j < n; ++j) {
     const Eigen::Vector2d aj = MovePoint(poses[0], poses[j], a), bj = MovePoint(poses[0], poses[j], b);
-    phi[j] = Angle(aj - a0);
+    phi[j] = Direction(aj - a0);
     branch[j] = FourBarBranch(aj, bj, b0);
     const std::optional<double> error = PoseErrorAssembledAt(m, poses, j, a, b, phi[j], size);
     if (!error) {

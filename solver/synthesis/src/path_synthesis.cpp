@@ -1,6 +1,7 @@
 #include "koppel/synthesis/path_synthesis.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/plane.hpp"
 #include "koppel/synthesis/fit.hpp"
 
 #include "path_prepolish.hpp"
@@ -93,7 +94,6 @@ double Scale(const std::vector<Eigen::Vector2d>& points) {
   return s;
 }
 
-double Angle(const Eigen::Vector2d& v) { return std::atan2(v.y(), v.x()); }
 
 // The four-bar of the fit's unknowns: A0, B0, a, b, c, K (in the coupler frame), at crank angle
 // phi on `branch`.
@@ -112,7 +112,7 @@ struct Placement {
     g.b = *b;
     g.b0 = b0;
     g.plane_origin = a + v[7] * u + v[8] * left;
-    g.plane_angle = Angle(u);
+    g.plane_angle = Direction(u);
     return g;
   }
 };
@@ -150,11 +150,11 @@ std::optional<Placed> Place(const AtlasIndex& atlas, const Candidate& c, const P
   const Eigen::Vector2d a = place(curve.a[hint]), b = place(curve.b[hint]), kh = k[hint];
   const Eigen::Vector2d u = (b - a).normalized(), left(-u.y(), u.x());
   Placed out;
-  out.placement.phi = Angle(a - a0);
+  out.placement.phi = Direction(a - a0);
   out.placement.branch = FourBarBranch(a, b, b0) >= 0 ? 1 : -1;
   out.unknowns = {a0.x(), a0.y(), b0.x(), b0.y(), (a - a0).norm(), (b - a).norm(), (b - b0).norm(), (kh - a).dot(u), (kh - a).dot(left)};
   for (const Eigen::Vector2d& p : request.points) {
-    const double phi = Angle(place(curve.a[nearest(p)]) - a0);
+    const double phi = Direction(place(curve.a[nearest(p)]) - a0);
     out.inputs.push_back(out.placement.phi + AngleDifference(phi, out.placement.phi));
   }
   out.error = PrePolish(request.points, out.placement.branch, &out.unknowns, &out.inputs);

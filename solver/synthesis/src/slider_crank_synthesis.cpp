@@ -21,8 +21,8 @@ namespace {
 constexpr double kCentric = 1e-12;
 // A coupler longer than the crank by less than this fraction of the stroke, or an offset below
 // it, counts as degenerate (the coupler folds onto the crank).
-constexpr double kVanishing = 1e-6;
-constexpr int kSearchSamples = 4000;
+constexpr double kVanishingLength = 1e-6;
+constexpr int kOffsetSamples = 4000;
 
 // theta = |phi0 - 180 deg|: the angle between the rays A0B_a and A0B_i.
 double Theta(const SliderCrankRequest& r) { return std::abs(r.phi0 - kPi); }
@@ -31,7 +31,7 @@ double OffsetSign(const SliderCrankRequest& r) { return r.phi0 < kPi ? 1.0 : -1.
 // The offset range that gives a crank: |e| < s0 cot theta (B_i at the foot point at the end).
 double OffsetMax(const SliderCrankRequest& r) { return r.stroke / std::tan(Theta(r)); }
 
-struct Geometry {
+struct SliderCrankGeometry {
   double offset = 0;  // |e|
   double x = 0;       // B_i's distance from the foot point along the slide
   double l1 = 0, l2 = 0, beta = 0;
@@ -39,10 +39,10 @@ struct Geometry {
 
 // B_i = (x, e), B_a = (x + s0, e) seen from A0 enclose theta: tan theta = e s0 / (x (x + s0) + e^2),
 // x = (-s0 + sqrt(s0^2 - 4 e^2 + 4 e s0 cot theta)) / 2. nullopt outside the offset range.
-std::optional<Geometry> FromOffset(const SliderCrankRequest& r, double offset) {
+std::optional<SliderCrankGeometry> FromOffset(const SliderCrankRequest& r, double offset) {
   const double s0 = r.stroke, theta = Theta(r);
   if (!(offset > 0 && theta > kCentric && offset < OffsetMax(r))) return std::nullopt;
-  Geometry g;
+  SliderCrankGeometry g;
   g.offset = offset;
   g.x = 0.5 * (-s0 + std::sqrt(s0 * s0 - 4 * offset * offset + 4 * offset * s0 / std::tan(theta)));
   if (!(g.x > 0)) return std::nullopt;
@@ -55,9 +55,9 @@ std::optional<Geometry> FromOffset(const SliderCrankRequest& r, double offset) {
 
 // seed 000: mu = 90 deg - |psi|, sin|psi| = |lambda cos phi + eps|, smallest with the crank
 // normal to the slide on the side away from it
-double ClosedFormMuMin(const Geometry& g) { return kPi / 2 - std::asin((g.l1 + g.offset) / g.l2); }
+double ClosedFormMuMin(const SliderCrankGeometry& g) { return kPi / 2 - std::asin((g.l1 + g.offset) / g.l2); }
 
-bool Degenerate(const Geometry& g, double s0) { return g.offset < kVanishing * s0 || g.l2 - g.l1 - g.offset < kVanishing * s0; }
+bool Degenerate(const SliderCrankGeometry& g, double s0) { return g.offset < kVanishingLength * s0 || g.l2 - g.l1 - g.offset < kVanishingLength * s0; }
 
 // A design not yet run, with the request and the ranges that give a crank.
 SliderCrankDesign Blank(const SliderCrankRequest& r) {
@@ -97,7 +97,7 @@ std::optional<SliderCrankDesign> CheckRequest(const SliderCrankRequest& r) {
   return std::nullopt;
 }
 
-SliderCrankDesign Prove(const SliderCrankRequest& r, const Geometry& g) {
+SliderCrankDesign Prove(const SliderCrankRequest& r, const SliderCrankGeometry& g) {
   SliderCrankDesign d = Blank(r);
   d.e = OffsetSign(r) * g.offset;
   d.l1 = g.l1;
@@ -145,7 +145,7 @@ SliderCrankDesign SliderCrankFromOffset(const SliderCrankRequest& r, double offs
   if (offset < 0 || !std::isfinite(offset))
     return Failed(r, DesignStatus::kInvalidRequest, "the offset is |e|, a distance (its side follows from phi0): give it positive");
   if (offset == 0) return Failed(r, DesignStatus::kNoDesign, "without offset phi0 is 180 deg: " + Ranges(r));
-  const std::optional<Geometry> g = FromOffset(r, offset);
+  const std::optional<SliderCrankGeometry> g = FromOffset(r, offset);
   if (!g) return Failed(r, DesignStatus::kNoDesign, fmt::format("|e| = {:.6g} gives no crank: {}", offset, Ranges(r)));
   if (Degenerate(*g, r.stroke)) return Failed(r, DesignStatus::kNoDesign, fmt::format("|e| = {:.6g} is at the end of the range: {}", offset, Ranges(r)));
   return Prove(r, *g);
@@ -164,13 +164,13 @@ SliderCrankDesign BestSliderCrank(const SliderCrankRequest& r) {
   // |e| = t s0 cot theta, t in (0, 1): mu_min -> 0 at both ends, so the maximum is inside
   const double e_max = OffsetMax(r);
   const DesignScore score = [&](double t) -> std::optional<double> {
-    const std::optional<Geometry> g = FromOffset(r, t * e_max);
+    const std::optional<SliderCrankGeometry> g = FromOffset(r, t * e_max);
     if (!g) return std::nullopt;
     return ClosedFormMuMin(*g);
   };
-  const std::optional<GridMaximum> best = MaximiseOnGrid(score, 0, 1, kSearchSamples, 1e-13);
+  const std::optional<GridMaximum> best = MaximiseOnGrid(score, 0, 1, kOffsetSamples, 1e-13);
   if (!best) return Failed(r, DesignStatus::kNoDesign, "no offset gives a slider-crank: " + Ranges(r));
-  const std::optional<Geometry> g = FromOffset(r, best->x * e_max);
+  const std::optional<SliderCrankGeometry> g = FromOffset(r, best->x * e_max);
   if (!g || Degenerate(*g, r.stroke))
     return Failed(r, DesignStatus::kBoundaryOptimum, "mu_min grows towards the end of the offset range: " + Ranges(r));
   return Prove(r, *g);

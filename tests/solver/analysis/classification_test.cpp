@@ -10,7 +10,7 @@
 
 #include <catch2/catch.hpp>
 
-namespace koppel {
+namespace koppel::classification_test {
 namespace {
 
 Mechanism FourBar(double a, double b, double c, double d) {
@@ -84,4 +84,4 @@ TEST_CASE("mobility: a five-bar with one drive is refused naming both numbers; a
   CHECK(plain.rank_mobility == 1);
 }
 
-}  // namespace koppel
+}  // namespace koppel::classification_test

@@ -11,7 +11,7 @@
 #include <optional>
 #include <string>
 
-namespace koppel {
+namespace koppel::coupler_curve_test {
 namespace {
 const double kL23 = 2.5 * std::sqrt(3.0);
 const double kKappa = std::acos(5.0 / 9.0 * std::sqrt(3.0));
@@ -132,4 +132,4 @@ TEST_CASE("a stretch must end after its start, within a turn", "[curve]") {
   CHECK_THAT(reversed.message, Catch::Contains("end after its start"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::coupler_curve_test

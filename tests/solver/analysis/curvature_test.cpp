@@ -13,7 +13,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::curvature_test {
 namespace {
 
 // Seed 003's crank-rocker (catalog/entries/mzc-crank-rocker.yaml): l1 = 1, l2 = l3 = 5/2 sqrt(3),
@@ -168,4 +168,4 @@ TEST_CASE("CurvatureAtInput walks to the input; an input beyond a limit point fa
   CHECK_FALSE(beyond.message.empty());
 }
 
-}  // namespace koppel
+}  // namespace koppel::curvature_test

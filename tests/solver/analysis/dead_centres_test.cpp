@@ -11,7 +11,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::dead_centres_test {
 namespace {
 // refined by Newton on s' to 1e-12 in the input; values then follow to roundoff
 constexpr double kRefined = 1e-11;
@@ -93,9 +93,9 @@ TEST_CASE("a crank-rocker's rocker dead centres are classified", "[deadcentres]"
   CHECK(r.stroke == Approx(std::abs(psi(l23 + 1) - psi(l23 - 1))).margin(1e-11));
 }
 
-}  // namespace koppel
+}  // namespace koppel::dead_centres_test
 
-namespace koppel {
+namespace koppel::dead_centres_test {
 
 // issue 22 item 1: the extended dead centre of a crank-rocker at input 0, put there by the drive's
 // zero (zero = phi_a from the law of cosines, the issue's repro-psi file): it was dropped.
@@ -168,4 +168,4 @@ TEST_CASE("a sign change of y' that does not refine is reported, not dropped", "
   CHECK(r.extremes.status == AnalysisStatus::kFailed);
 }
 
-}  // namespace koppel
+}  // namespace koppel::dead_centres_test

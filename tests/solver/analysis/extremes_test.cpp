@@ -12,7 +12,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::extremes_test {
 namespace {
 
 // Stationary points refined to 1e-12 in the input; folds to 1e-12 by Newton on the folded angle.
@@ -93,9 +93,9 @@ TEST_CASE("an output that turns with the drive has no extremes over whole turns"
   CHECK_THAT(r.message, Catch::Contains("turns with the drive"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::extremes_test
 
-namespace koppel {
+namespace koppel::extremes_test {
 
 // A parallelogram's coupler only translates: its angle is constant, with no isolated extreme.
 TEST_CASE("a constant output has itself as its extremes", "[extremes]") {
@@ -108,11 +108,11 @@ TEST_CASE("a constant output has itself as its extremes", "[extremes]") {
   CHECK(r.minimum.value == Approx(0).margin(1e-12));
 }
 
-}  // namespace koppel
+}  // namespace koppel::extremes_test
 
 #include "extremes_of_search.hpp"
 
-namespace koppel {
+namespace koppel::extremes_test {
 
 // The rule itself on a search made by hand: a sample beyond every candidate means an extreme was
 // missed between two samples (no sign change of y' showed it): no number rather than a wrong one.
@@ -147,4 +147,4 @@ TEST_CASE("extremes: a sample beyond the candidates fails the search", "[extreme
   CHECK(found.minimum.input == 0.0);
 }
 
-}  // namespace koppel
+}  // namespace koppel::extremes_test

@@ -12,7 +12,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::forces_test {
 namespace {
 
 // Drive torque against a closed form: both exact, so they agree to roundoff of sums of O(10)
@@ -482,4 +482,4 @@ TEST_CASE("invalid loads and a formula without a value are reported, not compute
   CHECK_THAT(r.message, Catch::Contains("frame"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::forces_test

@@ -12,7 +12,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::inertia_test {
 namespace {
 
 using test::SeriesAt;
@@ -86,4 +86,4 @@ TEST_CASE("inertia loads do the virtual work -(J_red phi'' + J_red' phi'^2 / 2);
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::inertia_test

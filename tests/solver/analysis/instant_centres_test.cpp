@@ -13,7 +13,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::instant_centres_test {
 namespace {
 
 struct Solved {
@@ -121,4 +121,4 @@ TEST_CASE("the fixed and moving centrodes: the coupler's pole at each input, in 
   CHECK((carried - p.position).norm() < 1e-9);
 }
 
-}  // namespace koppel
+}  // namespace koppel::instant_centres_test

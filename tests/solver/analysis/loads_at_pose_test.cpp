@@ -13,7 +13,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::loads_at_pose_test {
 namespace {
 
 using test::SeriesAt;
@@ -140,4 +140,4 @@ TEST_CASE("a damper's force follows the speed; a formula without a value is an e
   CHECK_THAT(applied.forces[1].force.y(), Catch::Matchers::WithinAbs(0.0, kExact * 100));
 }
 
-}  // namespace koppel
+}  // namespace koppel::loads_at_pose_test

@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::proportionality_test {
 
 TEST_CASE("proportional linkage reading example", "[proportionality]") {
   const Mechanism m = test::ProportionalLinkage(1.0, 0.5, 1.83);
@@ -56,4 +56,4 @@ TEST_CASE("proportionality over the whole range whatever the resolution", "[prop
   CHECK(p.delta_s == Approx(hi - lo).margin(1e-9));
 }
 
-}  // namespace koppel
+}  // namespace koppel::proportionality_test

@@ -12,7 +12,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::ranges_test {
 namespace {
 
 // limits are located to 1e-11 rad (continuation.hpp); the law of cosines is exact to roundoff
@@ -116,4 +116,4 @@ TEST_CASE("range options validate themselves", "[ranges]") {
   CHECK(r.status == RangeStatus::kInvalidOptions);
 }
 
-}  // namespace koppel
+}  // namespace koppel::ranges_test

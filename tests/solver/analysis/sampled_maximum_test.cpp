@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::sampled_maximum_test {
 namespace {
 
 // Brent to half the mantissa in the input: the value at a smooth maximum exact to roundoff.
@@ -65,4 +65,4 @@ TEST_CASE("a function that cannot be evaluated in a bracket gives no maximum", "
   CHECK_FALSE(RefineSampledMaximum({}, {}, [](double) -> std::optional<double> { return 0.0; }).ok);
 }
 
-}  // namespace koppel
+}  // namespace koppel::sampled_maximum_test

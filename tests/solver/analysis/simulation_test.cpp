@@ -12,7 +12,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::simulation_test {
 namespace {
 
 constexpr double kGravity = 9.81;
@@ -318,4 +318,4 @@ TEST_CASE("the run stops at a dead centre of the drive and refuses a mechanism w
   CHECK(r.bad_input);
 }
 
-}  // namespace koppel
+}  // namespace koppel::simulation_test

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-namespace koppel {
+namespace koppel::stationary_search_test {
 namespace {
 
 constexpr double kTurn = 2 * kPi;
@@ -253,4 +253,4 @@ TEST_CASE("dead centres and transmission extremes on the search boundary: 1000 r
   CHECK(periodic < 800);
 }
 
-}  // namespace koppel
+}  // namespace koppel::stationary_search_test

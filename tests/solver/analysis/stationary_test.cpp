@@ -9,7 +9,7 @@
 
 #include <catch2/catch.hpp>
 
-namespace koppel {
+namespace koppel::stationary_test {
 
 TEST_CASE("slider-crank dead centres: phi_a and phi_i to 1e-12 from nearby samples", "[stationary]") {
   for (double e : {0.0, 0.8, -0.8}) {
@@ -49,4 +49,4 @@ TEST_CASE("no stationary point where the output is monotonic", "[stationary]") {
   CHECK_FALSE(p.message.empty());
 }
 
-}  // namespace koppel
+}  // namespace koppel::stationary_test

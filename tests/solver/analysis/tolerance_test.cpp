@@ -11,7 +11,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::tolerance_test {
 namespace {
 
 // parameters l1, l2, e of seed 000's slider-crank (tests/support/mechanisms.hpp)
@@ -149,4 +149,4 @@ TEST_CASE("clearance is refused on a slide joint", "[tolerance]") {
   CHECK_THAT(r.message, Catch::Contains("not a revolute joint"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::tolerance_test

@@ -12,7 +12,7 @@
 
 #include <random>
 
-namespace koppel {
+namespace koppel::assembly_test {
 namespace {
 
 // The Peaucellier–Lipkin cell of catalog/entries/peaucellier-lipkin.yaml (crank O'C = k, arms
@@ -84,4 +84,4 @@ TEST_CASE("the stall test does not stop a run that converges slowly onto a singu
 }
 
 }  // namespace
-}  // namespace koppel
+}  // namespace koppel::assembly_test

@@ -10,7 +10,7 @@
 #include <numeric>
 #include <random>
 
-namespace koppel {
+namespace koppel::block_lu_test {
 namespace {
 
 // Dense LU of well-conditioned random matrices of size <= 40: solutions agree to a few hundred ulps.
@@ -134,4 +134,4 @@ TEST_CASE("block LU: a singular block gives a zero pivot; structurally singular 
   CHECK_FALSE(lu.Analyse(2, {0, 2}, {0, 1}));
 }
 
-}  // namespace koppel
+}  // namespace koppel::block_lu_test

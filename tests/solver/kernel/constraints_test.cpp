@@ -14,7 +14,7 @@
 #include <random>
 #include <string>
 
-namespace koppel {
+namespace koppel::constraints_test {
 namespace {
 
 // A slide-driven mechanism: the P drive row.
@@ -178,4 +178,4 @@ TEST_CASE("series residuals order by order: the coefficients of Residuals on Tay
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::constraints_test

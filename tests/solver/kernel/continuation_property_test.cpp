@@ -16,7 +16,7 @@
 #include <array>
 #include <random>
 
-namespace koppel {
+namespace koppel::continuation_property_test {
 namespace {
 
 // Rows vs closed form: both exact to roundoff; generic mechanisms keep J well away from
@@ -135,4 +135,4 @@ TEST_CASE("1000 random slider-cranks: every row on the assembly branch, every li
   CHECK(stats.limits > 200);
 }
 
-}  // namespace koppel
+}  // namespace koppel::continuation_property_test

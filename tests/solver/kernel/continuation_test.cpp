@@ -16,7 +16,7 @@
 #include <cmath>
 #include <functional>
 
-namespace koppel {
+namespace koppel::continuation_test {
 namespace {
 
 // The solver and the closed forms agree to roundoff; a pose next to a branch point comes from
@@ -284,4 +284,4 @@ TEST_CASE("continuation options validate themselves", "[continuation]") {
   CHECK(r.inputs.empty());
 }
 
-}  // namespace koppel
+}  // namespace koppel::continuation_test

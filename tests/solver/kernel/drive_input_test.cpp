@@ -14,7 +14,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::drive_input_test {
 namespace {
 
 // psi against the circle intersection: roundoff of both (1e-12), far below a wrong branch (O(1)).
@@ -150,4 +150,4 @@ TEST_CASE("a distance output through zero: its rows, the cells without a number 
   CHECK_THAT(r.message, Catch::Contains("output 'd' is not differentiable at phi = 0 deg"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::drive_input_test

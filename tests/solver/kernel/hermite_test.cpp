@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::hermite_test {
 namespace {
 
 // p(x) = sum c_k x^k for two components, and its Taylor coefficients at x0 (d^k p / dx^k / k!).
@@ -54,4 +54,4 @@ TEST_CASE("Hermite segment with orders 1 and 3 at its ends (the switch to anothe
   CHECK((got - TaylorAt(c, 0.05, 2)).cwiseAbs().maxCoeff() < 1e-12);
 }
 
-}  // namespace koppel
+}  // namespace koppel::hermite_test

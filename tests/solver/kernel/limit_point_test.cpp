@@ -14,7 +14,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::limit_point_test {
 namespace {
 
 // The limit's input against the closed form: roundoff, 1e-13 relative (the issue's figure; the
@@ -135,4 +135,4 @@ TEST_CASE("a slider-crank's limits (rod shorter than crank plus offset) to round
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::limit_point_test

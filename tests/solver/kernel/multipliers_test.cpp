@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::multipliers_test {
 namespace {
 
 // Statics of one link: sums of three terms of size ~10, exact up to roundoff.
@@ -93,4 +93,4 @@ TEST_CASE("no multipliers without a factorised pose", "[multipliers]") {
   CHECK_FALSE(JointReactions(solver, Eigen::VectorXd::Zero(3), Eigen::VectorXd::Zero(3), 1.0, &r));
 }
 
-}  // namespace koppel
+}  // namespace koppel::multipliers_test

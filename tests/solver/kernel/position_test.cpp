@@ -11,7 +11,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::position_test {
 namespace {
 
 const double kL23 = 2.5 * std::sqrt(3.0);
@@ -113,4 +113,4 @@ TEST_CASE("mobility: Grübler from the graph, the actual one from the Jacobian's
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::position_test

@@ -14,7 +14,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace koppel {
+namespace koppel::singular_test {
 namespace {
 
 // The parallelogram 1, 3, 1, 3 with every link lined up along x at phi = pi: crank (0, 0, pi),
@@ -93,4 +93,4 @@ TEST_CASE("branch-point actions read and print", "[singular]") {
   CHECK(std::string(ToString(SingularKind::kLimitPoint)) == "limit");
 }
 
-}  // namespace koppel
+}  // namespace koppel::singular_test

@@ -52,7 +52,7 @@ void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
 
-namespace koppel {
+namespace koppel::sweep_allocation_test {
 
 TEST_CASE("a sweep allocates the same whether it has 361 or 3601 samples", "[sweep][allocation]") {
   const Mechanism m = test::ProportionalLinkage(1.0, 0.5, 1.83);  // 15 coordinates, two loops
@@ -71,4 +71,4 @@ TEST_CASE("a sweep allocates the same whether it has 361 or 3601 samples", "[swe
   CHECK(counts[0] == counts[1]);
 }
 
-}  // namespace koppel
+}  // namespace koppel::sweep_allocation_test

@@ -15,7 +15,7 @@
 #include <limits>
 #include <random>
 
-namespace koppel {
+namespace koppel::sweep_test {
 namespace {
 
 const double kL23 = 2.5 * std::sqrt(3.0);              // seed 003: l2 = l3 = 5/2 sqrt(3)
@@ -288,4 +288,4 @@ TEST_CASE("sample counts", "[sweep]") {
   CHECK(SampleCount(5, 5, 1) == 1);
 }
 
-}  // namespace koppel
+}  // namespace koppel::sweep_test

@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-namespace koppel {
+namespace koppel::taylor_test {
 namespace {
 // series coefficients are sums of a few products of O(1) numbers: roundoff level
 constexpr double kSeries = 1e-14;
@@ -60,9 +60,9 @@ TEST_CASE("wrapping an angle series shifts only its value", "[taylor]") {
   CHECK(w.c[1] == 2.0);
 }
 
-}  // namespace koppel
+}  // namespace koppel::taylor_test
 
-namespace koppel {
+namespace koppel::taylor_test {
 
 // The wrap's shortcuts against the IEEE remainder they stand for (exact, so equal bit for bit):
 // seeded random angles over several turns, and the edges of each shortcut.
@@ -85,4 +85,4 @@ TEST_CASE("WrapAngle gives std::remainder(x, 2 pi) exactly", "[taylor]") {
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::taylor_test

@@ -14,7 +14,7 @@
 #include <cstring>
 #include <random>
 
-namespace koppel {
+namespace koppel::atlas_file_test {
 namespace {
 
 constexpr std::size_t kHeaderBytes = 36, kEntryBytes = 132, kChecksumBytes = 8;  // atlas_file.hpp
@@ -135,4 +135,4 @@ TEST_CASE("ReadAtlasFile reads a file as ParseAtlas reads its bytes, and refuses
   CHECK_THROWS_AS(ReadAtlasFile(dir.path().string()), io::FileError);
 }
 
-}  // namespace koppel
+}  // namespace koppel::atlas_file_test

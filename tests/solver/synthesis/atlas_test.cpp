@@ -15,7 +15,7 @@
 #include <cmath>
 #include <complex>
 
-namespace koppel {
+namespace koppel::atlas_test {
 namespace {
 
 // Two descriptors of one curve sampled differently agree to this: the 64 points of equal arc
@@ -146,4 +146,4 @@ TEST_CASE("an atlas build reports its progress, rising to 1, from the calling th
   CHECK(reported.back() == 1.0);
 }
 
-}  // namespace koppel
+}  // namespace koppel::atlas_test

@@ -15,7 +15,7 @@
 #include <cmath>
 #include <random>
 
-namespace koppel {
+namespace koppel::burmester_test {
 namespace {
 
 constexpr double kRecovered = 1e-9;  // the issue's: the known four-bar among the answers to 1e-9
@@ -187,9 +187,9 @@ TEST_CASE("five poses: the known pivots are among the Ball-Burmester points, the
   CHECK(recovered == trials);
 }
 
-}  // namespace koppel
+}  // namespace koppel::burmester_test
 
-namespace koppel {
+namespace koppel::burmester_test {
 
 TEST_CASE("two poses: the centre point on the bisector turns the crank by the given angle", "[burmester]") {
   const std::vector<Pose> poses = {{{0, 0}, 0}, {{1, 0.5}, 0.4}};
@@ -203,4 +203,4 @@ TEST_CASE("two poses: the centre point on the bisector turns the crank by the gi
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::burmester_test

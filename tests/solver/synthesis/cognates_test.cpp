@@ -12,7 +12,7 @@
 #include <cmath>
 #include <complex>
 
-namespace koppel {
+namespace koppel::cognates_test {
 namespace {
 const double kL23 = 2.5 * std::sqrt(3.0);
 const double kKappa = std::acos(5.0 / 9.0 * std::sqrt(3.0));
@@ -99,4 +99,4 @@ TEST_CASE("cognates need a four-bar of R joints and a coupler point", "[cognates
   CHECK_FALSE(RobertsCognates(test::FourBar(1.0, kL23, kL23, 4.0, 1.0, 0.0, 1), {1, 1}).ok());  // a crank point
 }
 
-}  // namespace koppel
+}  // namespace koppel::cognates_test

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <optional>
 
-namespace koppel {
+namespace koppel::deadcentre_synthesis_test {
 namespace {
 
 constexpr double kReanalysed = 1e-9;  // the issue's tolerance; dead centres are refined to 1e-12
@@ -258,4 +258,4 @@ TEST_CASE("malformed dead-centre requests are invalid, impossible ones have no d
   CHECK(CrankRockerDesign{}.status == DesignStatus::kNotRun);
 }
 
-}  // namespace koppel
+}  // namespace koppel::deadcentre_synthesis_test

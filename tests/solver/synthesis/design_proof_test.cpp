@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::design_proof_test {
 
 TEST_CASE("re-analysis measures phi0, psi0 and mu_min; a design 1e-6 off is seen", "[synthesis]") {
   CrankRockerRequest r;
@@ -37,4 +37,4 @@ TEST_CASE("re-analysis measures phi0, psi0 and mu_min; a design 1e-6 off is seen
   CHECK_THAT(none.message, Catch::Contains("full turn") || Catch::Contains("assemble"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::design_proof_test

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <random>
 
-namespace koppel {
+namespace koppel::fit_model_test {
 namespace {
 
 // Central differences, h = 1e-6 max(1, |x|) (the house rule): truncation ~1e-12, roundoff of
@@ -101,4 +101,4 @@ TEST_CASE("fit model: the check rejects a deliberately wrong sensitivity", "[fit
   CHECK(JacobianError(model, {4.2, 4.3}, 2, 1.01) > 100 * kJacobianTolerance);
 }
 
-}  // namespace koppel
+}  // namespace koppel::fit_model_test

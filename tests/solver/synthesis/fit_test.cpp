@@ -11,7 +11,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::fit_test {
 namespace {
 
 const double kL23 = 2.5 * std::sqrt(3.0);
@@ -127,9 +127,9 @@ TEST_CASE("targets that cannot all be met: the fit says which and by how much", 
   CHECK(Fit(FourBarBuilder(), params, targets, options).ok());
 }
 
-}  // namespace koppel
+}  // namespace koppel::fit_test
 
-namespace koppel {
+namespace koppel::fit_test {
 
 TEST_CASE("dead-centre targets: a crank-rocker whose rocker has its dead centres where asked", "[fit]") {
   // reference: the dead-centre synthesis answer for phi0 = 164 deg, psi0 = 60 deg, beta = 30 deg has
@@ -161,9 +161,9 @@ TEST_CASE("dead-centre targets: a crank-rocker whose rocker has its dead centres
   CHECK(r.iterations < 25);
 }
 
-}  // namespace koppel
+}  // namespace koppel::fit_test
 
-namespace koppel {
+namespace koppel::fit_test {
 
 TEST_CASE("straight-line target: AK of seed 003 that makes K's path straightest around phi = 180", "[fit]") {
   // seed 003's K has six-point contact with its tangent at phi = 180 deg only for AK = 25/3
@@ -197,9 +197,9 @@ TEST_CASE("straight-line target: AK of seed 003 that makes K's path straightest 
   CHECK(r.targets[0].residual < 0.01 * start.targets[0].residual);
 }
 
-}  // namespace koppel
+}  // namespace koppel::fit_test
 
-namespace koppel {
+namespace koppel::fit_test {
 namespace {
 
 // A crank-rocker with a vertical frame line A0 = 0, B0 = (0, l4): its rocker swings on the left
@@ -374,4 +374,4 @@ TEST_CASE("fit options validate themselves", "[fit]") {
   CHECK(FitReport{}.status == FitStatus::kNotRun);
 }
 
-}  // namespace koppel
+}  // namespace koppel::fit_test

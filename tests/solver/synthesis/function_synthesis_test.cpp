@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-namespace koppel {
+namespace koppel::function_synthesis_test {
 namespace {
 
 constexpr double kExact = 1e-9;       // exact through the precision points: solver precision, far below 1e-9
@@ -258,4 +258,4 @@ TEST_CASE("function requests that make no mechanism are refused with a reason", 
   CHECK_THAT(d.message, Catch::Contains("defined"));
 }
 
-}  // namespace koppel
+}  // namespace koppel::function_synthesis_test

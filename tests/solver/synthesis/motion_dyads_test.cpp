@@ -10,7 +10,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::motion_dyads_test {
 namespace {
 
 std::vector<Pose> FivePoses() {
@@ -75,4 +75,4 @@ TEST_CASE("dyads: requests that do not fit the number of poses are invalid", "[m
   CHECK(DyadsForPoses({all[0], all[1], all[2], all[3]}, samples).status == BurmesterStatus::kInvalidRequest);
 }
 
-}  // namespace koppel
+}  // namespace koppel::motion_dyads_test

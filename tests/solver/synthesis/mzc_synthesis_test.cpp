@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::mzc_synthesis_test {
 
 TEST_CASE("lambda = 5/6: the document's dimensions and kappa", "[mzc]") {
   const double D = 2.0, f = 0.25 * std::sqrt(2.0) * std::sqrt(3.0) * D;  // the document's factor 1/4 sqrt2 sqrt3 D
@@ -59,4 +59,4 @@ TEST_CASE("the crank-rocker cognate of the lambda = 5/6 linkage is seed 003's, s
   CHECK(c.k_first / scale == Approx(25.0 / 3).epsilon(1e-9));
 }
 
-}  // namespace koppel
+}  // namespace koppel::mzc_synthesis_test

@@ -17,7 +17,7 @@
 #include <complex>
 #include <random>
 
-namespace koppel {
+namespace koppel::path_synthesis_test {
 namespace {
 
 constexpr double kMatched = 1e-6;  // the issue's: matched to 1e-6 after polishing
@@ -239,4 +239,4 @@ TEST_CASE("the same design: joints in order or reversed; a mirror image or a shi
   CHECK((kept[1].geometry.a0 - (*cognates)[1].a0).norm() == 0);
 }
 
-}  // namespace koppel
+}  // namespace koppel::path_synthesis_test

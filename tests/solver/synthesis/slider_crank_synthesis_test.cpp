@@ -12,7 +12,7 @@
 #include <cmath>
 #include <optional>
 
-namespace koppel {
+namespace koppel::slider_crank_synthesis_test {
 namespace {
 
 constexpr double kReanalysed = 1e-9;
@@ -134,4 +134,4 @@ TEST_CASE("slider-crank requests without a design are refused, with the reason",
   CHECK(SliderCrankDesign{}.status == DesignStatus::kNotRun);
 }
 
-}  // namespace koppel
+}  // namespace koppel::slider_crank_synthesis_test

@@ -12,6 +12,7 @@
 using namespace koppel;
 using Catch::Matchers::WithinAbs;
 
+namespace analyses_test {  // this file's own names, apart from the other tests' in a unity build
 namespace {
 constexpr double kClosedForm = 1e-9;  // the catalog entry's own tolerance against seed 000
 constexpr double kDeadCentre = 1e-8;  // dead centres are refined to 1e-12 in the input
@@ -120,3 +121,5 @@ TEST_CASE("Model::DrivableRanges: the triple rocker swings between its two limit
   CHECK_THAT(full.branches.at(0).period, WithinAbs(360, 1e-9));
   CHECK(crank.SingularPositions().empty());
 }
+
+}  // namespace analyses_test

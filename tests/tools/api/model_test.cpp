@@ -12,6 +12,7 @@
 using namespace koppel;
 using Catch::Matchers::WithinAbs;
 
+namespace model_test {  // this file's own names, apart from the other tests' in a unity build
 namespace {
 // the closed-form checks of the catalog entry ask 1e-9 of the solver; the API adds only a unit
 // conversion
@@ -137,3 +138,5 @@ TEST_CASE("Model::FromMechanism refuses an inconsistent mechanism", "[api]") {
   broken.name = "broken";
   CHECK_THROWS_AS(Model::FromMechanism(broken), InputError);
 }
+
+}  // namespace model_test

@@ -12,6 +12,7 @@
 using namespace koppel;
 using Catch::Matchers::WithinAbs;
 
+namespace synthesis_test {  // this file's own names, apart from the other tests' in a unity build
 namespace {
 constexpr double kReanalysis = 1e-7;  // dead centres refined to 1e-12; degrees and a sweep of 1 deg
 }  // namespace
@@ -192,3 +193,5 @@ TEST_CASE("FindCognates: seed 003's cognate frame, and cognate 2 traces the orig
   CHECK_THROWS_AS(FindCognates(original, "nowhere"), InputError);
   CHECK_THROWS_AS(FindCognates(Model::Load(test::CatalogEntryPath("slider-crank-offset")), "B"), InputError);  // not a four-bar of R joints
 }
+
+}  // namespace synthesis_test

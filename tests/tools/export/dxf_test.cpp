@@ -15,7 +15,7 @@
 #include <cmath>
 #include <sstream>
 
-namespace koppel {
+namespace koppel::dxf_test {
 namespace {
 
 // What a DXF holds, as dxflib reads it.
@@ -100,4 +100,4 @@ TEST_CASE("DXF of a drawing read back with dxflib", "[export][dxf]") {
   CHECK_THROWS_AS(plot::WriteDxf(failed, 0), std::invalid_argument);
 }
 
-}  // namespace koppel
+}  // namespace koppel::dxf_test

@@ -8,7 +8,7 @@
 
 #include <catch2/catch.hpp>
 
-namespace koppel {
+namespace koppel::export_test {
 TEST_CASE("export: a DXF, or no file and why", "[export]") {
   const Mechanism m = test::DoubleRocker();
   plot::WorkshopOptions o;
@@ -39,4 +39,4 @@ TEST_CASE("animate: a GIF of the frames asked for", "[export]") {
   CHECK_THROWS_AS(plot::AnimateGif(m, o, gif), std::invalid_argument);
 }
 
-}  // namespace koppel
+}  // namespace koppel::export_test

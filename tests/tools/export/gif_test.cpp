@@ -16,7 +16,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace koppel {
+namespace koppel::gif_test {
 namespace {
 
 // Each frame has its own colour table (a median cut of its changed pixels): the same picture in
@@ -133,4 +133,4 @@ TEST_CASE("GIF of seed 003's cycle read back with giflib", "[export][gif]") {
   CHECK_THROWS_AS(plot::RenderGif(plot::AnimationScene{}, o), std::invalid_argument);
 }
 
-}  // namespace koppel
+}  // namespace koppel::gif_test

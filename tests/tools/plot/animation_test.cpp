@@ -12,7 +12,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::animation_test {
 namespace {
 
 // The solver converges to 1e-12 of the length scale.
@@ -52,9 +52,9 @@ TEST_CASE("animation options: frames within the limit", "[plot][animation]") {
   CHECK_THROWS_AS(plot::AnimateCycle(m, Options(m, 0)), std::invalid_argument);
 }
 
-}  // namespace koppel
+}  // namespace koppel::animation_test
 
-namespace koppel {
+namespace koppel::animation_test {
 
 TEST_CASE("animation of a parallelogram: frames at its branch points have their poses", "[plot][animation]") {
   // the crank lines up with the frame at 0 and 180 deg: branch points the sweep passes through,
@@ -73,4 +73,4 @@ TEST_CASE("animation of a parallelogram: frames at its branch points have their 
       }
 }
 
-}  // namespace koppel
+}  // namespace koppel::animation_test

@@ -12,7 +12,7 @@
 #include <map>
 #include <string>
 
-namespace koppel {
+namespace koppel::chart_plot_test {
 namespace {
 
 // CIE L*a*b* (D65) of an sRGB colour "#rrggbb": IEC 61966-2-1's transfer function, then CIE 1976.
@@ -126,4 +126,4 @@ TEST_CASE("crank-rocker chart: every psi0 its own colour, lightness rising with 
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::chart_plot_test

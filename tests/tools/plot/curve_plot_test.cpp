@@ -14,7 +14,7 @@
 #include <cmath>
 #include <cstdlib>
 
-namespace koppel {
+namespace koppel::curve_plot_test {
 
 TEST_CASE("curve plot of seed 003: to scale, K_A/K_I/K_E on the independent curve, band of the stretch", "[plot]") {
   const double l1 = 1, l2 = 2.5 * std::sqrt(3.0), l4 = 4, k = 25.0 / 3, kappa = std::acos(5.0 / 9 * std::sqrt(3.0));
@@ -86,4 +86,4 @@ TEST_CASE("curve plot of seed 003: to scale, K_A/K_I/K_E on the independent curv
   CHECK(u_high - u_low == Approx(3.91).margin(0.005));  // seed 003's reading: L = 3.91 l1
 }
 
-}  // namespace koppel
+}  // namespace koppel::curve_plot_test

@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace koppel {
+namespace koppel::cycle_test {
 namespace {
 
 using Catch::Matchers::WithinAbs;
@@ -107,4 +107,4 @@ TEST_CASE("cycle samples: a rocker's curve is open", "[plot][cycle]") {
   CHECK(samples->curves[0].runs[0].size() == plot::kCycleSegments + 1);
 }
 
-}  // namespace koppel
+}  // namespace koppel::cycle_test

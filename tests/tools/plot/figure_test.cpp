@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-namespace koppel {
+namespace koppel::figure_test {
 
 TEST_CASE("NiceAxis covers the data with evenly spaced round ticks (random ranges)", "[plot]") {
   std::mt19937 random(14);
@@ -75,4 +75,4 @@ TEST_CASE("RenderFigure: one path per curve, gaps as separate subpaths, markers 
   }
 }
 
-}  // namespace koppel
+}  // namespace koppel::figure_test

@@ -13,7 +13,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::forces_plot_test {
 namespace {
 
 constexpr double l1 = 1, l2 = 2.6, e = 0.8, force = 100;
@@ -73,4 +73,4 @@ TEST_CASE("forces plot: a branch point breaks the torque curve and the picture i
   CHECK(plot::ForcesPlot(m, loads, options).status == plot::PlotStatus::kFailed);
 }
 
-}  // namespace koppel
+}  // namespace koppel::forces_plot_test

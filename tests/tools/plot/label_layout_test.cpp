@@ -5,7 +5,7 @@
 
 #include <catch2/catch.hpp>
 
-namespace koppel::plot {
+namespace koppel::plot::label_layout_test {
 namespace {
 
 bool AnyOverlap(const std::vector<PlacedLabel>& placed) {
@@ -77,4 +77,4 @@ TEST_CASE("box geometry", "[plot][labels]") {
   CHECK(TextBox("B_a", 12, {0, 0}).right > TextBox("B", 12, {0, 0}).right);
 }
 
-}  // namespace koppel::plot
+}  // namespace koppel::plot::label_layout_test

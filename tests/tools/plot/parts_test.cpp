@@ -16,7 +16,7 @@
 #include <map>
 #include <random>
 
-namespace koppel {
+namespace koppel::parts_test {
 namespace {
 
 using Vec = Eigen::Vector2d;
@@ -188,4 +188,4 @@ TEST_CASE("part sizes: defaults and the pin inside the plate", "[plot][parts]") 
   CHECK_THROWS_AS(plot::PartsAtPose(m, s.q, s.travel, plot::PartSizes{0.1, 0.2}), std::invalid_argument);
 }
 
-}  // namespace koppel
+}  // namespace koppel::parts_test

@@ -21,7 +21,7 @@
 #include <utility>
 #include <vector>
 
-namespace koppel {
+namespace koppel::scheme_test {
 namespace {
 
 // px coordinates are written with 2 decimals, transform entries with 3 to 6.
@@ -194,4 +194,4 @@ TEST_CASE("dead-centre overlays: no label covers another, each has its symbol or
   test::CheckLabelsLegible(Draw(crank_rocker, kPi, same, false).doc);
 }
 
-}  // namespace koppel
+}  // namespace koppel::scheme_test

@@ -9,7 +9,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace koppel {
+namespace koppel::svg_test {
 
 TEST_CASE("Num prints short numbers and refuses non-finite ones", "[plot]") {
   CHECK(plot::Num(1.0) == "1");
@@ -46,4 +46,4 @@ TEST_CASE("Svg refuses unbalanced groups", "[plot]") {
   CHECK_THROWS_AS(svg.Finish(), std::logic_error);
 }
 
-}  // namespace koppel
+}  // namespace koppel::svg_test

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <cstdlib>
 
-namespace koppel {
+namespace koppel::transfer_plot_test {
 namespace {
 
 // SVG coordinates carry two decimals: 0.005 px. On a 618 px wide 0..360 deg axis that is
@@ -147,4 +147,4 @@ TEST_CASE("mu plot of seed 000 marks mu_min = 90 deg - asin(lambda + eps) at phi
   CHECK(plot::MuPlot(m, wrong).status == plot::PlotStatus::kFailed);
 }
 
-}  // namespace koppel
+}  // namespace koppel::transfer_plot_test

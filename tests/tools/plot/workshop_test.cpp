@@ -11,7 +11,7 @@
 
 #include <cmath>
 
-namespace koppel {
+namespace koppel::workshop_test {
 namespace {
 
 // The solver converges to 1e-12 of the length scale.
@@ -52,4 +52,4 @@ TEST_CASE("workshop drawing beyond a limit: no pose, and why", "[plot][workshop]
   CHECK(ok.status == plot::PlotStatus::kComplete);
 }
 
-}  // namespace koppel
+}  // namespace koppel::workshop_test

@@ -14,7 +14,7 @@ constexpr std::array<const char*, 8> kPalette = {"#1f5fa8", "#c0392b", "#2e8b57"
 constexpr double kLeft = 78, kRight = 24, kTop = 34, kPanelTitle = 22, kBottom = 44;
 constexpr double kMaxEqualAspectHeight = 620, kLegendWidth = 150;
 
-const char* kStyle =
+const char* kFigureStyle =
     "<style>"
     "text{font-family:DejaVu Sans,Arial,sans-serif;font-size:12px;fill:#222}"
     ".title{font-size:15px;font-weight:bold}.panel-title{font-size:13px}"
@@ -214,7 +214,7 @@ std::string RenderFigure(const Figure& figure) {
     y = map.y0 + map.h + kBottom;
   }
   Svg svg(figure.width, y + 6);
-  svg.Defs(kStyle);
+  svg.Defs(kFigureStyle);
   svg.Rect(0, 0, figure.width, y + 6, {{"fill", "#fff"}});
   if (!figure.title.empty()) svg.Text({kLeft, 22}, figure.title, {{"class", "title"}});
   for (size_t i = 0; i < figure.panels.size(); ++i) DrawPanel(svg, figure.panels[i], maps[i], static_cast<int>(i));

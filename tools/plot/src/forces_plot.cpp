@@ -11,7 +11,7 @@ namespace koppel::plot {
 namespace {
 
 // As the other plots: a few thousand samples at most.
-constexpr int kMaxSamples = 20001;
+constexpr int kMaxForceSamples = 20001;
 
 // Stretches of consecutive rows that have forces, as (x, y) by `point`.
 template <class Point>
@@ -47,7 +47,7 @@ bool ForcesPlotOptions::IsValid(const Mechanism& m, std::string* why) const {
       return false;
     }
   }
-  return forces.IsValid(why) && RangeIsValid(forces.sweep, kMaxSamples, why);
+  return forces.IsValid(why) && RangeIsValid(forces.sweep, kMaxForceSamples, why);
 }
 
 PlotResult ForcesPlot(const Mechanism& m, const Loads& loads, const ForcesPlotOptions& options) {

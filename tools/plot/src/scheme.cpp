@@ -23,12 +23,12 @@ using Vec = Eigen::Vector2d;
 // Sizes of the symbols in px, independent of the mechanism's size.
 constexpr double kJointRadius = 4.5, kBlockLength = 30, kBlockWidth = 15, kMargin = 40, kCaption = 22;
 constexpr double kPivotHeight = 13, kPivotHalfWidth = 9, kHatch = 6, kArrowRadius = 26, kMarkRadius = 2.2;
-// Font sizes of the labels (as in kStyle): the label layout estimates their extent from them.
+// Font sizes of the labels (as in kSchemeStyle): the label layout estimates their extent from them.
 constexpr double kLabelFont = 13, kOverlayLabelFont = 12, kCaptionFont = 14;
 const char* kInk = "#1d2b3a";
 const char* kLinkFill = "#d3e2f1";
 
-const char* kStyle =
+const char* kSchemeStyle =
     "<style>"
     "text{font-family:DejaVu Sans,Arial,sans-serif;font-size:13px;fill:#1d2b3a}"
     ".caption{font-size:14px}.overlay-labels text{fill:#777;font-size:12px}"
@@ -82,7 +82,7 @@ class SchemeWriter {
   std::string Write() {
     PlaceAllLabels();
     Svg svg(scene_.width, height_);
-    svg.Defs(kStyle);
+    svg.Defs(kSchemeStyle);
     svg.Rect(0, 0, scene_.width, height_, {{"fill", "#fff"}});
     if (!scene_.trace.empty()) {
       std::vector<std::vector<Vec>> runs;

@@ -16,7 +16,7 @@ namespace koppel::plot {
 namespace {
 
 // Samples in a plot: a few thousand at most, more only bloat the file.
-constexpr int kMaxSamples = 20001;
+constexpr int kMaxTransferSamples = 20001;
 
 Axis InputAxis(const Mechanism& m, const SweepOptions& range) {
   const double a = ShownInput(m, range.from), b = ShownInput(m, range.to);
@@ -59,7 +59,7 @@ bool TransferPlotOptions::IsValid(const Mechanism& m, std::string* why) const {
     *why = "--order must be 0.." + std::to_string(kMaxOrder);
     return false;
   }
-  return RangeIsValid(range, kMaxSamples, why);
+  return RangeIsValid(range, kMaxTransferSamples, why);
 }
 
 PlotResult TransferPlot(const Mechanism& m, const TransferPlotOptions& options) {
@@ -121,7 +121,7 @@ bool MuPlotOptions::IsValid(const Mechanism& m, std::string* why) const {
     *why = "the mechanism has no transmission-angle output (add one: {transmission: {coupler: L, joint: J}})";
     return false;
   }
-  return RangeIsValid(range, kMaxSamples, why);
+  return RangeIsValid(range, kMaxTransferSamples, why);
 }
 
 PlotResult MuPlot(const Mechanism& m, const MuPlotOptions& options) {

@@ -9,7 +9,7 @@ namespace koppel::plot {
 
 namespace {
 
-WorkshopDrawing Failed(const std::string& message) {
+WorkshopDrawing FailedDrawing(const std::string& message) {
   WorkshopDrawing drawing;
   drawing.status = PlotStatus::kFailed;
   drawing.message = message;
@@ -22,10 +22,10 @@ WorkshopDrawing DrawWorkshop(const Mechanism& m, const WorkshopOptions& options)
   std::string why;
   if (!options.cycle.IsValid(&why)) throw std::invalid_argument("DrawWorkshop: " + why);
   const Expected<CycleSamples> samples = SampleCycle(m, options.cycle);
-  if (!samples) return Failed(samples.error());
+  if (!samples) return FailedDrawing(samples.error());
   const double input = options.at.value_or(m.hint.input);
   const Expected<Eigen::VectorXd> pose = PoseOnCycle(m, *samples, input);
-  if (!pose) return Failed("cannot reach " + InputName(m) + " = " + Num(ShownInput(m, input), 6) + ": " + pose.error());
+  if (!pose) return FailedDrawing("cannot reach " + InputName(m) + " = " + Num(ShownInput(m, input), 6) + ": " + pose.error());
   WorkshopDrawing drawing;
   drawing.input = input;
   drawing.range = samples->range;

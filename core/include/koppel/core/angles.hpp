@@ -13,6 +13,13 @@ inline constexpr double RadToDeg(double radians) { return radians * (180.0 / kPi
 // The signed difference a - b folded into [-pi, pi]: the only way koppel compares angles.
 inline double AngleDifference(double a, double b) { return std::remainder(a - b, 2.0 * kPi); }
 
+// The angle folded into (-pi, pi]: a difference of angles as the tolerance and sensitivity
+// reports give it (half a turn is +pi, never -pi).
+inline double WrapToHalfTurn(double radians) {
+  const double r = std::remainder(radians, 2 * kPi);
+  return r <= -kPi ? r + 2 * kPi : r;
+}
+
 // The angle folded into [0, 2 pi): how an input angle of a revolute drive is reported (a
 // rounding that would give 2 pi gives 0).
 inline double WrapToFullTurn(double radians) {

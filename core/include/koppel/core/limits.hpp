@@ -7,6 +7,9 @@
 
 namespace koppel {
 
+// A CSV reader (points, motor curves) lists this many problems of a file, then stops reading it.
+inline constexpr std::size_t kMaxReportedProblems = 20;
+
 // Samples of one sweep (analyze, deadcentres, curve, proportional): a step of 0.00036 deg over a
 // full turn; every sample keeps its pose and outputs, so more is gigabytes nobody reads.
 inline constexpr long kMaxSweepSamples = 1'000'000;

@@ -38,6 +38,10 @@ inline constexpr int kAssemblyProbesPerTurn = 72;
 inline constexpr int kAssemblyRandomStarts = 8;
 Assembly AssembleRegular(const Mechanism& mechanism, PositionSolver& solver, const ContinuationOptions& options = {});
 
+// A drive input as the notes and errors print it: "phi = 30 deg" (an R drive, in degrees) or
+// "s = 1.5" (a P drive, in the file's length), to 10 significant digits.
+std::string FormatInput(const Mechanism& mechanism, double input);
+
 // The mobility of a mechanism: the Grübler–Kutzbach count, and n - rank of the joints' equations
 // at a regular assembled pose (rank by SVD of J_c S, singular values below 1e-9 of the largest
 // counting as zero). A one-drive mechanism needs rank mobility 1.

@@ -43,6 +43,10 @@ inline constexpr double kBranchPointRcond = 1e-6;
 // a k-th order transfer function computed there through J^-1 may carry errors of order
 // eps / rcond^k.
 inline constexpr double kSingularRowRcond = 1e-6;
+// A pose whose pivot gauge (PositionSolver::PivotRatio) is above this is taken as regular without
+// an SVD: on mechanism Jacobians the pivot ratio of partial pivoting tracks the reciprocal
+// condition within a modest factor, and rows are flagged only three decades further down.
+inline constexpr double kRegularPivotRatio = 1e-3;
 
 // One singular position met by a sweep.
 struct SingularPoint {

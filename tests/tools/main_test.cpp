@@ -1,5 +1,6 @@
-// The program around the commands (tools/cli/main.cpp): --version, and Ceres' glog messages
-// kept off stderr, so that --quiet means a clean stderr and a failure is told once, by koppel.
+// The program around the commands (tools/cli/main.cpp): --version, and Ceres' glog messages kept
+// off stderr by the synthesis library itself (solver/synthesis/src/quiet_solver_log.cpp, so the
+// Python module gets the same), so that --quiet means a clean stderr and a failure is told once.
 #include "support/run.hpp"
 
 #include <catch2/catch.hpp>

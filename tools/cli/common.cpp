@@ -2,7 +2,7 @@
 
 #include "koppel/core/expression.hpp"
 #include "koppel/core/version.hpp"
-#include "koppel/solver/assembly.hpp"
+#include "koppel/api/admission.hpp"
 
 #include <fmt/core.h>
 
@@ -16,19 +16,17 @@ namespace koppel::cli {
 
 void Complain(const std::string& message) { std::cerr << "koppel: " << message << "\n"; }
 
+void PrintNotes(const std::string& path, const std::vector<std::string>& notes) {
+  for (const std::string& note : notes) Complain(path + ": note: " + note);
+}
+
 MechanismFile LoadMechanism(const std::string& path, const std::vector<std::string>& sets) {
   try {
     std::vector<std::pair<std::string, std::string>> overrides;
     for (const std::string& s : sets) overrides.push_back(ParseAssignment(s));
-    MechanismFile file = ReadMechanismFile(path, overrides);
-    // one drive needs mobility 1: anything else is a modelling error, not a solver failure
-    const MobilityReport mobility = CheckMobility(file.mechanism);
-    if (!mobility.ok()) {
-      Complain(path + ": " + mobility.error);
-      throw Exit{kExitBadInput};
-    }
-    if (!mobility.note.empty()) Complain(path + ": note: " + mobility.note);
-    return file;
+    AdmittedFile admitted = ReadAdmittedMechanism(path, overrides);
+    PrintNotes(path, admitted.notes);
+    return std::move(admitted.file);
   } catch (const InputError& e) {
     for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
     throw Exit{kExitBadInput};

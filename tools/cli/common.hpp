@@ -27,8 +27,8 @@ struct Exit {
   int code;
 };
 
-// Reads a mechanism file; `sets` are "NAME=VALUE" overrides. Bad input: diagnostics on stderr,
-// then Exit{2}.
+// Reads a mechanism file and admits it (ReadAdmittedMechanism: mobility 1); `sets` are
+// "NAME=VALUE" overrides. Bad input: diagnostics on stderr, then Exit{2}; notes on stderr.
 MechanismFile LoadMechanism(const std::string& path, const std::vector<std::string>& sets);
 
 // A number given on the command line as a formula ("5/6", "2*sqrt(3)"). Exit{2} on error.
@@ -112,6 +112,8 @@ struct MixedTable {
 
 // Prints "koppel: message" on stderr.
 void Complain(const std::string& message);
+// "koppel: PATH: note: ..." on stderr for each of a mechanism's admission notes.
+void PrintNotes(const std::string& path, const std::vector<std::string>& notes);
 
 // A point of the mechanism named on the command line by `flag` (--point K): a point output
 // (`K`), `link.point`, or a point name that only one link has. Exit{2} naming the flag and the

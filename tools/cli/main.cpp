@@ -5,23 +5,11 @@
 #include "koppel/core/file_error.hpp"
 #include "koppel/core/temporary_files.hpp"
 
-#include <glog/logging.h>
 
 #include <exception>
 #include <iostream>
 
 namespace {
-
-// Ceres logs through glog, also for expected outcomes ("Terminating: Residual and Jacobian
-// evaluation failed" where a start does not assemble) that koppel reports itself from the
-// solver's summary. glog is initialised once, to stderr (no log files), fatal messages only: no
-// "Logging before InitGoogleLogging" warnings, and a clean stderr with --quiet.
-void QuietSolverLogging(const char* program) {
-  FLAGS_logtostderr = true;
-  FLAGS_minloglevel = google::GLOG_FATAL;
-  FLAGS_stderrthreshold = google::GLOG_FATAL;
-  google::InitGoogleLogging(program);
-}
 
 int Run(int argc, char** argv) {
   CLI::App app{
@@ -79,7 +67,6 @@ int Run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  QuietSolverLogging(argv[0]);
   // SIGINT, SIGTERM, SIGHUP remove a half-written output's temporary file; SIGPIPE keeps its
   // default: a reader that closes the pipe early (| head) ends koppel quietly, as any filter
   koppel::io::RemoveTemporaryFilesOnSignals();

@@ -3,12 +3,13 @@
 namespace koppel::cli {
 
 Model LoadModel(const std::string& path, const std::vector<std::string>& sets) {
-  LoadMechanism(path, sets);  // the checks and messages every command gives
-  return Checked([&] {
+  Model model = Checked([&] {
     ParameterValues overrides;
     for (const std::string& s : sets) overrides.push_back(ParseAssignment(s));
-    return Model::Load(path, overrides);
+    return Model::Load(path, overrides);  // admitted as LoadMechanism admits
   });
+  PrintNotes(path, model.notes());
+  return model;
 }
 
 std::pair<std::string, double> NamedNumber(const std::string& flag, const std::string& text) {

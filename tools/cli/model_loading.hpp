@@ -1,5 +1,5 @@
-// A koppel::Model for a command: the file checked as every command checks it (LoadMechanism:
-// mobility, diagnostics on stderr, exit 2), and the API's InputError turned into the same exit.
+// A koppel::Model for a command: the file read and admitted by Model::Load (mobility 1, as
+// LoadMechanism), its notes on stderr, and the API's InputError turned into exit 2.
 #pragma once
 
 #include "common.hpp"

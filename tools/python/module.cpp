@@ -298,7 +298,8 @@ void BindModel(py::module_& m) {
       .def_static("load", [](const std::string& path, std::optional<py::dict> set) { return Model::Load(path, Overrides(set)); },
                   py::arg("path"), py::kw_only(), py::arg("set") = py::none(),
                   "Reads a mechanism file, or the catalog's entry when path is no file but a catalog id ('crank-rocker');\n"
-                  "set={'e': 0.8} overrides parameters (numbers or formulas). Raises koppel.InputError.")
+                  "set={'e': 0.8} overrides parameters (numbers or formulas). Raises koppel.InputError, also for a\n"
+                  "mechanism whose mobility is not 1 (one drive), as every koppel command refuses it.")
       .def_static("parse",
                   [](const std::string& text, const std::string& name, std::optional<py::dict> set) {
                     return Model::Parse(text, name, Overrides(set));
@@ -308,6 +309,7 @@ void BindModel(py::module_& m) {
       .def_property_readonly("name", &Model::name)
       .def_property_readonly("title", &Model::title)
       .def_property_readonly("path", &Model::path)
+      .def_property_readonly("notes", &Model::notes, "What admitting the mechanism noted (an overconstrained linkage that moves).")
       .def_property_readonly("input_name", &Model::input_name)
       .def_property_readonly("input_is_angle", &Model::input_is_angle)
       .def_property_readonly("outputs", &Model::output_names)

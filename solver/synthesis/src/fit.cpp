@@ -3,6 +3,7 @@
 #include "koppel/synthesis/fit.hpp"
 
 #include "fit_model.hpp"
+#include "quiet_solver_log.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
@@ -124,6 +125,7 @@ StartOutcome RunStart(const MechanismBuilder& builder, const TargetModel& model,
   solver_options.logging_type = ceres::SILENT;
   solver_options.minimizer_progress_to_stdout = false;
   ceres::Solver::Summary summary;
+  QuietSolverLog();
   ceres::Solve(solver_options, &problem, &summary);
   out.start.brief = summary.BriefReport();
   out.iterations = static_cast<int>(summary.iterations.size());

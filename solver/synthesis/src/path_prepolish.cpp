@@ -1,7 +1,8 @@
 #include "path_prepolish.hpp"
 
+#include "quiet_solver_log.hpp"
+
 #include <ceres/ceres.h>
-#include <glog/logging.h>
 
 #include <cmath>
 #include <limits>
@@ -28,17 +29,6 @@ struct PointResidual {
 };
 
 }  // namespace
-
-void QuietSolverLog() {
-  // Ceres reports a failed evaluation through glog on stderr; koppel's library never prints
-  // (the outcome is in its results), so only fatal messages are let through
-  static const bool quiet = [] {
-    FLAGS_minloglevel = google::GLOG_FATAL;
-    FLAGS_logtostderr = true;
-    return true;
-  }();
-  (void)quiet;
-}
 
 bool CouplerPointAt(const std::vector<double>& v, int branch, double phi, Eigen::Vector2d* point) {
   double r[2];
@@ -68,6 +58,7 @@ double PrePolish(const std::vector<Eigen::Vector2d>& points, int branch, std::ve
   options.num_threads = 1;
   options.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;
+  QuietSolverLog();
   ceres::Solve(options, &problem, &summary);
   if (!summary.IsSolutionUsable()) return std::numeric_limits<double>::infinity();
   return std::sqrt(2 * summary.final_cost / points.size());

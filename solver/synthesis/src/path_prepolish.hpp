@@ -16,9 +16,6 @@ namespace koppel {
 // start does not close the loop at every point).
 double PrePolish(const std::vector<Eigen::Vector2d>& points, int branch, std::vector<double>* unknowns, std::vector<double>* inputs);
 
-// Keeps Ceres' glog messages (failed evaluations) off stderr: once, for the whole process.
-void QuietSolverLog();
-
 // The coupler point of `unknowns` at crank angle phi on `branch`; false where the loop does not close.
 bool CouplerPointAt(const std::vector<double>& unknowns, int branch, double phi, Eigen::Vector2d* point);
 

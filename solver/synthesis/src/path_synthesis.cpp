@@ -330,7 +330,6 @@ bool PathRequest::IsValid(std::string* why) const {
 PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
   PathResult result;
   if (!request.IsValid(&result.message)) return result;
-  QuietSolverLog();
   const double scale = Scale(request.points);
   if (!(scale > 0)) {
     result.message = "the points coincide";

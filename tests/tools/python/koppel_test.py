@@ -49,6 +49,19 @@ class MechanismTest(unittest.TestCase):
             koppel.Mechanism.load("slider-crank-ofset")
         self.assertIn("did you mean 'slider-crank-offset'?", str(raised.exception))
 
+    def test_a_mechanism_of_mobility_2_is_refused_as_by_the_cli(self):
+        # issue 24: the admission rule is the library's (koppel/api/admission.hpp), not the CLI's
+        five_bar = os.path.join(DATA, "five-bar.yaml")
+        with self.assertRaises(koppel.InputError) as raised:
+            koppel.Mechanism.load(five_bar)
+        self.assertIn("mobility 2", str(raised.exception))
+        cli = subprocess.run([os.environ["KOPPEL_EXECUTABLE"], "analyze", five_bar], capture_output=True, text=True)
+        self.assertEqual(cli.returncode, 2)
+        self.assertIn("mobility 2", cli.stderr)
+        redundant = koppel.Mechanism.load(os.path.join(DATA, "redundant-parallelogram.yaml"))
+        self.assertEqual(len(redundant.notes), 1)
+        self.assertIn("overconstrained but consistent", redundant.notes[0])
+
     def test_version_is_the_cli_version(self):
         out = subprocess.run([os.environ["KOPPEL_EXECUTABLE"], "--version"], capture_output=True, text=True, check=True)
         self.assertEqual(out.stdout.strip(), "koppel " + koppel.__version__)

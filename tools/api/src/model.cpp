@@ -3,6 +3,7 @@
 #include "display.hpp"
 #include "model_impl.hpp"
 
+#include "koppel/api/admission.hpp"
 #include "koppel/catalog/mechanism_writer.hpp"
 #include "koppel/solver/assembly.hpp"
 #include "koppel/solver/continuation.hpp"
@@ -71,6 +72,7 @@ Model& Model::operator=(const Model& other) {
   copy->text = other.impl_->text;
   copy->overrides = other.impl_->overrides;
   copy->file = other.impl_->file;  // the pose is not copied: the copy assembles anew
+  copy->notes = other.impl_->notes;
   impl_ = std::move(copy);
   return *this;
 }
@@ -79,7 +81,9 @@ Model Model::Load(const std::string& path, const ParameterValues& set) {
   auto impl = std::make_unique<Impl>();
   impl->source = Impl::Source::kFile;
   impl->overrides = set;
-  impl->file = ReadMechanismFile(path, set);
+  AdmittedFile admitted = ReadAdmittedMechanism(path, set);
+  impl->file = std::move(admitted.file);
+  impl->notes = std::move(admitted.notes);
   return Model(std::move(impl));
 }
 
@@ -89,6 +93,7 @@ Model Model::Parse(const std::string& yaml, const std::string& name, const Param
   impl->text = yaml;
   impl->overrides = set;
   impl->file = ParseMechanismText(yaml, name, set);
+  impl->notes = AdmitMechanism(impl->file);
   return Model(std::move(impl));
 }
 
@@ -101,6 +106,7 @@ Model Model::FromMechanism(const Mechanism& mechanism) {
   impl->file.id = mechanism.name;
   impl->file.mechanism = mechanism;
   impl->file.sweep = mechanism.InputIsAngle() ? SweepDefaults{0, 360, 1} : SweepDefaults{};
+  impl->notes = AdmitMechanism(impl->file);
   return Model(std::move(impl));
 }
 
@@ -108,6 +114,7 @@ const std::string& Model::name() const { return impl_->file.id; }
 const std::string& Model::title() const { return impl_->file.title; }
 const std::string& Model::path() const { return impl_->file.path; }
 const Mechanism& Model::mechanism() const { return impl_->file.mechanism; }
+const std::vector<std::string>& Model::notes() const { return impl_->notes; }
 std::string Model::length_unit() const { return impl_->file.loads.LengthUnit(); }
 std::string Model::input_name() const { return mechanism().drive.input_name; }
 bool Model::input_is_angle() const { return mechanism().InputIsAngle(); }
@@ -137,8 +144,10 @@ void Model::Set(const std::string& name, const std::string& formula) {
   with.erase(std::remove_if(with.begin(), with.end(), same), with.end());
   with.emplace_back(name, formula);
   MechanismFile file = impl_->Read(with);  // throws InputError: nothing changed yet
+  std::vector<std::string> notes = AdmitMechanism(file);
   impl_->Forget();
   impl_->file = std::move(file);
+  impl_->notes = std::move(notes);
   impl_->overrides = std::move(with);
 }
 

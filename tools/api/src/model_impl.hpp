@@ -20,6 +20,7 @@ struct Model::Impl {
   std::string text;  // kText
   Overrides overrides;
   MechanismFile file;
+  std::vector<std::string> notes;  // AdmitMechanism's, for `file`
 
   std::unique_ptr<PositionSolver> solver;
   std::unique_ptr<Continuation> walk;

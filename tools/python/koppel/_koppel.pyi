@@ -81,6 +81,7 @@ class Mechanism:
     name: str
     title: str
     path: str
+    notes: List[str]  # what admitting the mechanism noted (mobility 1 is required: InputError otherwise)
     input_name: str
     input_is_angle: bool
     outputs: List[str]

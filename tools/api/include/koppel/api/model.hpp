@@ -144,7 +144,9 @@ enum class AtBranchPoint { kContinue, kStop, kSwitch };
 class Model {
  public:
   // Reads a mechanism file, or the catalog entry when `path` is no file but a catalog id
-  // ("crank-rocker", ResolveMechanismName); `set` overrides parameters as --set does. Throws InputError.
+  // ("crank-rocker", ResolveMechanismName); `set` overrides parameters as --set does. Throws
+  // InputError. Load, Parse, FromMechanism and Set admit only a mechanism of mobility 1 (one
+  // drive), as every command does (koppel/api/admission.hpp): InputError otherwise.
   static Model Load(const std::string& path, const ParameterValues& set = {});
   // The same from the text of a mechanism file; `name` stands for the file in messages.
   static Model Parse(const std::string& yaml, const std::string& name = "<string>", const ParameterValues& set = {});
@@ -162,6 +164,8 @@ class Model {
   const std::string& title() const;
   const std::string& path() const;    // the file read, or the name given to Parse
   const Mechanism& mechanism() const; // the model, radians inside (koppel/core/mechanism.hpp)
+  // What admitting the mechanism noted (an overconstrained linkage that moves all the same).
+  const std::vector<std::string>& notes() const;
   // The label of the file's length unit, as tables give it: "mm" for `units: {length: mm}`,
   // "length" when the file names none (Loads::LengthUnit).
   std::string length_unit() const;
@@ -178,7 +182,7 @@ class Model {
   std::vector<std::pair<std::string, double>> parameters() const;
   // Overrides one parameter (a formula over the others) and rebuilds the mechanism from the
   // file's text with every override so far; the pose is forgotten. InputError (model unchanged)
-  // for an unknown name or a mechanism that no longer reads.
+  // for an unknown name, a mechanism that no longer reads or that is no longer admitted.
   void Set(const std::string& name, const std::string& formula);
   void Set(const std::string& name, double value);
 

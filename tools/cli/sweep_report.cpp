@@ -2,6 +2,7 @@
 
 #include "common.hpp"
 
+#include "koppel/api/model.hpp"
 #include "koppel/core/angles.hpp"
 
 #include <fmt/core.h>
@@ -46,11 +47,12 @@ void AddBranchPointOption(CLI::App* command, std::string& value) {
 }
 
 BranchPointAction ParseBranchPointFlag(const std::string& text) {
-  using namespace sweep_report;
-  if (text.empty()) return BranchPointAction::kContinue;
-  if (const auto action = ParseBranchPointAction(text)) return *action;
-  Complain("--at-branch-point must be continue, stop or switch, not '" + text + "'");
-  throw Exit{kExitBadInput};
+  try {
+    return ParseAtBranchPoint(text);  // the words are the library's (koppel/api/model.hpp)
+  } catch (const InputError&) {
+    Complain("--at-branch-point must be continue, stop or switch, not '" + text + "'");
+    throw Exit{kExitBadInput};
+  }
 }
 
 std::string FormatInput(const Mechanism& m, double input) {

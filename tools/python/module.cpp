@@ -36,13 +36,6 @@ ParameterValues Overrides(const std::optional<py::dict>& set) {
   return values;
 }
 
-AtBranchPoint Action(const std::string& text) {
-  if (text == "continue") return AtBranchPoint::kContinue;
-  if (text == "stop") return AtBranchPoint::kStop;
-  if (text == "switch") return AtBranchPoint::kSwitch;
-  throw InputError({Diagnostic{"at_branch_point", 0, 0, "at_branch_point", "expected continue, stop or switch, found '" + text + "'"}});
-}
-
 py::array_t<double> Matrix(const SweepTable& t) {
   py::array_t<double> a({static_cast<py::ssize_t>(t.rows), static_cast<py::ssize_t>(t.columns.size())});
   std::copy(t.values.begin(), t.values.end(), a.mutable_data());
@@ -324,7 +317,7 @@ void BindModel(py::module_& m) {
       }, py::arg("name"), py::arg("value"), "Overrides one parameter (number or formula); the pose is forgotten.")
       .def("assemble", &Model::Assemble, py::arg("order") = 2, "Assembles at the file's hint: the current pose (a Pose).")
       .def("move_to",
-           [](Model& model, double input, int order, const std::string& at) { return model.MoveTo(input, order, Action(at)); },
+           [](Model& model, double input, int order, const std::string& at) { return model.MoveTo(input, order, ParseAtBranchPoint(at)); },
            py::arg("input"), py::arg("order") = 2, py::arg("at_branch_point") = "continue",
            "Drives along the branch to `input`; a failed Pose when a limit point lies between (it stays there).")
       .def_property_readonly("assembled", &Model::assembled)
@@ -332,7 +325,7 @@ void BindModel(py::module_& m) {
            [](const Model& model, std::optional<double> start, std::optional<double> stop, std::optional<double> step, int order,
               const std::string& at) {
              return model.Sweep(start.value_or(model.sweep_from()), stop.value_or(model.sweep_to()),
-                                step.value_or(model.sweep_step()), order, Action(at));
+                                step.value_or(model.sweep_step()), order, ParseAtBranchPoint(at));
            },
            py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
            py::arg("order") = 2, py::arg("at_branch_point") = "continue",
@@ -344,7 +337,7 @@ void BindModel(py::module_& m) {
            py::arg("output") = "", py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(),
            "Dead centres of a scalar output (default: the first) over the file's sweep, searched in steps of 1.")
       .def("range",
-           [](const Model& model, bool all_branches, const std::string& at) { return model.DrivableRanges(all_branches, Action(at)); },
+           [](const Model& model, bool all_branches, const std::string& at) { return model.DrivableRanges(all_branches, ParseAtBranchPoint(at)); },
            py::kw_only(), py::arg("all_branches") = false, py::arg("at_branch_point") = "continue",
            "Drivable ranges of the hint's branch (or of every branch koppel finds).")
       .def("singular_positions", [](const Model& model) { return SingularList(model.SingularPositions()); },

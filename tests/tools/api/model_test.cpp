@@ -140,3 +140,22 @@ TEST_CASE("Model::FromMechanism refuses an inconsistent mechanism", "[api]") {
 }
 
 }  // namespace model_test
+
+namespace model_test {
+
+TEST_CASE("ParseAtBranchPoint: the kernel's words, empty for continue, InputError naming the field otherwise", "[api]") {
+  // the reference is the kernel's own spelling (ToString), so the words cannot drift apart
+  for (const AtBranchPoint action : {AtBranchPoint::kContinue, AtBranchPoint::kStop, AtBranchPoint::kSwitch})
+    CHECK(ParseAtBranchPoint(ToString(action)) == action);
+  CHECK(ParseAtBranchPoint("") == AtBranchPoint::kContinue);
+  try {
+    (void)ParseAtBranchPoint("swap");
+    FAIL("accepted 'swap'");
+  } catch (const InputError& e) {
+    REQUIRE(e.diagnostics().size() == 1);
+    CHECK(e.diagnostics()[0].path == "at_branch_point");
+    CHECK_THAT(e.diagnostics()[0].message, Catch::Contains("'swap'"));
+  }
+}
+
+}  // namespace model_test

@@ -29,7 +29,7 @@ SweepOptions Options(const Model& model, double from, double to, double step, in
   options.to = InputInternal(m, to);
   options.step = InputInternal(m, step);
   options.order = order;
-  options.continuation.at_branch_point = Internal(action);
+  options.continuation.at_branch_point = action;
   if (std::string why; !options.IsValid(&why)) BadInput(model.path(), "from/to/step/order", why);
   return options;
 }
@@ -162,7 +162,7 @@ Ranges Model::DrivableRanges(bool all_branches, AtBranchPoint action) const {
   const Mechanism& m = mechanism();
   RangeOptions options;
   options.all_branches = all_branches;
-  options.continuation.at_branch_point = Internal(action);
+  options.continuation.at_branch_point = action;
   const RangeReport report = koppel::DrivableRanges(m, options);
   Ranges r;
   r.message = report.message;

@@ -43,15 +43,6 @@ std::vector<InputGap> Shown(const Mechanism& m, const std::vector<InputInterval>
   return shown;
 }
 
-BranchPointAction Internal(AtBranchPoint action) {
-  switch (action) {
-    case AtBranchPoint::kStop: return BranchPointAction::kStop;
-    case AtBranchPoint::kSwitch: return BranchPointAction::kSwitch;
-    case AtBranchPoint::kContinue: break;
-  }
-  return BranchPointAction::kContinue;
-}
-
 void BadInput(const std::string& file, const std::string& field, const std::string& message) {
   throw InputError({Diagnostic{file, 0, 0, field, message}});
 }

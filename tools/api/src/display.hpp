@@ -21,7 +21,6 @@ double InputShown(const Mechanism& mechanism, double input);     // deg for an R
 double InputInternal(const Mechanism& mechanism, double input);  // rad for an R drive
 std::vector<SingularPosition> Shown(const Mechanism& mechanism, const std::vector<SingularPoint>& points);
 std::vector<InputGap> Shown(const Mechanism& mechanism, const std::vector<InputInterval>& gaps);
-BranchPointAction Internal(AtBranchPoint action);
 
 // InputError naming the model's file and `field`.
 [[noreturn]] void BadInput(const std::string& file, const std::string& field, const std::string& message);

@@ -36,7 +36,7 @@ std::string NumberText(double value) {
 
 void Model::Impl::StartWalk(const Assembly& assembly, AtBranchPoint action) {
   ContinuationOptions options;
-  options.at_branch_point = Internal(action);
+  options.at_branch_point = action;
   walk = std::make_unique<Continuation>(*solver, options);
   walk_action = action;
   walk->Start(assembly.input, assembly.q);
@@ -58,6 +58,12 @@ PoseResult Model::Impl::Pose(int order) {
   r.singular = walk->AtSingularPose();
   DisplayRow(m, layout, walk->input(), outputs.data(), r.valid_order, r.singular, r.values.data());
   return r;
+}
+
+AtBranchPoint ParseAtBranchPoint(const std::string& word) {
+  if (word.empty()) return AtBranchPoint::kContinue;
+  if (const std::optional<BranchPointAction> action = ParseBranchPointAction(word)) return *action;
+  throw InputError({Diagnostic{"at_branch_point", 0, 0, "at_branch_point", "expected continue, stop or switch, found '" + word + "'"}});
 }
 
 Model::Model(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -113,6 +119,7 @@ Model Model::FromMechanism(const Mechanism& mechanism) {
 const std::string& Model::name() const { return impl_->file.id; }
 const std::string& Model::title() const { return impl_->file.title; }
 const std::string& Model::path() const { return impl_->file.path; }
+
 const Mechanism& Model::mechanism() const { return impl_->file.mechanism; }
 const std::vector<std::string>& Model::notes() const { return impl_->notes; }
 std::string Model::length_unit() const { return impl_->file.loads.LengthUnit(); }

@@ -22,6 +22,7 @@
 #include "koppel/api/tolerance.hpp"
 #include "koppel/catalog/mechanism_file.hpp"  // InputError, Diagnostic
 #include "koppel/core/mechanism.hpp"
+#include "koppel/solver/singular.hpp"  // BranchPointAction
 
 #include <memory>
 #include <optional>
@@ -138,8 +139,13 @@ struct Ranges {
   std::string Brief() const;
 };
 
-// What a sweep does at a branch point (see --at-branch-point).
-enum class AtBranchPoint { kContinue, kStop, kSwitch };
+// What a sweep does at a branch point (see --at-branch-point): the kernel's own choice, so that
+// the words and their meaning are written once (koppel/solver/singular.hpp).
+using AtBranchPoint = BranchPointAction;
+// The action a word names ("continue", "stop", "switch"; empty: continue). InputError naming the
+// field `at_branch_point` for any other word. The CLI's --at-branch-point and the Python
+// module's at_branch_point= both read it here.
+AtBranchPoint ParseAtBranchPoint(const std::string& word);
 
 class Model {
  public:

@@ -8,24 +8,11 @@
 #include "koppel/plot/plots.hpp"
 #include "koppel/plot/sampled_run.hpp"
 #include "koppel/plot/scheme.hpp"
+#include "koppel/plot/svg.hpp"
 
 namespace koppel::cli {
 namespace catalog_page {  // this file's own names, apart from the other commands' in a unity build
 namespace {
-
-std::string Escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 SweepOptions CardRange(const CatalogEntry& e, int order) {
   const CatalogCard& c = *e.file.card;
@@ -86,12 +73,12 @@ std::string EntryHtml(const CatalogEntry& e, const std::string& text_page, std::
   std::string figures = Scheme(e, problems);
   for (const std::string& o : c.outputs) figures += OutputPlot(e, o, problems);
   std::string notes;
-  for (const std::string& p : *problems) notes += "<li>" + Escape(p) + "</li>";
-  return "<!DOCTYPE html>\n<html lang=\"de\"><head><meta charset=\"utf-8\"><title>" + Escape(e.file.id) +
+  for (const std::string& p : *problems) notes += "<li>" + plot::EscapeXml(p) + "</li>";
+  return "<!DOCTYPE html>\n<html lang=\"de\"><head><meta charset=\"utf-8\"><title>" + plot::EscapeXml(e.file.id) +
          "</title>\n<style>body{font-family:sans-serif;max-width:60em;margin:2em auto}svg{max-width:100%;height:auto;"
-         "display:block;margin:1em 0}pre{white-space:pre-wrap}</style></head><body>\n<h1>" + Escape(c.title_de) + "</h1>\n<h2>" +
-         Escape(c.title_en) + "</h2>\n" + (notes.empty() ? "" : "<p>Not everything could be drawn:</p><ul>" + notes + "</ul>\n") +
-         figures + "\n<pre>" + Escape(text_page) + "</pre>\n</body></html>\n";
+         "display:block;margin:1em 0}pre{white-space:pre-wrap}</style></head><body>\n<h1>" + plot::EscapeXml(c.title_de) + "</h1>\n<h2>" +
+         plot::EscapeXml(c.title_en) + "</h2>\n" + (notes.empty() ? "" : "<p>Not everything could be drawn:</p><ul>" + notes + "</ul>\n") +
+         figures + "\n<pre>" + plot::EscapeXml(text_page) + "</pre>\n</body></html>\n";
 }
 
 }  // namespace koppel::cli

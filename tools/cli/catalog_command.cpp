@@ -3,12 +3,14 @@
 #include "commands.hpp"
 #include "common.hpp"
 
+#include "koppel/api/catalog.hpp"
 #include "koppel/catalog/classes.hpp"
 #include "koppel/catalog/figure_quantities.hpp"
 #include "koppel/core/structure.hpp"
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <iostream>
 
 namespace koppel::cli {
@@ -168,48 +170,43 @@ void PrintEntries(const std::vector<const CatalogEntry*>& entries, const Catalog
   WriteOutput(args.out, TextTable(rows) + fmt::format("{} entries\n", entries.size()));
 }
 
-std::optional<CountRange> Range(const std::string& flag, const std::string& text) {
-  using namespace catalog_command;
-  if (text.empty()) return std::nullopt;
-  auto r = CountRange::Parse(text);
-  if (!r) {
-    Complain(flag + ": expected a count like 4 or a range like 4..6, found '" + text + "'");
-    throw Exit{kExitBadInput};
-  }
-  return r;
-}
+std::optional<std::string> Given(const std::string& text) { return text.empty() ? std::nullopt : std::optional(text); }
 
+// The flags as the API's query; its rule (koppel/api/catalog.hpp: ToFeatureQuery) makes the
+// catalog's query, and a field it refuses is named as the flag it came from.
 FeatureQuery QueryOf(const CatalogArgs& args) {
   using namespace catalog_command;
-  FeatureQuery q;
-  q.links = Range("--links", args.links);
-  q.binary = Range("--binary", args.binary);
-  q.ternary = Range("--ternary", args.ternary);
-  q.quaternary = Range("--quaternary", args.quaternary);
-  q.joints = Range("--joints", args.joints);
-  q.revolute = Range("--revolute", args.revolute);
-  q.prismatic = Range("--prismatic", args.prismatic);
-  q.drives = Range("--drives", args.drives);
-  q.drives_at_frame = Range("--drives-at-frame", args.drives_at_frame);
-  q.outputs = Range("--outputs", args.outputs);
-  q.outputs_at_frame = Range("--outputs-at-frame", args.outputs_at_frame);
-  if (args.kind == "transfer") q.kind = CardKind::kTransfer;
-  else if (args.kind == "guidance") q.kind = CardKind::kGuidance;
-  else if (!args.kind.empty()) {
-    Complain("--kind must be transfer or guidance");
-    throw Exit{kExitBadInput};
-  }
-  if (!args.klass.empty() && !IsCatalogClass(args.klass)) {
-    std::vector<std::string> names;
-    for (const CatalogClass& c : CatalogClasses()) names.push_back(c.name);
-    Complain("--class: unknown class '" + args.klass + "' (classes: " + Join(names, ", ") + ")");
-    throw Exit{kExitBadInput};
-  }
+  CatalogQuery q;
+  q.links = Given(args.links);
+  q.binary = Given(args.binary);
+  q.ternary = Given(args.ternary);
+  q.quaternary = Given(args.quaternary);
+  q.joints = Given(args.joints);
+  q.revolute = Given(args.revolute);
+  q.prismatic = Given(args.prismatic);
+  q.drives = Given(args.drives);
+  q.drives_at_frame = Given(args.drives_at_frame);
+  q.outputs = Given(args.outputs);
+  q.outputs_at_frame = Given(args.outputs_at_frame);
+  q.kind = args.kind;
   q.klass = args.klass;
   q.motion = args.motion;
   q.text = args.text;
-  if (!args.like.empty()) q.like = LoadMechanism(args.like, {}).mechanism;
-  return q;
+  q.like = args.like;
+  try {
+    return ToFeatureQuery(q);
+  } catch (const InputError& e) {
+    for (const Diagnostic& d : e.diagnostics()) {
+      if (d.file != "catalog query") {  // the --like mechanism's own diagnostics
+        std::cerr << d.ToString() << "\n";
+        continue;
+      }
+      std::string flag = "--" + d.path;
+      std::replace(flag.begin(), flag.end(), '_', '-');
+      Complain(flag + ": " + d.message);
+    }
+    throw Exit{kExitBadInput};
+  }
 }
 
 void RunFind(const CatalogArgs& args, bool all) {

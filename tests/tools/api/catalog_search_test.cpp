@@ -2,6 +2,9 @@
 // mechanisms the hits load (their joints counted independently).
 #include "koppel/api/catalog.hpp"
 
+#include "koppel/catalog/classes.hpp"
+#include "support/temp_file.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -25,4 +28,38 @@ TEST_CASE("FindInCatalog: four links with one prismatic joint, counted again fro
   CHECK(offset);
   q.links = "four";
   CHECK_THROWS_AS(FindInCatalog(q, KOPPEL_CATALOG_DIR), InputError);
+}
+
+TEST_CASE("ToFeatureQuery: the one rule that turns a query's text into the catalog's query", "[api]") {
+  // references: the catalog's own class list (CatalogClasses), the five-bar's hand count
+  // (3 (5 - 1) - 2 * 5 = 2 with 1 drive), the crank-rocker entry's chain (a four-bar)
+  CatalogQuery q;
+  q.drives_at_frame = "1";
+  q.outputs_at_frame = "0..1";
+  q.klass = CatalogClasses().front().name;
+  q.like = "crank-rocker";
+  const FeatureQuery f = ToFeatureQuery(q);
+  REQUIRE(f.drives_at_frame.has_value());
+  REQUIRE(f.outputs_at_frame.has_value());
+  REQUIRE(f.like.has_value());
+  CHECK(f.like->links.size() == 4);
+  CHECK(f.klass == q.klass);
+
+  auto field_refused = [](const CatalogQuery& bad) {
+    try {
+      (void)ToFeatureQuery(bad);
+    } catch (const InputError& e) {
+      return e.diagnostics().front().path;
+    }
+    return std::string("admitted");
+  };
+  CatalogQuery bad_count;
+  bad_count.drives_at_frame = "one";
+  CHECK(field_refused(bad_count) == "drives_at_frame");
+  CatalogQuery bad_class;
+  bad_class.klass = "crank-roker";
+  CHECK(field_refused(bad_class) == "class");
+  CatalogQuery mobility_two;
+  mobility_two.like = test::TestDataPath("five-bar.yaml");
+  CHECK(field_refused(mobility_two) == "drive");
 }

@@ -2,7 +2,9 @@
 
 #include "display.hpp"
 
+#include "koppel/api/admission.hpp"
 #include "koppel/catalog/catalog.hpp"
+#include "koppel/catalog/classes.hpp"
 
 namespace koppel {
 
@@ -24,7 +26,7 @@ std::optional<CountRange> Range(const char* field, const std::optional<std::stri
 
 std::string CatalogDirectory() { return DefaultCatalogDirectory(); }
 
-std::vector<CatalogHit> FindInCatalog(const CatalogQuery& q, const std::string& directory) {
+FeatureQuery ToFeatureQuery(const CatalogQuery& q) {
   FeatureQuery query;
   query.links = Range("links", q.links);
   query.binary = Range("binary", q.binary);
@@ -34,7 +36,9 @@ std::vector<CatalogHit> FindInCatalog(const CatalogQuery& q, const std::string& 
   query.revolute = Range("revolute", q.revolute);
   query.prismatic = Range("prismatic", q.prismatic);
   query.drives = Range("drives", q.drives);
+  query.drives_at_frame = Range("drives_at_frame", q.drives_at_frame);
   query.outputs = Range("outputs", q.outputs);
+  query.outputs_at_frame = Range("outputs_at_frame", q.outputs_at_frame);
   if (q.kind == "transfer") {
     query.kind = CardKind::kTransfer;
   } else if (q.kind == "guidance") {
@@ -42,9 +46,20 @@ std::vector<CatalogHit> FindInCatalog(const CatalogQuery& q, const std::string& 
   } else if (!q.kind.empty()) {
     api_detail::BadInput("catalog query", "kind", "expected transfer or guidance, found '" + q.kind + "'");
   }
+  if (!q.klass.empty() && !IsCatalogClass(q.klass)) {
+    std::string names;
+    for (const CatalogClass& c : CatalogClasses()) names += std::string(names.empty() ? "" : ", ") + c.name;
+    api_detail::BadInput("catalog query", "class", "unknown class '" + q.klass + "' (classes: " + names + ")");
+  }
   query.klass = q.klass;
   query.motion = q.motion;
   query.text = q.text;
+  if (!q.like.empty()) query.like = ReadAdmittedMechanism(q.like, {}).file.mechanism;
+  return query;
+}
+
+std::vector<CatalogHit> FindInCatalog(const CatalogQuery& q, const std::string& directory) {
+  const FeatureQuery query = ToFeatureQuery(q);
   const Catalog catalog = Catalog::Load(directory.empty() ? DefaultCatalogDirectory() : directory);
   std::vector<CatalogHit> hits;
   for (const CatalogEntry* e : FindEntries(catalog, query)) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "koppel/api/model.hpp"
+#include "koppel/catalog/catalog.hpp"  // FeatureQuery
 
 #include <optional>
 #include <string>
@@ -21,11 +22,18 @@ struct CatalogHit {
 // Counts are ranges as at the CLI: "4", "4..6", "..6", "4..".
 struct CatalogQuery {
   std::optional<std::string> links, binary, ternary, quaternary, joints, revolute, prismatic, drives, outputs;
+  std::optional<std::string> drives_at_frame, outputs_at_frame;
   std::string kind;    // "transfer", "guidance", ...; empty: any
   std::string klass;   // a class such as "slider-crank"; empty: any
   std::string motion;  // e.g. "rotation -> translation"; empty: any
   std::string text;    // case-insensitive part of the id or a title; empty: any
+  std::string like;    // a mechanism file or catalog id: entries with its kinematic chain; empty: any
 };
+
+// The catalog library's query for `query`: every count parsed, the kind and the class checked, the
+// `like` mechanism read and admitted (ReadAdmittedMechanism). InputError naming the field (as
+// spelt in CatalogQuery) otherwise. The one place where a query's text becomes a query.
+FeatureQuery ToFeatureQuery(const CatalogQuery& query);
 
 // The default catalog: $KOPPEL_CATALOG, else the one installed with koppel (share/koppel/catalog),
 // else the source tree's. InputError for an unreadable catalog or a malformed query.

@@ -21,6 +21,21 @@ const char* TypeLetter(JointType type) { return type == JointType::kRevolute ? "
   throw InputError({Diagnostic{file, line, 0, path, message}});
 }
 
+// An equation's verdict from its worst deviation over the sweep: not computed when the sweep
+// is not complete; `skipped` samples at singular poses are said in the detail.
+CheckOutcome EquationVerdict(const SweepResult& sweep, int skipped, CheckOutcome r) {
+  if (!sweep.complete()) {
+    r.status = CheckStatus::kNotComputed;
+    r.detail = sweep.message;
+  } else {
+    r.status = r.worst <= r.tolerance ? CheckStatus::kPassed : CheckStatus::kFailed;
+    if (skipped > 0)
+      r.detail += (r.detail.empty() ? "" : " ") + std::string("(") + std::to_string(skipped) +
+                  " samples at singular poses not compared: the order is not computable there)";
+  }
+  return r;
+}
+
 void RunEquations(const MechanismFile& file, const CatalogCard& card, const std::string& variant,
                   std::vector<CheckOutcome>& out) {
   if (card.equations.empty()) return;
@@ -75,19 +90,7 @@ void RunEquations(const MechanismFile& file, const CatalogCard& card, const std:
       }
     }
   }
-  for (size_t i = 0; i < results.size(); ++i) {
-    CheckOutcome& r = results[i];
-    if (!sweep.complete()) {
-      r.status = CheckStatus::kNotComputed;
-      r.detail = sweep.message;
-    } else {
-      r.status = r.worst <= r.tolerance ? CheckStatus::kPassed : CheckStatus::kFailed;
-      if (skipped[i] > 0)
-        r.detail += (r.detail.empty() ? "" : " ") + std::string("(") + std::to_string(skipped[i]) +
-                    " samples at singular poses not compared: the order is not computable there)";
-    }
-    out.push_back(r);
-  }
+  for (size_t i = 0; i < results.size(); ++i) out.push_back(EquationVerdict(sweep, skipped[i], results[i]));
 }
 
 }  // namespace

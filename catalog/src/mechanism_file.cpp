@@ -196,43 +196,53 @@ class MechanismReader {
           if (j.link_a >= 0 && j.link_a == j.link_b) r_.Error(links, Child(path, "links"), owner + " joins a link to itself");
         }
       }
-      std::string point_a = e.key, point_b = e.key;
-      YAML::Node point_node_a = e.key_node, point_node_b = e.key_node;
-      std::string path_a = path, path_b = path;
-      if (const YAML::Node points = e.value["points"]; points.IsDefined()) {
-        if (!points.IsSequence() || points.size() != 2) {
-          r_.Error(points, Child(path, "points"), owner + ": expected two point names [on a, on b]");
-        } else {
-          point_a = r_.Text(points[0], Index(Child(path, "points"), 0)).value_or("");
-          point_b = r_.Text(points[1], Index(Child(path, "points"), 1)).value_or("");
-          point_node_a = points[0];
-          point_node_b = points[1];
-          path_a = Index(Child(path, "points"), 0);
-          path_b = Index(Child(path, "points"), 1);
-        }
-      }
-      j.point_a = PointIndex(j.link_a, point_a, point_node_a, path_a, owner);
-      j.point_b = PointIndex(j.link_b, point_b, point_node_b, path_b, owner);
-      if (const YAML::Node axis = e.value["axis"]; axis.IsDefined()) {
-        if (j.type != JointType::kPrismatic) r_.Error(axis, Child(path, "axis"), owner + ": only a P joint has an axis");
-        if (auto v = r_.Vector(axis, Child(path, "axis"))) {
-          if (v->norm() < 1e-12) {
-            r_.Error(axis, Child(path, "axis"), owner + ": the slide axis must not be zero");
-          } else {
-            j.axis = v->normalized();
-          }
-        }
-      }
-      // A slide has no natural direction to fall back on: a missing axis was read as [1, 0]
-      // without a word (issue 22, item 14); the file must say it.
-      if (j.type == JointType::kPrismatic && !e.value["axis"].IsDefined())
-        r_.Error(e.value, Child(path, "axis"),
-                 owner + ": a P joint needs its slide axis: the guide's direction in the guide's (first link's) coordinates, e.g. axis: [1, 0]");
-      if (const YAML::Node angle = e.value["angle"]; angle.IsDefined()) {
-        if (j.type != JointType::kPrismatic) r_.Error(angle, Child(path, "angle"), owner + ": only a P joint has an angle");
-        if (auto v = r_.Number(angle, Child(path, "angle"))) j.angle = DegToRad(*v);
-      }
+      ReadJointPoints(e, path, owner, &j);
+      ReadSlideAxisAndAngle(e.value, path, owner, &j);
       m_.joints.push_back(std::move(j));
+    }
+  }
+
+  // The joint's point on each link: `points: [on a, on b]`, or the point named as the joint.
+  void ReadJointPoints(const YamlReader::Entry& e, const std::string& path, const std::string& owner, Joint* j) {
+    std::string point_a = e.key, point_b = e.key;
+    YAML::Node point_node_a = e.key_node, point_node_b = e.key_node;
+    std::string path_a = path, path_b = path;
+    if (const YAML::Node points = e.value["points"]; points.IsDefined()) {
+      if (!points.IsSequence() || points.size() != 2) {
+        r_.Error(points, Child(path, "points"), owner + ": expected two point names [on a, on b]");
+      } else {
+        point_a = r_.Text(points[0], Index(Child(path, "points"), 0)).value_or("");
+        point_b = r_.Text(points[1], Index(Child(path, "points"), 1)).value_or("");
+        point_node_a = points[0];
+        point_node_b = points[1];
+        path_a = Index(Child(path, "points"), 0);
+        path_b = Index(Child(path, "points"), 1);
+      }
+    }
+    j->point_a = PointIndex(j->link_a, point_a, point_node_a, path_a, owner);
+    j->point_b = PointIndex(j->link_b, point_b, point_node_b, path_b, owner);
+  }
+
+  // A P joint's slide axis (required, not zero) and angle [deg]; neither belongs to an R joint.
+  void ReadSlideAxisAndAngle(const YAML::Node& node, const std::string& path, const std::string& owner, Joint* j) {
+    if (const YAML::Node axis = node["axis"]; axis.IsDefined()) {
+      if (j->type != JointType::kPrismatic) r_.Error(axis, Child(path, "axis"), owner + ": only a P joint has an axis");
+      if (auto v = r_.Vector(axis, Child(path, "axis"))) {
+        if (v->norm() < 1e-12) {
+          r_.Error(axis, Child(path, "axis"), owner + ": the slide axis must not be zero");
+        } else {
+          j->axis = v->normalized();
+        }
+      }
+    }
+    // A slide has no natural direction to fall back on: a missing axis was read as [1, 0]
+    // without a word (issue 22, item 14); the file must say it.
+    if (j->type == JointType::kPrismatic && !node["axis"].IsDefined())
+      r_.Error(node, Child(path, "axis"),
+               owner + ": a P joint needs its slide axis: the guide's direction in the guide's (first link's) coordinates, e.g. axis: [1, 0]");
+    if (const YAML::Node angle = node["angle"]; angle.IsDefined()) {
+      if (j->type != JointType::kPrismatic) r_.Error(angle, Child(path, "angle"), owner + ": only a P joint has an angle");
+      if (auto v = r_.Number(angle, Child(path, "angle"))) j->angle = DegToRad(*v);
     }
   }
 
@@ -265,71 +275,7 @@ class MechanismReader {
       Output o;
       o.name = e.key;
       int kinds = 0;
-      bool ok = true;
-      if (const YAML::Node v = e.value["joint"]; v.IsDefined()) {
-        ++kinds;
-        o.kind = OutputKind::kJoint;
-        const std::string name = r_.Text(v, Child(path, "joint")).value_or("");
-        o.joint = m_.FindJoint(name);
-        if (o.joint < 0) {
-          r_.Error(v, Child(path, "joint"), owner + " names unknown joint '" + name + "'");
-          ok = false;
-        }
-      }
-      if (const YAML::Node v = e.value["link"]; v.IsDefined()) {
-        ++kinds;
-        o.kind = OutputKind::kLinkAngle;
-        o.link = LinkIndex(v, Child(path, "link"), owner);
-        ok &= o.link >= 0;
-      }
-      if (const YAML::Node v = e.value["point"]; v.IsDefined()) {
-        ++kinds;
-        o.kind = OutputKind::kPoint;
-        const auto p = PointReference(v, Child(path, "point"), owner);
-        ok &= p.has_value();
-        if (p) o.p = *p;
-      }
-      for (const char* key : {"distance", "direction"}) {
-        const YAML::Node v = e.value[key];
-        if (!v.IsDefined()) continue;
-        ++kinds;
-        o.kind = std::string(key) == "distance" ? OutputKind::kDistance : OutputKind::kDirection;
-        if (!v.IsSequence() || v.size() != 2) {
-          r_.Error(v, Child(path, key), owner + ": expected two points [link.point, link.point]");
-          ok = false;
-          continue;
-        }
-        const auto p = PointReference(v[0], Index(Child(path, key), 0), owner);
-        const auto q = PointReference(v[1], Index(Child(path, key), 1), owner);
-        ok &= p.has_value() && q.has_value();
-        if (p) o.p = *p;
-        if (q) o.q = *q;
-      }
-      if (const YAML::Node v = e.value["transmission"]; v.IsDefined()) {
-        ++kinds;
-        o.kind = OutputKind::kTransmissionAngle;
-        const std::string tpath = Child(path, "transmission");
-        if (r_.ExpectMap(v, tpath)) {
-          r_.CheckKeys(v, tpath, {"coupler", "joint"});
-          const YAML::Node c = r_.Require(v, "coupler", tpath), j = r_.Require(v, "joint", tpath);
-          if (c.IsDefined() && !c.IsNull()) o.link = LinkIndex(c, Child(tpath, "coupler"), owner);
-          if (j.IsDefined() && !j.IsNull()) {
-            const std::string name = r_.Text(j, Child(tpath, "joint")).value_or("");
-            o.joint = m_.FindJoint(name);
-            if (o.joint < 0) r_.Error(j, Child(tpath, "joint"), owner + " names unknown joint '" + name + "'");
-          }
-          ok &= o.link >= 0 && o.joint >= 0;
-          // the coupler's joints are only meaningful once the rest of the file is sound
-          if (ok && r_.diagnostics().empty() && CheckConsistency(m_).empty()) {
-            if (const Expected<TransmissionGeometry> geometry = ResolveTransmission(m_, o); !geometry) {
-              r_.Error(v, tpath, owner + ": " + geometry.error());
-              ok = false;
-            }
-          }
-        } else {
-          ok = false;
-        }
-      }
+      const bool ok = ReadOutputKind(e.value, path, owner, &o, &kinds);
       if (kinds != 1) {
         r_.Error(e.value, path, owner + ": give exactly one of joint, link, point, distance, direction, transmission");
         continue;
@@ -345,6 +291,81 @@ class MechanismReader {
       if (m_.FindOutput(o.name) >= 0) continue;
       if (ok) m_.outputs.push_back(std::move(o));
     }
+  }
+
+  // What an output measures: each of its keys joint, link, point, distance, direction and
+  // transmission read into *o and counted in *kinds (exactly one is right). False when a name in
+  // it is unknown or malformed.
+  bool ReadOutputKind(const YAML::Node& node, const std::string& path, const std::string& owner, Output* o, int* kinds) {
+    bool ok = true;
+    if (const YAML::Node v = node["joint"]; v.IsDefined()) {
+      ++*kinds;
+      o->kind = OutputKind::kJoint;
+      const std::string name = r_.Text(v, Child(path, "joint")).value_or("");
+      o->joint = m_.FindJoint(name);
+      if (o->joint < 0) {
+        r_.Error(v, Child(path, "joint"), owner + " names unknown joint '" + name + "'");
+        ok = false;
+      }
+    }
+    if (const YAML::Node v = node["link"]; v.IsDefined()) {
+      ++*kinds;
+      o->kind = OutputKind::kLinkAngle;
+      o->link = LinkIndex(v, Child(path, "link"), owner);
+      ok &= o->link >= 0;
+    }
+    if (const YAML::Node v = node["point"]; v.IsDefined()) {
+      ++*kinds;
+      o->kind = OutputKind::kPoint;
+      const auto p = PointReference(v, Child(path, "point"), owner);
+      ok &= p.has_value();
+      if (p) o->p = *p;
+    }
+    for (const char* key : {"distance", "direction"}) {
+      const YAML::Node v = node[key];
+      if (!v.IsDefined()) continue;
+      ++*kinds;
+      o->kind = std::string(key) == "distance" ? OutputKind::kDistance : OutputKind::kDirection;
+      if (!v.IsSequence() || v.size() != 2) {
+        r_.Error(v, Child(path, key), owner + ": expected two points [link.point, link.point]");
+        ok = false;
+        continue;
+      }
+      const auto p = PointReference(v[0], Index(Child(path, key), 0), owner);
+      const auto q = PointReference(v[1], Index(Child(path, key), 1), owner);
+      ok &= p.has_value() && q.has_value();
+      if (p) o->p = *p;
+      if (q) o->q = *q;
+    }
+    if (const YAML::Node v = node["transmission"]; v.IsDefined()) {
+      ++*kinds;
+      o->kind = OutputKind::kTransmissionAngle;
+      ok = ReadTransmission(v, Child(path, "transmission"), owner, ok, o);
+    }
+    return ok;
+  }
+
+  // A transmission angle's coupler and output joint; `ok` says whether the output's other keys
+  // were sound. Returns it, false when the transmission is not.
+  bool ReadTransmission(const YAML::Node& v, const std::string& tpath, const std::string& owner, bool ok, Output* o) {
+    if (!r_.ExpectMap(v, tpath)) return false;
+    r_.CheckKeys(v, tpath, {"coupler", "joint"});
+    const YAML::Node c = r_.Require(v, "coupler", tpath), j = r_.Require(v, "joint", tpath);
+    if (c.IsDefined() && !c.IsNull()) o->link = LinkIndex(c, Child(tpath, "coupler"), owner);
+    if (j.IsDefined() && !j.IsNull()) {
+      const std::string name = r_.Text(j, Child(tpath, "joint")).value_or("");
+      o->joint = m_.FindJoint(name);
+      if (o->joint < 0) r_.Error(j, Child(tpath, "joint"), owner + " names unknown joint '" + name + "'");
+    }
+    ok &= o->link >= 0 && o->joint >= 0;
+    // the coupler's joints are only meaningful once the rest of the file is sound
+    if (ok && r_.diagnostics().empty() && CheckConsistency(m_).empty()) {
+      if (const Expected<TransmissionGeometry> geometry = ResolveTransmission(m_, *o); !geometry) {
+        r_.Error(v, tpath, owner + ": " + geometry.error());
+        ok = false;
+      }
+    }
+    return ok;
   }
 
   void ReadAssembly(const YAML::Node& node) {

@@ -29,6 +29,44 @@ bool Range(YamlReader& r, const YAML::Node& node, const std::string& key, double
   return true;
 }
 
+// The precision points: `points: n` (spaced by the synthesis) or `at: [x, ...]` (inside the x
+// range when that was read), not both.
+void ReadFunctionPrecisionPoints(YamlReader& r, const YAML::Node& root, bool ranges, FunctionRequest* q) {
+  const YAML::Node points = root["points"], at = root["at"];
+  if (points.IsDefined() && at.IsDefined()) r.Error(at, "at", "give points or at, not both");
+  if (points.IsDefined()) {
+    if (const auto n = r.Count(points, "points")) {
+      if (*n < 3 || *n > 1000) r.Error(points, "points", "expected 3 to 1000 precision points");
+      q->points = *n;
+    }
+  }
+  if (at.IsDefined() && r.ExpectSequence(at, "at")) {
+    if (at.size() < 3 || at.size() > 1000) r.Error(at, "at", "expected 3 to 1000 precision points");
+    for (size_t i = 0; i < at.size(); ++i) {
+      const auto x = r.Number(at[i], Index("at", static_cast<int>(i)));
+      if (!x) continue;
+      if (ranges && (*x < std::min(q->x_from, q->x_to) || *x > std::max(q->x_from, q->x_to)))
+        r.Error(at[i], Index("at", static_cast<int>(i)), fmt::format("x = {} lies outside x: [{}, {}]", *x, q->x_from, q->x_to));
+      q->at.push_back(*x);
+    }
+  }
+}
+
+// The formula must evaluate (x defined) at both ends of the x range and at the precision points:
+// the first x where it does not is reported at the function's line.
+void CheckFunctionFormulaEvaluates(YamlReader& r, const YAML::Node& function, const std::string& formula, const FunctionRequest& q) {
+  std::vector<double> xs = {q.x_from, q.x_to};
+  xs.insert(xs.end(), q.at.begin(), q.at.end());
+  for (double x : xs) {
+    ParameterSet p;
+    p.DefineValue("x", x);
+    if (const Expected<double> v = p.Evaluate(formula); !v) {
+      r.Error(function, "function", fmt::format("cannot evaluate at x = {}: {}", x, v.error()));
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 MotionSpecFile ReadMotionSpec(const std::string& path) { return ParseMotionSpecText(ReadInputText(path), path); }
@@ -96,24 +134,7 @@ FunctionSpecFile ParseFunctionSpecText(const std::string& text, const std::strin
     q.output_from = DegToRad(q.output_from);
     q.output_to = DegToRad(q.output_to);
   }
-  const YAML::Node points = root["points"], at = root["at"];
-  if (points.IsDefined() && at.IsDefined()) r.Error(at, "at", "give points or at, not both");
-  if (points.IsDefined()) {
-    if (const auto n = r.Count(points, "points")) {
-      if (*n < 3 || *n > 1000) r.Error(points, "points", "expected 3 to 1000 precision points");
-      q.points = *n;
-    }
-  }
-  if (at.IsDefined() && r.ExpectSequence(at, "at")) {
-    if (at.size() < 3 || at.size() > 1000) r.Error(at, "at", "expected 3 to 1000 precision points");
-    for (size_t i = 0; i < at.size(); ++i) {
-      const auto x = r.Number(at[i], Index("at", static_cast<int>(i)));
-      if (!x) continue;
-      if (ranges && (*x < std::min(q.x_from, q.x_to) || *x > std::max(q.x_from, q.x_to)))
-        r.Error(at[i], Index("at", static_cast<int>(i)), fmt::format("x = {} lies outside x: [{}, {}]", *x, q.x_from, q.x_to));
-      q.at.push_back(*x);
-    }
-  }
+  ReadFunctionPrecisionPoints(r, root, ranges, &q);
   if (const YAML::Node frame = root["frame"]; frame.IsDefined()) {
     if (q.type == FunctionGenerator::kSliderCrank) r.Error(frame, "frame", "a slider-crank has no frame length (its slide is the frame)");
     if (const auto f = r.Number(frame, "frame")) {
@@ -131,18 +152,7 @@ FunctionSpecFile ParseFunctionSpecText(const std::string& text, const std::strin
     *y = *v;
     return true;
   };
-  if (function.IsDefined() && ranges && !formula.empty()) {
-    std::vector<double> xs = {q.x_from, q.x_to};
-    xs.insert(xs.end(), q.at.begin(), q.at.end());
-    for (double x : xs) {
-      ParameterSet p;
-      p.DefineValue("x", x);
-      if (const Expected<double> v = p.Evaluate(formula); !v) {
-        r.Error(function, "function", fmt::format("cannot evaluate at x = {}: {}", x, v.error()));
-        break;
-      }
-    }
-  }
+  if (function.IsDefined() && ranges && !formula.empty()) CheckFunctionFormulaEvaluates(r, function, formula, q);
   if (!r.diagnostics().empty()) throw InputError(r.diagnostics());
   return spec;
 }

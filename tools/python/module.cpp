@@ -152,7 +152,8 @@ py::dict ToleranceDict(const ToleranceResult& r) {
   return d;
 }
 
-void BindResults(py::module_& m) {
+// koppel.SweepTable: a sweep in the layout of `koppel analyze`, as NumPy columns.
+void BindSweepTable(py::module_& m) {
   py::class_<SweepTable>(m, "SweepTable",
                          "A sweep of the drive, laid out as `koppel analyze`: the input, then per output y the columns y, "
                          "y_d1 .. y_d<order> (a point K: K_x, K_y, ...), then 'singular'. values is a NumPy array (rows x "
@@ -181,7 +182,10 @@ void BindResults(py::module_& m) {
       }, "{column name: NumPy array}, in column order: pandas.DataFrame(t.to_dict())")
       .def("brief", &SweepTable::Brief)
       .def("__repr__", [](const SweepTable& t) { return "<koppel.SweepTable " + t.Brief() + ">"; });
+}
 
+// koppel.Pose: one row of the sweep layout at the current input.
+void BindPose(py::module_& m) {
   py::class_<PoseResult>(m, "Pose", "One pose: a row of the sweep layout at the current input.")
       .def_property_readonly("status", [](const PoseResult& p) { return ToString(p.status); })
       .def_property_readonly("ok", [](const PoseResult& p) { return p.status == AnalysisStatus::kComplete; })
@@ -198,7 +202,10 @@ void BindResults(py::module_& m) {
       })
       .def("brief", &PoseResult::Brief)
       .def("__repr__", [](const PoseResult& p) { return "<koppel.Pose " + p.Brief() + ">"; });
+}
 
+// koppel.DeadCentres: the dead centres and extremes of a scalar output.
+void BindDeadCentres(py::module_& m) {
   py::class_<DeadCentres>(m, "DeadCentres",
                           "Dead centres of a scalar output (koppel deadcentres): points [{kind, input, value, d2}], and where "
                           "they pair up the stroke, input_a/input_i (extended/folded), value_a/value_i, forward_angle and "
@@ -235,7 +242,10 @@ void BindResults(py::module_& m) {
       .def_property_readonly("gaps", [](const DeadCentres& d) { return GapList(d.gaps); })
       .def("brief", &DeadCentres::Brief)
       .def("__repr__", [](const DeadCentres& d) { return "<koppel.DeadCentres " + d.Brief() + ">"; });
+}
 
+// koppel.Ranges: the drivable ranges of the branches.
+void BindRanges(py::module_& m) {
   py::class_<Ranges>(m, "Ranges",
                      "Drivable ranges (koppel range): branches [{branch, from, to, from_kind, to_kind, period, "
                      "singular_points, message}]; kinds: limit, branch-point, full-turn, bound, failed.")
@@ -262,6 +272,13 @@ void BindResults(py::module_& m) {
       .def("__repr__", [](const Ranges& r) { return "<koppel.Ranges " + r.Brief() + ">"; });
 }
 
+void BindResults(py::module_& m) {
+  BindSweepTable(m);
+  BindPose(m);
+  BindDeadCentres(m);
+  BindRanges(m);
+}
+
 py::object Designed(const Design& d) {
   py::dict r;
   r["status"] = ToString(d.status);
@@ -284,11 +301,9 @@ py::dict DesignList(const Designs& r) {
   return out;
 }
 
-void BindModel(py::module_& m) {
-  py::class_<Model>(m, "Mechanism",
-                    "A mechanism from a mechanism file, with its parameters and a current pose. Inputs in degrees (R drive) "
-                    "or length (P drive); angle outputs in degrees; transfer functions per radian of the input.")
-      .def_static("load", [](const std::string& path, std::optional<py::dict> set) { return Model::Load(path, Overrides(set)); },
+// Mechanism: reading it, its names and parameters.
+void BindModelFile(py::class_<Model>& c) {
+  c.def_static("load", [](const std::string& path, std::optional<py::dict> set) { return Model::Load(path, Overrides(set)); },
                   py::arg("path"), py::kw_only(), py::arg("set") = py::none(),
                   "Reads a mechanism file, or the catalog's entry when path is no file but a catalog id ('crank-rocker');\n"
                   "set={'e': 0.8} overrides parameters (numbers or formulas). Raises koppel.InputError, also for a\n"
@@ -314,8 +329,12 @@ void BindModel(py::module_& m) {
       .def("set", [](Model& model, const std::string& name, const py::object& value) {
         if (py::isinstance<py::str>(value)) model.Set(name, value.cast<std::string>());
         else model.Set(name, value.cast<double>());
-      }, py::arg("name"), py::arg("value"), "Overrides one parameter (number or formula); the pose is forgotten.")
-      .def("assemble", &Model::Assemble, py::arg("order") = 2, "Assembles at the file's hint: the current pose (a Pose).")
+      }, py::arg("name"), py::arg("value"), "Overrides one parameter (number or formula); the pose is forgotten.");
+}
+
+// Mechanism: its pose and the sweep of the drive.
+void BindModelMotion(py::class_<Model>& c) {
+  c.def("assemble", &Model::Assemble, py::arg("order") = 2, "Assembles at the file's hint: the current pose (a Pose).")
       .def("move_to",
            [](Model& model, double input, int order, const std::string& at) { return model.MoveTo(input, order, ParseAtBranchPoint(at)); },
            py::arg("input"), py::arg("order") = 2, py::arg("at_branch_point") = "continue",
@@ -330,8 +349,12 @@ void BindModel(py::module_& m) {
            py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
            py::arg("order") = 2, py::arg("at_branch_point") = "continue",
            "The table of `koppel analyze` from start to stop by step (default: the file's sweep), transfer functions to "
-           "`order` (0..8).")
-      .def("dead_centres",
+           "`order` (0..8).");
+}
+
+// Mechanism: what is read off it (dead centres, ranges, singular positions, curvature, poles, centrodes).
+void BindModelAnalyses(py::class_<Model>& c) {
+  c.def("dead_centres",
            [](const Model& model, const std::string& output, std::optional<double> start, std::optional<double> stop,
               std::optional<double> step) { return model.FindDeadCentres(output, start, stop, step); },
            py::arg("output") = "", py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(),
@@ -364,8 +387,12 @@ void BindModel(py::module_& m) {
            py::arg("link"), py::kw_only(), py::arg("reference") = "", py::arg("start") = py::none(), py::arg("stop") = py::none(),
            py::arg("step") = 1.0, py::arg("at") = 0.0,
            "The fixed and moving centrodes of `link` against `reference` (default: the frame), (n, 2) arrays; moving_at: the "
-           "moving one carried to the pose at `at`.")
-      .def("tolerance",
+           "moving one carried to the pose at `at`.");
+}
+
+// Mechanism: tolerances, cognates, its file text.
+void BindModelTolerances(py::class_<Model>& c) {
+  c.def("tolerance",
            [](const Model& model, const std::string& output, const std::vector<double>& inputs, const std::map<std::string, double>& tol,
               const std::map<std::string, double>& clearance, long samples, std::uint64_t seed, const std::string& distribution, int threads) {
              ToleranceRequest request;
@@ -392,6 +419,16 @@ void BindModel(py::module_& m) {
       .def("_cognates", [](const Model& model, const std::string& point) { return DesignList(FindCognates(model, point)); })
       .def("to_yaml", &Model::ToYaml, "The mechanism as a mechanism file.")
       .def("__repr__", [](const Model& model) { return "<koppel.Mechanism '" + model.name() + "' from " + model.path() + ">"; });
+}
+
+void BindModel(py::module_& m) {
+  py::class_<Model> c(m, "Mechanism",
+                      "A mechanism from a mechanism file, with its parameters and a current pose. Inputs in degrees (R drive) "
+                      "or length (P drive); angle outputs in degrees; transfer functions per radian of the input.");
+  BindModelFile(c);
+  BindModelMotion(c);
+  BindModelAnalyses(c);
+  BindModelTolerances(c);
 }
 
 void BindCatalog(py::module_& m) {
@@ -433,7 +470,8 @@ void BindCatalog(py::module_& m) {
   m.def("_catalog_directory", &CatalogDirectory);
 }
 
-void BindSynthesis(py::module_& m) {
+// The closed-form syntheses: crank-rocker, slider-crank, MzC.
+void BindClosedFormSynthesis(py::module_& m) {
   m.def("_crank_rocker", [](double phi0, double psi0, const std::string& rocker_sense, std::optional<double> beta,
                             std::optional<double> lambda, double frame, const std::string& sense) {
     CrankRockerSpec s;
@@ -465,6 +503,10 @@ void BindSynthesis(py::module_& m) {
     s.diameter = diameter;
     return Designed(SynthesiseMzc(s));
   });
+}
+
+// The numerical syntheses: function generators, fits, motion (Burmester) four-bars.
+void BindNumericalSynthesis(py::module_& m) {
   m.def("_function", [](const std::function<double(double)>& f, const std::string& type, double x_from, double x_to, double in_from,
                         double in_to, double out_from, double out_to, int points, const std::vector<double>& at, double frame) {
     FunctionSpec s;
@@ -508,6 +550,11 @@ void BindSynthesis(py::module_& m) {
     }
     return DesignList(r);
   });
+}
+
+void BindSynthesis(py::module_& m) {
+  BindClosedFormSynthesis(m);
+  BindNumericalSynthesis(m);
 }
 
 }  // namespace

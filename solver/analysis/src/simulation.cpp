@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 
 namespace koppel {
 namespace {
@@ -179,6 +180,120 @@ Outcome CheckDriveLaw(const DriveLaw& drive) {
   return Done();
 }
 
+// Why a run cannot start, and which part of the input is at fault.
+struct SimulationRefusal {
+  std::string message;
+  SimulationResult::BadPart bad = SimulationResult::BadPart::kNone;
+};
+
+// Checks the options, the loads and the drive law, prepares the load model and compiles the
+// drive's torque formula; the refusal when one of them is bad.
+std::optional<SimulationRefusal> PrepareSimulation(const Mechanism& m, const Loads& loads, const DriveLaw& drive,
+                                                   const SimulationOptions& options, LoadModel* model, CompiledFormula* formula) {
+  using BadPart = SimulationResult::BadPart;
+  std::string why;
+  if (!options.IsValid(&why)) return SimulationRefusal{why, BadPart::kOptions};
+  if (const Outcome prepared = model->Prepare(m, loads); !prepared) return SimulationRefusal{prepared.error(), BadPart::kLoads};
+  if (const Outcome checked = CheckDriveLaw(drive); !checked) return SimulationRefusal{checked.error(), BadPart::kDrive};
+  if (drive.kind == DriveLaw::Kind::kFormula) {
+    Expected<CompiledFormula> compiled = CompiledFormula::Compile(drive.formula, loads.parameters, LoadVariables(m));
+    if (!compiled) return SimulationRefusal{compiled.error(), BadPart::kDrive};
+    *formula = std::move(*compiled);
+  }
+  if (!loads.HasMass())
+    return SimulationRefusal{"no link has a mass or a moment of inertia: the motion is not determined", BadPart::kLoads};
+  return std::nullopt;
+}
+
+// Appends the table row at (t, state): what the right-hand side computes there, and the outputs.
+void AppendSimulationRow(Dynamics& dynamics, double t, const State& state, std::vector<SimulationRow>* rows) {
+  const Dynamics::Point p = dynamics.Evaluate(state, t);
+  SimulationRow row;
+  row.time = t;
+  row.input = state[0];
+  row.speed = state[1];
+  row.acceleration = p.acceleration;
+  row.drive = p.drive;
+  row.kinetic_energy = p.kinetic;
+  row.potential_energy = p.potential;
+  dynamics.Outputs(&row.outputs);
+  rows->push_back(std::move(row));
+}
+
+// How a run ended.
+struct MotionEnd {
+  AnalysisStatus status = AnalysisStatus::kComplete;
+  std::string message;
+};
+
+std::string CollapsedStepMessage(const Mechanism& m, double t, double input, double dt) {
+  char size[32];
+  std::snprintf(size, sizeof size, "%.3g", dt);
+  return std::string("the step size collapsed to ") + size + " s " + Where(m, t, input) +
+         ": the equation is stiff (a damping or stiffness far too large for the inertia) or the motion explodes";
+}
+
+// Integrates the equation of motion from x at t_start (whose row is written) to t_end with the
+// dense-output Dormand-Prince stepper, appending a row at each output time; counts the steps.
+MotionEnd IntegrateMotion(const Mechanism& m, const SimulationOptions& options, Dynamics& dynamics, State x,
+                          SimulationResult* result) {
+  const double span = options.t_end - options.t_start;
+  // rows every output_step from the start, the last one at t_end whatever the step: at least one
+  // row after the start (an output step longer than the run, --dt 1e308, gave only the t_start row)
+  const long outputs = std::max(1L, static_cast<long>(std::ceil(span / options.output_step - 1e-9)));
+  auto output_time = [&](long k) { return k == outputs ? options.t_end : options.t_start + k * options.output_step; };
+  // the integrator's longest step: an output step, never more than the run
+  const double longest_step = std::min(options.output_step, span);
+  auto stepper =
+      odeint::make_dense_output(options.absolute_tolerance, options.relative_tolerance, longest_step, odeint::runge_kutta_dopri5<State>());
+  double t = options.t_start;
+  double dt = longest_step * 1e-3;  // the controller grows it from here
+  stepper.initialize(x, t, dt);
+  long next = 1;
+  int tiny_steps = 0;  // accepted steps in a row shorter than kCollapsedStep of the run
+  std::string last_failure;
+  while (next <= outputs) {
+    if (result->steps >= options.max_steps)
+      return {AnalysisStatus::kPartial,
+              "the integrator needed more than " + std::to_string(options.max_steps) + " steps " + Where(m, t, x[0])};
+    try {
+      stepper.do_step(std::ref(dynamics));
+    } catch (const Stop& s) {
+      last_failure = s.message;
+    } catch (const odeint::step_adjustment_error& e) {
+      last_failure = std::string("the step size control failed ") + Where(m, t, x[0]);
+    }
+    if (!last_failure.empty()) {
+      // a trial stage may lie beyond where the motion goes (past a dead centre it never reaches):
+      // start again from the last accepted state with a shorter step; a failure that persists at
+      // the shortest step is where the motion really ends
+      dt = std::min(dt, stepper.current_time_step()) / 8.0;
+      if (dt < kSmallestRetryStep * longest_step) return {AnalysisStatus::kPartial, last_failure};
+      stepper.initialize(x, t, dt);
+      last_failure.clear();
+      continue;
+    }
+    ++result->steps;
+    x = stepper.current_state();
+    t = stepper.current_time();
+    dt = stepper.current_time_step();
+    tiny_steps = dt < kCollapsedStep * span ? tiny_steps + 1 : 0;
+    // the rows up to here are kept: the motion is known that far
+    if (tiny_steps >= kCollapsedSteps && t < options.t_end) return {AnalysisStatus::kPartial, CollapsedStepMessage(m, t, x[0], dt)};
+    try {
+      while (next <= outputs && output_time(next) <= t) {
+        State at;
+        stepper.calc_state(output_time(next), at);
+        AppendSimulationRow(dynamics, output_time(next), at, &result->rows);
+        ++next;
+      }
+    } catch (const Stop& s) {
+      return {AnalysisStatus::kPartial, s.message};
+    }
+  }
+  return {AnalysisStatus::kComplete, ""};
+}
+
 }  // namespace
 
 bool SimulationOptions::IsValid(std::string* why) const {
@@ -213,124 +328,42 @@ std::string SimulationResult::Brief() const {
 
 SimulationResult Simulate(const Mechanism& m, const Loads& loads, const DriveLaw& drive, const SimulationOptions& options) {
   SimulationResult result;
-  using BadPart = SimulationResult::BadPart;
-  auto fail = [&](std::string message, BadPart bad) {
+  auto fail = [&](std::string message, SimulationResult::BadPart bad) {
     result.status = AnalysisStatus::kFailed;
     result.message = std::move(message);
-    result.bad_input = bad != BadPart::kNone;
+    result.bad_input = bad != SimulationResult::BadPart::kNone;
     result.bad_part = bad;
     return result;
   };
-  std::string why;
-  if (!options.IsValid(&why)) return fail(why, BadPart::kOptions);
   LoadModel model;
-  if (const Outcome prepared = model.Prepare(m, loads); !prepared) return fail(prepared.error(), BadPart::kLoads);
-  if (const Outcome checked = CheckDriveLaw(drive); !checked) return fail(checked.error(), BadPart::kDrive);
   CompiledFormula formula;
-  if (drive.kind == DriveLaw::Kind::kFormula) {
-    Expected<CompiledFormula> compiled = CompiledFormula::Compile(drive.formula, loads.parameters, LoadVariables(m));
-    if (!compiled) return fail(compiled.error(), BadPart::kDrive);
-    formula = std::move(*compiled);
-  }
-  if (!loads.HasMass()) return fail("no link has a mass or a moment of inertia: the motion is not determined", BadPart::kLoads);
+  if (const std::optional<SimulationRefusal> refused = PrepareSimulation(m, loads, drive, options, &model, &formula))
+    return fail(refused->message, refused->bad);
 
   PositionSolver solver(m);
   const Assembly assembly = AssembleRegular(m, solver, options.continuation);
-  if (!assembly.ok()) return fail(assembly.error, BadPart::kNone);
+  if (!assembly.ok()) return fail(assembly.error, SimulationResult::BadPart::kNone);
   Continuation path(solver, options.continuation);
   path.Start(assembly.input, assembly.q);
   if (const WalkReport to_start = path.AdvanceTo(options.initial_input, std::numeric_limits<double>::infinity()); !to_start.ok())
-    return fail("the initial input cannot be reached on the assembly's branch: " + to_start.message, BadPart::kNone);
+    return fail("the initial input cannot be reached on the assembly's branch: " + to_start.message, SimulationResult::BadPart::kNone);
 
   Dynamics dynamics(m, loads, drive, model, &formula, solver, path);
-  State x = {options.initial_input, options.initial_speed};
-  auto row_at = [&](double t, const State& state) {
-    const Dynamics::Point p = dynamics.Evaluate(state, t);
-    SimulationRow row;
-    row.time = t;
-    row.input = state[0];
-    row.speed = state[1];
-    row.acceleration = p.acceleration;
-    row.drive = p.drive;
-    row.kinetic_energy = p.kinetic;
-    row.potential_energy = p.potential;
-    dynamics.Outputs(&row.outputs);
-    result.rows.push_back(std::move(row));
-  };
-  auto stop = [&](AnalysisStatus status, std::string message) {
-    result.status = status;
-    result.message = std::move(message);
-    result.evaluations = dynamics.evaluations();
-    result.singular_points = path.singular_points();
-    return result;
-  };
+  const State x = {options.initial_input, options.initial_speed};
+  MotionEnd end;
+  bool started = true;
   try {
-    row_at(options.t_start, x);
+    AppendSimulationRow(dynamics, options.t_start, x, &result.rows);
   } catch (const Stop& s) {
-    return stop(AnalysisStatus::kPartial, s.message);
+    end = {AnalysisStatus::kPartial, s.message};
+    started = false;
   }
-
-  const double span = options.t_end - options.t_start;
-  // rows every output_step from the start, the last one at t_end whatever the step: at least one
-  // row after the start (an output step longer than the run, --dt 1e308, gave only the t_start row)
-  const long outputs = std::max(1L, static_cast<long>(std::ceil(span / options.output_step - 1e-9)));
-  auto output_time = [&](long k) { return k == outputs ? options.t_end : options.t_start + k * options.output_step; };
-  // the integrator's longest step: an output step, never more than the run
-  const double longest_step = std::min(options.output_step, span);
-  auto stepper =
-      odeint::make_dense_output(options.absolute_tolerance, options.relative_tolerance, longest_step, odeint::runge_kutta_dopri5<State>());
-  double t = options.t_start;
-  double dt = longest_step * 1e-3;  // the controller grows it from here
-  stepper.initialize(x, t, dt);
-  long next = 1;
-  int tiny_steps = 0;  // accepted steps in a row shorter than kCollapsedStep of the run
-  std::string last_failure;
-  while (next <= outputs) {
-    if (result.steps >= options.max_steps)
-      return stop(AnalysisStatus::kPartial, "the integrator needed more than " + std::to_string(options.max_steps) + " steps " +
-                                                  Where(m, t, x[0]));
-    try {
-      stepper.do_step(std::ref(dynamics));
-    } catch (const Stop& s) {
-      last_failure = s.message;
-    } catch (const odeint::step_adjustment_error& e) {
-      last_failure = std::string("the step size control failed ") + Where(m, t, x[0]);
-    }
-    if (!last_failure.empty()) {
-      // a trial stage may lie beyond where the motion goes (past a dead centre it never reaches):
-      // start again from the last accepted state with a shorter step; a failure that persists at
-      // the shortest step is where the motion really ends
-      dt = std::min(dt, stepper.current_time_step()) / 8.0;
-      if (dt < kSmallestRetryStep * longest_step) return stop(AnalysisStatus::kPartial, last_failure);
-      stepper.initialize(x, t, dt);
-      last_failure.clear();
-      continue;
-    }
-    ++result.steps;
-    x = stepper.current_state();
-    t = stepper.current_time();
-    dt = stepper.current_time_step();
-    tiny_steps = dt < kCollapsedStep * span ? tiny_steps + 1 : 0;
-    if (tiny_steps >= kCollapsedSteps && t < options.t_end) {
-      char size[32];
-      std::snprintf(size, sizeof size, "%.3g", dt);
-      // the rows up to here are kept: the motion is known that far
-      return stop(AnalysisStatus::kPartial, std::string("the step size collapsed to ") + size + " s " + Where(m, t, x[0]) +
-                                                ": the equation is stiff (a damping or stiffness far too large for the inertia) or "
-                                                "the motion explodes");
-    }
-    try {
-      while (next <= outputs && output_time(next) <= t) {
-        State at;
-        stepper.calc_state(output_time(next), at);
-        row_at(output_time(next), at);
-        ++next;
-      }
-    } catch (const Stop& s) {
-      return stop(AnalysisStatus::kPartial, s.message);
-    }
-  }
-  return stop(AnalysisStatus::kComplete, "");
+  if (started) end = IntegrateMotion(m, options, dynamics, x, &result);
+  result.status = end.status;
+  result.message = std::move(end.message);
+  result.evaluations = dynamics.evaluations();
+  result.singular_points = path.singular_points();
+  return result;
 }
 
 }  // namespace koppel

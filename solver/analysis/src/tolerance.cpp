@@ -166,6 +166,30 @@ ToleranceReport Failed(std::string why) {
   return r;
 }
 
+// The report's status from its rows: failed when no input was reached, partial when some were
+// not or Monte Carlo samples did not assemble.
+void SetToleranceReportStatus(ToleranceReport* report) {
+  report->status = AnalysisStatus::kComplete;
+  long failed_samples = 0;
+  size_t failed_rows = 0;
+  for (const ToleranceRow& row : report->rows) {
+    failed_rows += row.ok ? 0 : 1;
+    failed_samples = std::max(failed_samples, row.mc_failed);
+  }
+  if (failed_rows == report->rows.size()) {
+    report->status = AnalysisStatus::kFailed;
+    report->message = "no input was reached: " + report->rows.front().message;
+  } else if (failed_rows > 0) {
+    report->status = AnalysisStatus::kPartial;
+    report->message = std::to_string(failed_rows) + " of " + std::to_string(report->rows.size()) + " inputs not reached";
+  }
+  if (failed_samples > 0) {
+    report->status = AnalysisStatus::kPartial;
+    report->message += std::string(report->message.empty() ? "" : "; ") + "up to " + std::to_string(failed_samples) +
+                       " Monte Carlo samples per input did not assemble there (the tolerances reach past the mechanism's limits)";
+  }
+}
+
 }  // namespace
 
 const char* ToString(ToleranceDistribution distribution) {
@@ -241,25 +265,7 @@ ToleranceReport AnalyseTolerances(const MechanismBuilder& builder, const std::ve
     const std::vector<double> values = RunSamples(builder, nominal, o, poses, nominal_y, angle);
     for (size_t i = 0; i < reached.size(); ++i) Statistics(values.data() + i * o.samples, o.samples, o.quantile_levels, &report.rows[reached[i]]);
   }
-  report.status = AnalysisStatus::kComplete;
-  long failed_samples = 0;
-  size_t failed_rows = 0;
-  for (const ToleranceRow& row : report.rows) {
-    failed_rows += row.ok ? 0 : 1;
-    failed_samples = std::max(failed_samples, row.mc_failed);
-  }
-  if (failed_rows == report.rows.size()) {
-    report.status = AnalysisStatus::kFailed;
-    report.message = "no input was reached: " + report.rows.front().message;
-  } else if (failed_rows > 0) {
-    report.status = AnalysisStatus::kPartial;
-    report.message = std::to_string(failed_rows) + " of " + std::to_string(report.rows.size()) + " inputs not reached";
-  }
-  if (failed_samples > 0) {
-    report.status = AnalysisStatus::kPartial;
-    report.message += std::string(report.message.empty() ? "" : "; ") + "up to " + std::to_string(failed_samples) +
-                      " Monte Carlo samples per input did not assemble there (the tolerances reach past the mechanism's limits)";
-  }
+  SetToleranceReportStatus(&report);
   return report;
 }
 

@@ -100,24 +100,35 @@ void SolveBlockTransposed(const double* a, const int* piv, int s, double* v) {
   }
 }
 
+// The pattern (rows[e], cols[e]) of an n x n matrix as compressed columns: column j's rows are
+// ai[ap[j] .. ap[j + 1]), sorted. False when an entry lies outside the matrix or is repeated (a
+// repeated entry shows up as a neighbour).
+bool CompressedColumns(int n, const std::vector<int>& rows, const std::vector<int>& cols, std::vector<int>* ap,
+                       std::vector<int>* ai) {
+  ap->assign(n + 1, 0);
+  ai->assign(rows.size(), 0);
+  for (size_t e = 0; e < rows.size(); ++e) {
+    if (rows[e] < 0 || rows[e] >= n || cols[e] < 0 || cols[e] >= n) return false;
+    ++(*ap)[cols[e] + 1];
+  }
+  for (int j = 0; j < n; ++j) (*ap)[j + 1] += (*ap)[j];
+  std::vector<int> next(ap->begin(), ap->end() - 1);
+  for (size_t e = 0; e < rows.size(); ++e) (*ai)[next[cols[e]]++] = rows[e];
+  for (int j = 0; j < n; ++j) {
+    const auto begin = ai->begin() + (*ap)[j], end = ai->begin() + (*ap)[j + 1];
+    std::sort(begin, end);
+    if (std::adjacent_find(begin, end) != end) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool BlockLU::Analyse(int n, const std::vector<int>& rows, const std::vector<int>& cols) {
   analysed_ = false;
   if (n <= 0 || rows.size() != cols.size()) return false;
-  // compressed columns, rows sorted within each column (a repeated entry shows up as a neighbour)
-  std::vector<int> ap(n + 1, 0), ai(rows.size());
-  for (size_t e = 0; e < rows.size(); ++e) {
-    if (rows[e] < 0 || rows[e] >= n || cols[e] < 0 || cols[e] >= n) return false;
-    ++ap[cols[e] + 1];
-  }
-  for (int j = 0; j < n; ++j) ap[j + 1] += ap[j];
-  std::vector<int> next(ap.begin(), ap.end() - 1);
-  for (size_t e = 0; e < rows.size(); ++e) ai[next[cols[e]]++] = rows[e];
-  for (int j = 0; j < n; ++j) {
-    std::sort(ai.begin() + ap[j], ai.begin() + ap[j + 1]);
-    if (std::adjacent_find(ai.begin() + ap[j], ai.begin() + ap[j + 1]) != ai.begin() + ap[j + 1]) return false;
-  }
+  std::vector<int> ap, ai;
+  if (!CompressedColumns(n, rows, cols, &ap, &ai)) return false;
   std::vector<int> p(n), q(n), r(n + 1), work(5 * n);
   double transversal_work = 0.0;
   int matched = 0;
@@ -144,6 +155,21 @@ bool BlockLU::Analyse(int n, const std::vector<int>& rows, const std::vector<int
     row_position[row_perm_[k]] = k;
     col_position[col_perm_[k]] = k;
   }
+  if (!PlaceEntries(rows, cols, row_position, col_position, block_of)) return false;
+  lu_.assign(total, 0.0);
+  off_values_.assign(off_.size(), 0.0);
+  pivot_row_.assign(n, 0);
+  pivot_slot_.assign(n, 0);
+  for (const Block& block : blocks_) {
+    for (int c = 0; c < block.size; ++c) pivot_slot_[col_perm_[block.start + c]] = block.lu + c * block.size + c;
+  }
+  work_.assign(n, 0.0);
+  analysed_ = true;
+  return true;
+}
+
+bool BlockLU::PlaceEntries(const std::vector<int>& rows, const std::vector<int>& cols, const std::vector<int>& row_position,
+                           const std::vector<int>& col_position, const std::vector<int>& block_of) {
   fill_.clear();
   off_.clear();
   for (size_t e = 0; e < rows.size(); ++e) {
@@ -159,20 +185,12 @@ bool BlockLU::Analyse(int n, const std::vector<int>& rows, const std::vector<int
     }
   }
   std::stable_sort(off_.begin(), off_.end(), [&](const OffDiagonal& a, const OffDiagonal& b) { return block_of[a.row] < block_of[b.row]; });
+  const int count = static_cast<int>(blocks_.size());
   for (int b = 0, i = 0; b < count; ++b) {
     blocks_[b].off_begin = i;
     while (i < static_cast<int>(off_.size()) && block_of[off_[i].row] == b) ++i;
     blocks_[b].off_end = i;
   }
-  lu_.assign(total, 0.0);
-  off_values_.assign(off_.size(), 0.0);
-  pivot_row_.assign(n, 0);
-  pivot_slot_.assign(n, 0);
-  for (const Block& block : blocks_) {
-    for (int c = 0; c < block.size; ++c) pivot_slot_[col_perm_[block.start + c]] = block.lu + c * block.size + c;
-  }
-  work_.assign(n, 0.0);
-  analysed_ = true;
   return true;
 }
 

@@ -3,6 +3,7 @@
 #include "koppel/core/plane.hpp"
 
 #include <cmath>
+#include <type_traits>
 
 namespace koppel {
 Expected<TransmissionGeometry> ResolveTransmission(const Mechanism& m, const Output& o) {
@@ -88,70 +89,95 @@ ConstraintSystem::ConstraintSystem(const Mechanism& mechanism)
   }
 }
 
+namespace {
+
+// The rows of joint records at a pose q (trig: cos and sin of each link's angle), each Jacobian
+// entry handed to sink(row, column, value). Record is ConstraintSystem's JointRecord.
+template <class Record, class Sink>
+class JointRowWriter {
+ public:
+  JointRowWriter(const double* q, const double* trig, double scale, Sink& sink) : q_(q), trig_(trig), scale_(scale), sink_(sink) {}
+
+  // R(theta) p for a point p of `link`, and the origin and angle of a link by its coordinates
+  Eigen::Vector2d Arm(int link, const Eigen::Vector2d& p) const {
+    const double c = trig_[2 * link], s = trig_[2 * link + 1];
+    return Eigen::Vector2d(c * p.x() - s * p.y(), s * p.x() + c * p.y());
+  }
+  Eigen::Vector2d Origin(int i) const { return i < 0 ? Eigen::Vector2d::Zero().eval() : Eigen::Vector2d(q_[i], q_[i + 1]); }
+  double Theta(int i) const { return i < 0 ? 0.0 : q_[i + 2]; }
+
+  // Row w(theta_a) . (p_b - p_a) where w is a direction fixed in link a (normal or axis).
+  double LineRow(int row, const Record& j, const Eigen::Vector2d& w_local) {
+    const Eigen::Vector2d w = Arm(j.link_a, w_local), arm_a = Arm(j.link_a, j.pa), arm_b = Arm(j.link_b, j.pb);
+    const Eigen::Vector2d d = Origin(j.ib) + arm_b - Origin(j.ia) - arm_a;
+    if (j.ia >= 0) {
+      sink_(row, j.ia, -w.x());
+      sink_(row, j.ia + 1, -w.y());
+      sink_(row, j.ia + 2, Perp(w).dot(d) - w.dot(Perp(arm_a)));
+    }
+    if (j.ib >= 0) {
+      sink_(row, j.ib, w.x());
+      sink_(row, j.ib + 1, w.y());
+      sink_(row, j.ib + 2, w.dot(Perp(arm_b)));
+    }
+    return w.dot(d);
+  }
+  // The Jacobian of a row (theta_b - theta_a) * L.
+  void AngleRow(int row, const Record& j) {
+    if (j.ia >= 0) sink_(row, j.ia + 2, -scale_);
+    if (j.ib >= 0) sink_(row, j.ib + 2, scale_);
+  }
+  // The two rows p_a - p_b = 0 of a revolute joint.
+  void RevoluteRows(int row, const Record& j, double* r) {
+    const Eigen::Vector2d arm_a = Arm(j.link_a, j.pa), arm_b = Arm(j.link_b, j.pb);
+    const Eigen::Vector2d gap = Origin(j.ia) + arm_a - Origin(j.ib) - arm_b;
+    r[row] = gap.x();
+    r[row + 1] = gap.y();
+    // d/dtheta of R(theta) p is the arm turned by +90 degrees
+    if (j.ia >= 0) {
+      sink_(row, j.ia, 1.0);
+      sink_(row + 1, j.ia + 1, 1.0);
+      sink_(row, j.ia + 2, -arm_a.y());
+      sink_(row + 1, j.ia + 2, arm_a.x());
+    }
+    if (j.ib >= 0) {
+      sink_(row, j.ib, -1.0);
+      sink_(row + 1, j.ib + 1, -1.0);
+      sink_(row, j.ib + 2, arm_b.y());
+      sink_(row + 1, j.ib + 2, -arm_b.x());
+    }
+  }
+
+ private:
+  const double* q_;
+  const double* trig_;
+  const double scale_;
+  Sink& sink_;
+};
+
+}  // namespace
+
 template <class Sink>
 void ConstraintSystem::EvaluateRows(const double* q, double input, const double* trig, double* r, Sink&& sink) const {
   const double scale = length_scale_;
-  // R(theta) p for a point p of `link`, and the origin and angle of a link by its coordinates
-  auto arm = [&](int link, const Eigen::Vector2d& p) {
-    const double c = trig[2 * link], s = trig[2 * link + 1];
-    return Eigen::Vector2d(c * p.x() - s * p.y(), s * p.x() + c * p.y());
-  };
-  auto origin = [&](int i) { return i < 0 ? Eigen::Vector2d::Zero().eval() : Eigen::Vector2d(q[i], q[i + 1]); };
-  auto theta = [&](int i) { return i < 0 ? 0.0 : q[i + 2]; };
-  // Row w(theta_a) . (p_b - p_a) where w is a direction fixed in link a (normal or axis).
-  auto line_row = [&](int row, const JointRecord& j, const Eigen::Vector2d& w_local) {
-    const Eigen::Vector2d w = arm(j.link_a, w_local), arm_a = arm(j.link_a, j.pa), arm_b = arm(j.link_b, j.pb);
-    const Eigen::Vector2d d = origin(j.ib) + arm_b - origin(j.ia) - arm_a;
-    if (j.ia >= 0) {
-      sink(row, j.ia, -w.x());
-      sink(row, j.ia + 1, -w.y());
-      sink(row, j.ia + 2, Perp(w).dot(d) - w.dot(Perp(arm_a)));
-    }
-    if (j.ib >= 0) {
-      sink(row, j.ib, w.x());
-      sink(row, j.ib + 1, w.y());
-      sink(row, j.ib + 2, w.dot(Perp(arm_b)));
-    }
-    return w.dot(d);
-  };
-  auto angle_row = [&](int row, const JointRecord& j) {
-    if (j.ia >= 0) sink(row, j.ia + 2, -scale);
-    if (j.ib >= 0) sink(row, j.ib + 2, scale);
-  };
-
+  JointRowWriter<JointRecord, std::remove_reference_t<Sink>> rows(q, trig, scale, sink);
   for (int k = 0; k < static_cast<int>(records_.size()); ++k) {
     const JointRecord& j = records_[k];
     const int row = FirstRowOf(k);
     if (j.revolute) {
-      const Eigen::Vector2d arm_a = arm(j.link_a, j.pa), arm_b = arm(j.link_b, j.pb);
-      const Eigen::Vector2d gap = origin(j.ia) + arm_a - origin(j.ib) - arm_b;
-      r[row] = gap.x();
-      r[row + 1] = gap.y();
-      // d/dtheta of R(theta) p is the arm turned by +90 degrees
-      if (j.ia >= 0) {
-        sink(row, j.ia, 1.0);
-        sink(row + 1, j.ia + 1, 1.0);
-        sink(row, j.ia + 2, -arm_a.y());
-        sink(row + 1, j.ia + 2, arm_a.x());
-      }
-      if (j.ib >= 0) {
-        sink(row, j.ib, -1.0);
-        sink(row + 1, j.ib + 1, -1.0);
-        sink(row, j.ib + 2, arm_b.y());
-        sink(row + 1, j.ib + 2, -arm_b.x());
-      }
+      rows.RevoluteRows(row, j, r);
     } else {
-      r[row] = line_row(row, j, Perp(j.axis));
-      r[row + 1] = WrapAngle(theta(j.ib) - theta(j.ia) - j.angle) * scale;
-      angle_row(row + 1, j);
+      r[row] = rows.LineRow(row, j, Perp(j.axis));
+      r[row + 1] = WrapAngle(rows.Theta(j.ib) - rows.Theta(j.ia) - j.angle) * scale;
+      rows.AngleRow(row + 1, j);
     }
   }
   const Drive& d = mechanism_.drive;
   if (drive_.revolute) {
-    r[DriveRow()] = WrapAngle(theta(drive_.ib) - theta(drive_.ia) - d.zero - input) * scale;
-    angle_row(DriveRow(), drive_);
+    r[DriveRow()] = WrapAngle(rows.Theta(drive_.ib) - rows.Theta(drive_.ia) - d.zero - input) * scale;
+    rows.AngleRow(DriveRow(), drive_);
   } else {
-    r[DriveRow()] = line_row(DriveRow(), drive_, drive_.axis) - d.zero - input;
+    r[DriveRow()] = rows.LineRow(DriveRow(), drive_, drive_.axis) - d.zero - input;
   }
 }
 

@@ -326,6 +326,77 @@ bool Continuation::RegularWalkTo(double target) {
   return true;
 }
 
+std::unique_ptr<Continuation::Window> Continuation::OpenBranchWindow(double estimate, double direction, double delta,
+                                                                     Eigen::MatrixXd* at_star) {
+  // A: a regular pose of the incoming branch, a window's half-width before the point
+  const double a_input = estimate - direction * delta;
+  if (!RegularWalkTo(a_input)) return nullptr;
+  const Eigen::MatrixXd a_series = Series(kWindowOrder).leftCols(kWindowOrder + 1);
+  const Eigen::VectorXd a_q = q_;
+  const double a_det = determinant_;
+  // B: as far beyond, predicted along A's Taylor series, the transfer functions verified
+  const double b_input = estimate + direction * delta;
+  const double span = b_input - a_input;
+  Eigen::VectorXd predicted = Eigen::VectorXd::Zero(a_q.size()), tangent = Eigen::VectorXd::Zero(a_q.size());
+  for (int k = kWindowOrder; k >= 0; --k) predicted = predicted * span + a_series.col(k);
+  for (int k = kWindowOrder; k >= 1; --k) tangent = tangent * span + k * a_series.col(k);
+  Eigen::VectorXd b_q = predicted;
+  const SolveReport at_b = solver_.Correct(b_input, b_q);
+  factorized_here_ = false;
+  if (!at_b.ok() || ScaledPoseNorm(b_q, predicted) > options_.max_correction) return nullptr;
+  Eigen::MatrixXd b_series;
+  solver_.Series(kWindowOrder, b_series);
+  if (ScaledTangentNorm(b_series.col(1), &tangent) > options_.max_tangent_change * (1.0 + ScaledTangentNorm(tangent, nullptr)))
+    return nullptr;
+  // the point: where det J changes sign between A and B along their Hermite interpolant
+  const double b_det = solver_.ScaledDeterminant();
+  const HermiteSegment incoming(a_input, a_series, b_input, b_series);
+  Eigen::VectorXd scratch = a_q;
+  const double star = (a_det > 0) != (b_det > 0) && a_det != 0.0 && b_det != 0.0
+                          ? LocateRoot(solver_, incoming, a_input, a_det, b_input, b_det, input_scale_, scratch)
+                          : estimate;
+  incoming.Coefficients(star, 1, *at_star);
+
+  auto window = std::make_unique<Window>();
+  window->direction = direction;
+  window->star = star;
+  window->near_end = a_input;
+  window->near_q = a_q;
+  window->incoming = incoming;
+  window->far_end = b_input;
+  window->far_q = b_q;
+  return window;
+}
+
+bool Continuation::SwitchBranchInWindow(const Eigen::MatrixXd& at_star, Window* window) {
+  const ConstraintSystem& system = solver_.system();
+  const double star = window->star, b_input = window->far_end;
+  const std::optional<Eigen::VectorXd> other = OtherBranchTangent(system, at_star.col(0), star, at_star.col(1));
+  if (!other) return false;
+  // B': the other branch's pose at B's input, predicted along its tangent from the point; it must
+  // land apart from B and near its prediction, with a tangent that agrees
+  Eigen::VectorXd other_q = at_star.col(0) + (b_input - star) * *other;
+  Eigen::MatrixXd other_series;
+  bool switched = false;
+  const Eigen::VectorXd other_predicted = other_q;
+  const Eigen::VectorXd incoming_tangent = at_star.col(1);
+  const double separation = ScaledTangentNorm(*other, &incoming_tangent) * std::abs(b_input - star) / input_scale_;
+  if (solver_.Correct(b_input, other_q).ok() && ScaledPoseNorm(other_q, window->far_q) > 0.25 * separation &&
+      ScaledPoseNorm(other_q, other_predicted) < 0.25 * separation) {
+    solver_.Series(kWindowOrder, other_series);
+    switched = ScaledTangentNorm(other_series.col(1), &*other) <=
+               5.0 * options_.max_tangent_change * (1.0 + ScaledTangentNorm(*other, nullptr));
+  }
+  factorized_here_ = false;
+  if (!switched) return false;
+  Eigen::MatrixXd star_data(at_star.rows(), 2);
+  star_data.col(0) = at_star.col(0);
+  star_data.col(1) = *other;
+  window->outgoing = HermiteSegment(star, star_data, b_input, other_series);
+  window->far_q = other_q;
+  return true;
+}
+
 Continuation::Crossing Continuation::CrossBranchPoint(double estimate, double direction, double target,
                                                       WalkReport* finished) {
   const ConstraintSystem& system = solver_.system();
@@ -334,83 +405,25 @@ Continuation::Crossing Continuation::CrossBranchPoint(double estimate, double di
   double delta = options_.branch_window * input_scale_;
   for (int attempt = 0; attempt < kCrossingAttempts; ++attempt, delta *= 0.25) {
     if (attempt > 0) SetRegularPose(start_input, start_q);
-    // A: a regular pose of the incoming branch, a window's half-width before the point
-    const double a_input = estimate - direction * delta;
-    if (!RegularWalkTo(a_input)) continue;
-    const Eigen::MatrixXd a_series = Series(kWindowOrder).leftCols(kWindowOrder + 1);
-    const Eigen::VectorXd a_q = q_;
-    const double a_det = determinant_;
-    // B: as far beyond, predicted along A's Taylor series, the transfer functions verified
-    const double b_input = estimate + direction * delta;
-    const double span = b_input - a_input;
-    Eigen::VectorXd predicted = Eigen::VectorXd::Zero(a_q.size()), tangent = Eigen::VectorXd::Zero(a_q.size());
-    for (int k = kWindowOrder; k >= 0; --k) predicted = predicted * span + a_series.col(k);
-    for (int k = kWindowOrder; k >= 1; --k) tangent = tangent * span + k * a_series.col(k);
-    Eigen::VectorXd b_q = predicted;
-    const SolveReport at_b = solver_.Correct(b_input, b_q);
-    factorized_here_ = false;
-    if (!at_b.ok() || ScaledPoseNorm(b_q, predicted) > options_.max_correction) continue;
-    Eigen::MatrixXd b_series;
-    solver_.Series(kWindowOrder, b_series);
-    if (ScaledTangentNorm(b_series.col(1), &tangent) > options_.max_tangent_change * (1.0 + ScaledTangentNorm(tangent, nullptr)))
-      continue;
-    const double b_det = solver_.ScaledDeterminant();
-    const HermiteSegment incoming(a_input, a_series, b_input, b_series);
-    Eigen::VectorXd scratch = a_q;
-    const double star = (a_det > 0) != (b_det > 0) && a_det != 0.0 && b_det != 0.0
-                            ? LocateRoot(solver_, incoming, a_input, a_det, b_input, b_det, input_scale_, scratch)
-                            : estimate;
     Eigen::MatrixXd at_star;
-    incoming.Coefficients(star, 1, at_star);
+    std::unique_ptr<Window> window = OpenBranchWindow(estimate, direction, delta, &at_star);
+    if (!window) continue;
+    const double star = window->star;
     const SingularStructure structure = AnalyseSingularity(system, at_star.col(0));
-
-    auto window = std::make_unique<Window>();
-    window->direction = direction;
-    window->star = star;
-    window->near_end = a_input;
-    window->near_q = a_q;
-    window->incoming = incoming;
-    window->far_end = b_input;
-    window->far_q = b_q;
     SingularPoint point{SingularKind::kBranchPoint, star, structure.rcond, structure.joints, options_.at_branch_point};
     const std::string joints = JointNames(system.mechanism(), structure.joints);
     if (options_.at_branch_point == BranchPointAction::kStop) {
       window->far_end = star;
       window->stop = true;
       window->stop_message = "a branch point at " + Where(star) + " (joints " + joints + "); stopped there as asked";
-    } else if (options_.at_branch_point == BranchPointAction::kSwitch) {
-      const std::optional<Eigen::VectorXd> other = OtherBranchTangent(system, at_star.col(0), star, at_star.col(1));
-      Eigen::VectorXd other_q;
-      Eigen::MatrixXd other_series;
-      bool switched = false;
-      if (other) {
-        other_q = at_star.col(0) + (b_input - star) * *other;
-        const Eigen::VectorXd other_predicted = other_q;
-        const Eigen::VectorXd incoming_tangent = at_star.col(1);
-        const double separation = ScaledTangentNorm(*other, &incoming_tangent) * std::abs(b_input - star) / input_scale_;
-        if (solver_.Correct(b_input, other_q).ok() && ScaledPoseNorm(other_q, b_q) > 0.25 * separation &&
-            ScaledPoseNorm(other_q, other_predicted) < 0.25 * separation) {
-          solver_.Series(kWindowOrder, other_series);
-          switched = ScaledTangentNorm(other_series.col(1), &*other) <=
-                     5.0 * options_.max_tangent_change * (1.0 + ScaledTangentNorm(*other, nullptr));
-        }
-        factorized_here_ = false;
-      }
-      if (switched) {
-        Eigen::MatrixXd star_data(a_q.size(), 2);
-        star_data.col(0) = at_star.col(0);
-        star_data.col(1) = *other;
-        window->outgoing = HermiteSegment(star, star_data, b_input, other_series);
-        window->far_q = other_q;
-      } else {
-        // the walk ends at the point: it may not continue on a branch it was told to leave
-        point.action = BranchPointAction::kStop;
-        window->far_end = star;
-        window->stop = true;
-        window->stop_message = "cannot switch to the other branch at the branch point " + Where(star) + " (joints " + joints +
-                               "): the other branch does not cross there in the input (it runs at constant input, or "
-                               "the crossing is not simple); stopped there";
-      }
+    } else if (options_.at_branch_point == BranchPointAction::kSwitch && !SwitchBranchInWindow(at_star, window.get())) {
+      // the walk ends at the point: it may not continue on a branch it was told to leave
+      point.action = BranchPointAction::kStop;
+      window->far_end = star;
+      window->stop = true;
+      window->stop_message = "cannot switch to the other branch at the branch point " + Where(star) + " (joints " + joints +
+                             "): the other branch does not cross there in the input (it runs at constant input, or "
+                             "the crossing is not simple); stopped there";
     }
     singular_points_.push_back(point);
     window_ = std::move(window);
@@ -555,12 +568,7 @@ WalkReport Continuation::AdvanceTo(double target, double max_step) {
       continue;
     }
     if (step.accepted) {
-      // det J changed sign: a singular position lies between the previous pose and this one,
-      // and the step got across on the incoming branch. Go back, locate it and cross it properly.
-      const double estimate =
-          (previous_input_ * determinant_ - input_ * previous_determinant_) / (determinant_ - previous_determinant_);
-      SetRegularPose(previous_input_, previous_q_);
-      const Crossing crossing = CrossBranchPoint(estimate, direction, target, &finished);
+      const Crossing crossing = CrossSignChange(direction, target, &finished);
       if (crossing == Crossing::kFinished) return finished;
       if (crossing == Crossing::kPassed) {
         h = cap;
@@ -572,38 +580,52 @@ WalkReport Continuation::AdvanceTo(double target, double max_step) {
     }
     h *= 0.5;
     if (!examined && h < options_.stall_fraction * cap) {
-      // Steps this short mean a singular position is near. A branch point is crossed here rather
-      // than crept around (creeping would follow a roundoff-sized detour onto the other branch).
       examined = true;
-      const SingularStructure s = AnalyseSingularity(solver_.system(), q_);
-      if (s.rcond < kNearSingularRcond && s.kind == SingularKind::kBranchPoint) {
-        const Crossing crossing = CrossBranchPoint(input_, direction, target, &finished);
-        if (crossing == Crossing::kFinished) return finished;
-        if (crossing == Crossing::kPassed) {
-          h = cap;
-          examined = false;
-          continue;
-        }
-      } else if (s.rcond < kNearSingularRcond && s.kind == SingularKind::kLimitPoint &&
-                 FinishAtLimitPoint(target, direction, &finished)) {
-        return finished;
+      const Crossing crossing = ExamineStall(direction, target, &finished);
+      if (crossing == Crossing::kFinished) return finished;
+      if (crossing == Crossing::kPassed) {
+        h = cap;
+        examined = false;
+        continue;
       }
     }
-    if (h < options_.limit_resolution * input_scale_) {
-      const SingularStructure s = AnalyseSingularity(solver_.system(), q_);
-      if (s.rcond < kNearSingularRcond) {
-        // A singular position no step passes ends the branch for the drive: a limit point, or a
-        // flat, self-stressed pose whose branches all turn back there (a double fold, such as the
-        // Peaucellier cell stretched out) — for the drive that too is a limit.
-        if (s.kind == SingularKind::kLimitPoint && FinishAtLimitPoint(target, direction, &finished)) return finished;
-        singular_points_.push_back({SingularKind::kLimitPoint, input_, s.rcond, s.joints, options_.at_branch_point});
-        return Ended(WalkStatus::kLimitPoint, LimitMessage(s, input_));
-      }
-      return Ended(WalkStatus::kFailed, "no pose could be found beyond " + Where(input_) +
-                                            " (Newton did not converge, and the pose there is not singular)");
-    }
+    if (h < options_.limit_resolution * input_scale_) return EndAtStall(direction, target);
   }
   return Reached();
+}
+
+Continuation::Crossing Continuation::CrossSignChange(double direction, double target, WalkReport* finished) {
+  // det J changed sign: a singular position lies between the previous pose and this one, and the
+  // step got across on the incoming branch. Go back, locate it and cross it properly.
+  const double estimate =
+      (previous_input_ * determinant_ - input_ * previous_determinant_) / (determinant_ - previous_determinant_);
+  SetRegularPose(previous_input_, previous_q_);
+  return CrossBranchPoint(estimate, direction, target, finished);
+}
+
+Continuation::Crossing Continuation::ExamineStall(double direction, double target, WalkReport* finished) {
+  // Steps this short mean a singular position is near. A branch point is crossed here rather
+  // than crept around (creeping would follow a roundoff-sized detour onto the other branch).
+  const SingularStructure s = AnalyseSingularity(solver_.system(), q_);
+  if (s.rcond < kNearSingularRcond && s.kind == SingularKind::kBranchPoint) return CrossBranchPoint(input_, direction, target, finished);
+  if (s.rcond < kNearSingularRcond && s.kind == SingularKind::kLimitPoint && FinishAtLimitPoint(target, direction, finished))
+    return Crossing::kFinished;
+  return Crossing::kNotCrossed;
+}
+
+WalkReport Continuation::EndAtStall(double direction, double target) {
+  const SingularStructure s = AnalyseSingularity(solver_.system(), q_);
+  if (s.rcond < kNearSingularRcond) {
+    // A singular position no step passes ends the branch for the drive: a limit point, or a
+    // flat, self-stressed pose whose branches all turn back there (a double fold, such as the
+    // Peaucellier cell stretched out) — for the drive that too is a limit.
+    WalkReport finished;
+    if (s.kind == SingularKind::kLimitPoint && FinishAtLimitPoint(target, direction, &finished)) return finished;
+    singular_points_.push_back({SingularKind::kLimitPoint, input_, s.rcond, s.joints, options_.at_branch_point});
+    return Ended(WalkStatus::kLimitPoint, LimitMessage(s, input_));
+  }
+  return Ended(WalkStatus::kFailed, "no pose could be found beyond " + Where(input_) +
+                                        " (Newton did not converge, and the pose there is not singular)");
 }
 
 }  // namespace koppel

@@ -26,6 +26,122 @@ constexpr double kAssemblyStallGain = 1e-3;
 // A pivot ratio below this counts as a singular Jacobian (about 100 ulps).
 constexpr double kSingularPivotRatio = 1e-14;
 
+// The link poses the assembly hint determines: hinted points give estimates of link points, joints
+// carry them (and the drive and prismatic joints carry angles) from posed links to their
+// neighbours, and a link with an angle and an estimated point is posed.
+class LinkPoseGuess {
+ public:
+  explicit LinkPoseGuess(const Mechanism& m)
+      : m_(m), n_links_(static_cast<int>(m.links.size())), posed_(n_links_, false), angle_known_(n_links_, false),
+        theta_(n_links_, 0.0), origin_(n_links_, Eigen::Vector2d::Zero()), estimates_(n_links_) {
+    const int frame = m.FrameLink();
+    posed_[frame] = angle_known_[frame] = true;
+    for (const AssemblyHint::Entry& e : m.hint.points) AddEstimate(e.point.link, e.point.point, e.global);
+  }
+
+  // Propagates what is determined; where nothing is, poses a link with the angle it has (or a
+  // free one) at its first estimated point (or the origin) and propagates again.
+  void PoseAll(int attempt) {
+    for (;;) {
+      Propagate();
+      int pick = -1;
+      for (int l = 0; l < n_links_ && pick < 0; ++l) {
+        if (!posed_[l] && !estimates_[l].empty()) pick = l;
+      }
+      for (int l = 0; l < n_links_ && pick < 0; ++l) {
+        if (!posed_[l]) pick = l;
+      }
+      if (pick < 0) break;
+      angle_known_[pick] = true;
+      // a free angle: 0 first, then angles spread by the golden ratio (no two attempts alike)
+      if (attempt > 0) theta_[pick] = WrapAngle(2 * kPi * std::fmod(0.6180339887498949 * (attempt + 7 * pick), 1.0));
+      if (!estimates_[pick].empty())
+        origin_[pick] = estimates_[pick][0].second - Rotate(theta_[pick], m_.links[pick].points[estimates_[pick][0].first].local);
+      posed_[pick] = true;
+    }
+  }
+
+  double theta(int link) const { return theta_[link]; }
+  const Eigen::Vector2d& origin(int link) const { return origin_[link]; }
+
+ private:
+  // An estimate of a link point's global position; the first one wins (false: one was known).
+  bool AddEstimate(int link, int point, const Eigen::Vector2d& g) {
+    for (const auto& [p, unused] : estimates_[link]) {
+      if (p == point) return false;
+    }
+    estimates_[link].emplace_back(point, g);
+    return true;
+  }
+  Eigen::Vector2d Global(int link, int point) const {
+    return Eigen::Vector2d(origin_[link] + Rotate(theta_[link], m_.links[link].points[point].local));
+  }
+  bool SetAngle(int link, double value) {
+    if (angle_known_[link]) return false;
+    angle_known_[link] = true;
+    theta_[link] = value;
+    return true;
+  }
+
+  // One pass over the joints: what a posed link (or one of known angle) says of its neighbour.
+  bool CarryAcrossJoints() {
+    const double input = m_.hint.input;
+    bool changed = false;
+    for (int k = 0; k < static_cast<int>(m_.joints.size()); ++k) {
+      const Joint& j = m_.joints[k];
+      const bool is_drive = (k == m_.drive.joint);
+      if (j.type == JointType::kRevolute) {
+        if (posed_[j.link_a] && !posed_[j.link_b]) changed |= AddEstimate(j.link_b, j.point_b, Global(j.link_a, j.point_a));
+        if (posed_[j.link_b] && !posed_[j.link_a]) changed |= AddEstimate(j.link_a, j.point_a, Global(j.link_b, j.point_b));
+        if (is_drive && angle_known_[j.link_a]) changed |= SetAngle(j.link_b, theta_[j.link_a] + m_.drive.zero + input);
+        if (is_drive && angle_known_[j.link_b]) changed |= SetAngle(j.link_a, theta_[j.link_b] - m_.drive.zero - input);
+      } else {
+        if (angle_known_[j.link_a]) changed |= SetAngle(j.link_b, theta_[j.link_a] + j.angle);
+        if (angle_known_[j.link_b]) changed |= SetAngle(j.link_a, theta_[j.link_b] - j.angle);
+        const double s = is_drive ? m_.drive.zero + input : 0.0;
+        if (posed_[j.link_a] && !posed_[j.link_b])
+          changed |= AddEstimate(j.link_b, j.point_b, Global(j.link_a, j.point_a) + s * Rotate(theta_[j.link_a], j.axis));
+      }
+    }
+    return changed;
+  }
+
+  // Poses each link with an angle (known, or from two estimated points) and an estimated point.
+  bool PoseEstimatedLinks() {
+    bool changed = false;
+    for (int l = 0; l < n_links_; ++l) {
+      if (posed_[l] || estimates_[l].empty()) continue;
+      const auto& est = estimates_[l];
+      const Eigen::Vector2d& p0 = m_.links[l].points[est[0].first].local;
+      if (!angle_known_[l] && est.size() >= 2) {
+        const Eigen::Vector2d& p1 = m_.links[l].points[est[1].first].local;
+        const Eigen::Vector2d dl = p1 - p0, dg = est[1].second - est[0].second;
+        if (dl.norm() > 0 && dg.norm() > 0) SetAngle(l, std::atan2(dg.y(), dg.x()) - std::atan2(dl.y(), dl.x()));
+      }
+      if (!angle_known_[l]) continue;
+      origin_[l] = est[0].second - Rotate(theta_[l], p0);
+      posed_[l] = changed = true;
+    }
+    return changed;
+  }
+
+  void Propagate() {
+    bool changed = true;
+    while (changed) {
+      changed = CarryAcrossJoints();
+      changed = PoseEstimatedLinks() || changed;
+    }
+  }
+
+  const Mechanism& m_;
+  const int n_links_;
+  std::vector<bool> posed_, angle_known_;
+  std::vector<double> theta_;
+  std::vector<Eigen::Vector2d> origin_;
+  // global estimates of link points, (point index, position) per link
+  std::vector<std::vector<std::pair<int, Eigen::Vector2d>>> estimates_;
+};
+
 }  // namespace
 
 const char* ToString(SolveStatus status) {
@@ -198,93 +314,15 @@ SolveReport PositionSolver::Correct(double input, Eigen::VectorXd& q) {
 }
 
 Eigen::VectorXd PositionSolver::InitialGuess(int attempt) const {
-  const Mechanism& m = mechanism_;
-  const int n_links = static_cast<int>(m.links.size());
-  const double input = m.hint.input;
-  std::vector<bool> posed(n_links, false), angle_known(n_links, false);
-  std::vector<double> theta(n_links, 0.0);
-  std::vector<Eigen::Vector2d> origin(n_links, Eigen::Vector2d::Zero());
-  // Global estimates of link points, (point index, position) per link; the first one wins.
-  std::vector<std::vector<std::pair<int, Eigen::Vector2d>>> estimates(n_links);
-  auto add_estimate = [&](int link, int point, const Eigen::Vector2d& g) {
-    for (const auto& [p, unused] : estimates[link]) {
-      if (p == point) return false;
-    }
-    estimates[link].emplace_back(point, g);
-    return true;
-  };
-  auto global = [&](int link, int point) { return Eigen::Vector2d(origin[link] + Rotate(theta[link], m.links[link].points[point].local)); };
-  auto set_angle = [&](int link, double value) {
-    if (angle_known[link]) return false;
-    angle_known[link] = true;
-    theta[link] = value;
-    return true;
-  };
-  const int frame = m.FrameLink();
-  posed[frame] = angle_known[frame] = true;
-  for (const AssemblyHint::Entry& e : m.hint.points) add_estimate(e.point.link, e.point.point, e.global);
-
-  auto propagate = [&] {
-    bool changed = true;
-    while (changed) {
-      changed = false;
-      for (int k = 0; k < static_cast<int>(m.joints.size()); ++k) {
-        const Joint& j = m.joints[k];
-        const bool is_drive = (k == m.drive.joint);
-        if (j.type == JointType::kRevolute) {
-          if (posed[j.link_a] && !posed[j.link_b]) changed |= add_estimate(j.link_b, j.point_b, global(j.link_a, j.point_a));
-          if (posed[j.link_b] && !posed[j.link_a]) changed |= add_estimate(j.link_a, j.point_a, global(j.link_b, j.point_b));
-          if (is_drive && angle_known[j.link_a]) changed |= set_angle(j.link_b, theta[j.link_a] + m.drive.zero + input);
-          if (is_drive && angle_known[j.link_b]) changed |= set_angle(j.link_a, theta[j.link_b] - m.drive.zero - input);
-        } else {
-          if (angle_known[j.link_a]) changed |= set_angle(j.link_b, theta[j.link_a] + j.angle);
-          if (angle_known[j.link_b]) changed |= set_angle(j.link_a, theta[j.link_b] - j.angle);
-          const double s = is_drive ? m.drive.zero + input : 0.0;
-          if (posed[j.link_a] && !posed[j.link_b])
-            changed |= add_estimate(j.link_b, j.point_b, global(j.link_a, j.point_a) + s * Rotate(theta[j.link_a], j.axis));
-        }
-      }
-      for (int l = 0; l < n_links; ++l) {
-        if (posed[l] || estimates[l].empty()) continue;
-        const auto& est = estimates[l];
-        const Eigen::Vector2d& p0 = m.links[l].points[est[0].first].local;
-        if (!angle_known[l] && est.size() >= 2) {
-          const Eigen::Vector2d& p1 = m.links[l].points[est[1].first].local;
-          const Eigen::Vector2d dl = p1 - p0, dg = est[1].second - est[0].second;
-          if (dl.norm() > 0 && dg.norm() > 0) set_angle(l, std::atan2(dg.y(), dg.x()) - std::atan2(dl.y(), dl.x()));
-        }
-        if (!angle_known[l]) continue;
-        origin[l] = est[0].second - Rotate(theta[l], p0);
-        posed[l] = changed = true;
-      }
-    }
-  };
-  // Propagate what is determined; where nothing is, pose a link with the angle it has (or 0)
-  // at its first estimated point (or the origin) and propagate again.
-  for (;;) {
-    propagate();
-    int pick = -1;
-    for (int l = 0; l < n_links && pick < 0; ++l) {
-      if (!posed[l] && !estimates[l].empty()) pick = l;
-    }
-    for (int l = 0; l < n_links && pick < 0; ++l) {
-      if (!posed[l]) pick = l;
-    }
-    if (pick < 0) break;
-    angle_known[pick] = true;
-    // a free angle: 0 first, then angles spread by the golden ratio (no two attempts alike)
-    if (attempt > 0) theta[pick] = WrapAngle(2 * kPi * std::fmod(0.6180339887498949 * (attempt + 7 * pick), 1.0));
-    if (!estimates[pick].empty())
-      origin[pick] = estimates[pick][0].second - Rotate(theta[pick], m.links[pick].points[estimates[pick][0].first].local);
-    posed[pick] = true;
-  }
+  LinkPoseGuess guess(mechanism_);
+  guess.PoseAll(attempt);
   Eigen::VectorXd q(system_.NumCoordinates());
-  for (int l = 0; l < n_links; ++l) {
+  for (int l = 0; l < static_cast<int>(mechanism_.links.size()); ++l) {
     const int i = system_.CoordinateOf(l);
     if (i < 0) continue;
-    q(i) = origin[l].x();
-    q(i + 1) = origin[l].y();
-    q(i + 2) = theta[l];
+    q(i) = guess.origin(l).x();
+    q(i + 1) = guess.origin(l).y();
+    q(i + 2) = guess.theta(l);
   }
   return q;
 }

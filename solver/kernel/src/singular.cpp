@@ -64,6 +64,49 @@ Eigen::VectorXd HalfSecondDerivative(const ConstraintSystem& system, const Eigen
   return out;
 }
 
+// The augmented Newton system of a limit point (Moore-Spence): F(q, input) = 0, (J S) u = 0 and
+// c.u = 1 in the unknowns (S^-1 q, input, u); its residual *g and Jacobian *a at (q, lambda, u).
+// False when F is not finite there.
+bool LimitPointNewtonSystem(const ConstraintSystem& system, const Eigen::VectorXd& q, double lambda, const Eigen::VectorXd& u,
+                            const Eigen::VectorXd& c, const Eigen::VectorXd& scale, Eigen::MatrixXd* a, Eigen::VectorXd* g) {
+  const int n = system.NumCoordinates();
+  Eigen::MatrixXd jacobian(n, n);
+  Eigen::VectorXd residual(n), e = Eigen::VectorXd::Zero(n);
+  system.Jacobian(q.data(), jacobian);
+  const Eigen::MatrixXd scaled = jacobian * scale.asDiagonal();
+  system.Residuals(q.data(), lambda, residual.data());
+  if (!residual.allFinite()) return false;
+  const Eigen::VectorXd v = scale.cwiseProduct(u);
+  g->head(n) = residual;
+  g->segment(n, n) = scaled * u;
+  (*g)(2 * n) = c.dot(u) - 1.0;
+  a->setZero();
+  a->topLeftCorner(n, n) = scaled;
+  (*a)(system.DriveRow(), n) = system.InputColumn();
+  // d(J S u)/dx_i = F''[v, S e_i] = (H(v + S e_i) - H(v - S e_i)) / 2, H the half second
+  // derivative: exact, both directions of the size of one unit of L
+  for (int i = 0; i < n; ++i) {
+    e(i) = scale(i);
+    a->block(n, i, n, 1) = 0.5 * (HalfSecondDerivative(system, q, lambda, v + e) - HalfSecondDerivative(system, q, lambda, v - e));
+    e(i) = 0.0;
+  }
+  a->block(n, n + 1, n, n) = scaled;
+  a->block(2 * n, n + 1, 1, n) = c.transpose();
+  return true;
+}
+
+// The curvature input'' of the branch through a limit point (q, lambda) with null vector `null`
+// and scaled Jacobian `scaled`: differentiate F(q(s), input(s)) = 0 twice at s = 0 (q' = null,
+// input' = 0) and project on the left null vector psi: psi.F''[null, null] + psi.F_input input'' = 0.
+// 0 when the drive row has no share in psi.
+double LimitPointCurvature(const ConstraintSystem& system, const Eigen::MatrixXd& scaled, const Eigen::VectorXd& q, double lambda,
+                           const Eigen::VectorXd& null) {
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled, Eigen::ComputeFullU);
+  const Eigen::VectorXd psi = svd.matrixU().col(system.NumCoordinates() - 1);
+  const double along = psi(system.DriveRow()) * system.InputColumn();
+  return along != 0.0 ? -psi.dot(HalfSecondDerivative(system, q, lambda, null)) / along : 0.0;
+}
+
 }  // namespace
 
 const char* ToString(SingularKind kind) {
@@ -177,31 +220,12 @@ std::optional<LimitPoint> LocateLimitPoint(const ConstraintSystem& system, doubl
   }
   const Eigen::VectorXd c = u;
   Eigen::MatrixXd jacobian(n, n), a(2 * n + 1, 2 * n + 1);
-  Eigen::VectorXd g(2 * n + 1), residual(n), e = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd g(2 * n + 1), residual(n);
   double previous_step = std::numeric_limits<double>::infinity();
   int growing = 0, it = 0;
   bool converged = false;
   for (; it < kLimitIterations; ++it) {
-    system.Jacobian(q.data(), jacobian);
-    const Eigen::MatrixXd scaled = jacobian * scale.asDiagonal();
-    system.Residuals(q.data(), lambda, residual.data());
-    if (!residual.allFinite()) return std::nullopt;
-    const Eigen::VectorXd v = scale.cwiseProduct(u);
-    g.head(n) = residual;
-    g.segment(n, n) = scaled * u;
-    g(2 * n) = c.dot(u) - 1.0;
-    a.setZero();
-    a.topLeftCorner(n, n) = scaled;
-    a(system.DriveRow(), n) = system.InputColumn();
-    // d(J S u)/dx_i = F''[v, S e_i] = (H(v + S e_i) - H(v - S e_i)) / 2, H the half second
-    // derivative: exact, both directions of the size of one unit of L
-    for (int i = 0; i < n; ++i) {
-      e(i) = scale(i);
-      a.block(n, i, n, 1) = 0.5 * (HalfSecondDerivative(system, q, lambda, v + e) - HalfSecondDerivative(system, q, lambda, v - e));
-      e(i) = 0.0;
-    }
-    a.block(n, n + 1, n, n) = scaled;
-    a.block(2 * n, n + 1, 1, n) = c.transpose();
+    if (!LimitPointNewtonSystem(system, q, lambda, u, c, scale, &a, &g)) return std::nullopt;
     const Eigen::PartialPivLU<Eigen::MatrixXd> lu(a);
     const Eigen::VectorXd d = lu.solve(-g);
     if (!d.allFinite()) return std::nullopt;
@@ -234,12 +258,7 @@ std::optional<LimitPoint> LocateLimitPoint(const ConstraintSystem& system, doubl
   out.q = q;
   out.null = scale.cwiseProduct(u / u.norm());
   out.iterations = it;
-  // curvature: differentiate F(q(s), input(s)) = 0 twice at s = 0 (q' = null, input' = 0) and
-  // project on the left null vector psi: psi.F''[null, null] + psi.F_input input'' = 0
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled, Eigen::ComputeFullU);
-  const Eigen::VectorXd psi = svd.matrixU().col(n - 1);
-  const double along = psi(system.DriveRow()) * system.InputColumn();
-  if (along != 0.0) out.curvature = -psi.dot(HalfSecondDerivative(system, q, lambda, out.null)) / along;
+  out.curvature = LimitPointCurvature(system, scaled, q, lambda, out.null);
   return out;
 }
 

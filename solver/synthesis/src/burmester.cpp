@@ -316,6 +316,74 @@ CentrePointResult CentrePointTwoPoses(const std::vector<Pose>& poses, const Eige
   return r;
 }
 
+namespace {
+
+// Points of the centre-point curve (centre point, circle point; normalised units) on one line
+// through the pole.
+using PoleLinePoints = std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>>;
+
+// The curve's points on the line through the pole at angle beta (normalised units) within reach,
+// each polished onto the curve.
+PoleLinePoints CentrePointsOnPoleLine(const std::vector<Condition>& c, const Eigen::Vector2d& pole, double beta, double reach) {
+  PoleLinePoints points;
+  const Eigen::Vector2d dir(std::cos(beta), std::sin(beta));
+  // det(t) has the root t = 0 (the pole is on the curve): divide it out
+  Poly p = LineDeterminant(c, {0, 1, 2}, pole, dir);
+  p.erase(p.begin());
+  for (const std::complex<double>& t : Roots(p)) {
+    if (std::abs(t.imag()) > 1e-9 * (1 + std::abs(t.real()))) continue;
+    const Eigen::Vector2d m = pole + t.real() * dir;
+    if (m.norm() > reach) continue;
+    Eigen::Vector2d a = CirclePointOf(c, m), mm = m;
+    if (!PolishDyad(c, &mm, &a) || (mm - m).norm() > 1e-6 || a.norm() > reach) continue;
+    points.push_back({mm, a});
+  }
+  return points;
+}
+
+// The centre-point curve's points on `directions` uniform lines through the pole, refined where
+// the curve runs nearly along the lines (the points of neighbouring directions lie far apart, or
+// their number changes); by direction.
+std::vector<std::pair<double, PoleLinePoints>> SampleCentrePointCurve(const std::vector<Condition>& c, const Eigen::Vector2d& pole,
+                                                                      int directions, bool refine, double reach) {
+  constexpr double kGap = 0.02;  // of the poses' size
+  constexpr int kRefinements = 10;
+  auto far_apart = [&](const PoleLinePoints& u, const PoleLinePoints& v) {
+    if (u.size() != v.size()) return true;
+    for (const auto& x : u) {
+      double nearest = 1e300;
+      for (const auto& y : v) nearest = std::min(nearest, (x.first - y.first).norm());
+      if (nearest > kGap) return true;
+    }
+    return false;
+  };
+  auto on_line = [&](double beta) { return CentrePointsOnPoleLine(c, pole, beta, reach); };
+  std::vector<std::pair<double, PoleLinePoints>> lines;
+  std::function<void(double, const PoleLinePoints&, double, const PoleLinePoints&, int)> bisect =
+      [&](double b0, const PoleLinePoints& p0, double b1, const PoleLinePoints& p1, int depth) {
+        if (!refine || depth >= kRefinements || !far_apart(p0, p1)) return;
+        const double mid = 0.5 * (b0 + b1);
+        const PoleLinePoints pm = on_line(mid);
+        bisect(b0, p0, mid, pm, depth + 1);
+        lines.push_back({mid, pm});
+        bisect(mid, pm, b1, p1, depth + 1);
+      };
+  PoleLinePoints previous = on_line(0);
+  for (int i = 0; i < directions; ++i) {
+    const double beta = kPi * i / directions, next = kPi * (i + 1) / directions;
+    const PoleLinePoints here = previous;
+    lines.push_back({beta, here});
+    if (i + 1 < directions) {
+      previous = on_line(next);
+      bisect(beta, here, next, previous, 0);
+    }
+  }
+  std::sort(lines.begin(), lines.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  return lines;
+}
+
+}  // namespace
+
 BurmesterCurves CentrePointCurve(const std::vector<Pose>& poses, int directions, bool refine, double reach) {
   BurmesterCurves curves;
   if (poses.size() != 4 || directions < 1) {
@@ -331,59 +399,7 @@ BurmesterCurves CentrePointCurve(const std::vector<Pose>& poses, int directions,
     return curves;
   }
   curves.base_pole = n.Back(pole);
-  // the curve's points on the line through the pole at angle beta (normalised units)
-  auto on_line = [&](double beta) {
-    std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> points;
-    const Eigen::Vector2d dir(std::cos(beta), std::sin(beta));
-    // det(t) has the root t = 0 (the pole is on the curve): divide it out
-    Poly p = LineDeterminant(c, {0, 1, 2}, pole, dir);
-    p.erase(p.begin());
-    for (const std::complex<double>& t : Roots(p)) {
-      if (std::abs(t.imag()) > 1e-9 * (1 + std::abs(t.real()))) continue;
-      const Eigen::Vector2d m = pole + t.real() * dir;
-      if (m.norm() > reach) continue;
-      Eigen::Vector2d a = CirclePointOf(c, m), mm = m;
-      if (!PolishDyad(c, &mm, &a) || (mm - m).norm() > 1e-6 || a.norm() > reach) continue;
-      points.push_back({mm, a});
-    }
-    return points;
-  };
-  // uniform directions, refined where the curve runs nearly along the lines (the points of
-  // neighbouring directions lie far apart, or their number changes)
-  using Points = std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>>;
-  constexpr double kGap = 0.02;  // of the poses' size
-  constexpr int kRefinements = 10;
-  auto far_apart = [&](const Points& u, const Points& v) {
-    if (u.size() != v.size()) return true;
-    for (const auto& x : u) {
-      double nearest = 1e300;
-      for (const auto& y : v) nearest = std::min(nearest, (x.first - y.first).norm());
-      if (nearest > kGap) return true;
-    }
-    return false;
-  };
-  std::vector<std::pair<double, Points>> lines;
-  std::function<void(double, const Points&, double, const Points&, int)> bisect = [&](double b0, const Points& p0, double b1, const Points& p1,
-                                                                                      int depth) {
-    if (!refine || depth >= kRefinements || !far_apart(p0, p1)) return;
-    const double mid = 0.5 * (b0 + b1);
-    const Points pm = on_line(mid);
-    bisect(b0, p0, mid, pm, depth + 1);
-    lines.push_back({mid, pm});
-    bisect(mid, pm, b1, p1, depth + 1);
-  };
-  Points previous = on_line(0);
-  for (int i = 0; i < directions; ++i) {
-    const double beta = kPi * i / directions, next = kPi * (i + 1) / directions;
-    const Points here = previous;
-    lines.push_back({beta, here});
-    if (i + 1 < directions) {
-      previous = on_line(next);
-      bisect(beta, here, next, previous, 0);
-    }
-  }
-  std::sort(lines.begin(), lines.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  for (const auto& [beta, points] : lines) {
+  for (const auto& [beta, points] : SampleCentrePointCurve(c, pole, directions, refine, reach)) {
     for (const auto& [m, a] : points) {
       const Dyad dyad{n.Back(m), n.Back(a)};
       if (DyadResidual(poses, dyad) > kDyadTolerance * n.scale) continue;

@@ -52,6 +52,105 @@ Mechanism BuildFourBar(const std::string& name, const std::string& p0, Complex z
   return m;
 }
 
+// The original four-bar's joints A0, A, B, B0 and the coupler point K at its assembled pose.
+struct OriginalFourBarPose {
+  Complex a0, a, b, b0, k;
+};
+
+Expected<OriginalFourBarPose> AssembleOriginalFourBar(const Mechanism& m, const FourBarJoints& f, const PointRef& point) {
+  PositionSolver solver(m);
+  Eigen::VectorXd q(solver.NumCoordinates());
+  const SolveReport assembled = solver.Assemble(q);
+  if (!assembled.ok()) return Expected<OriginalFourBarPose>::Error("cannot assemble the original: " + assembled.message);
+  auto at = [&](const PointRef& ref) {
+    double xy[2];
+    solver.system().GlobalPoint(ref, q.data(), xy);
+    return Complex(xy[0], xy[1]);
+  };
+  auto joint_on = [&](int joint, int link) {
+    const Joint& j = m.joints[joint];
+    return at(j.link_a == link ? PointRef{j.link_a, j.point_a} : PointRef{j.link_b, j.point_b});
+  };
+  return OriginalFourBarPose{joint_on(f.a0, f.crank), joint_on(f.a, f.crank), joint_on(f.b, f.coupler),
+                             joint_on(f.b0, f.rocker), at(point)};
+}
+
+// The link lengths of both cognates (frame, crank, coupler, rocker, and K's distances from the
+// coupler's joints), from their pivots and joints.
+void SetCognateLengths(Cognates* c, Complex k, Complex a0, Complex a1, Complex c1, Complex c0, Complex c2, Complex b2,
+                       Complex b0) {
+  c->frame_first = std::abs(c0 - a0);
+  c->crank_first = std::abs(a1 - a0);
+  c->coupler_first = std::abs(c1 - a1);
+  c->rocker_first = std::abs(c1 - c0);
+  c->k_first = std::abs(k - a1);
+  c->l_first = std::abs(k - c1);
+  c->frame_second = std::abs(b0 - c0);
+  c->crank_second = std::abs(c2 - c0);
+  c->coupler_second = std::abs(b2 - c2);
+  c->rocker_second = std::abs(b2 - b0);
+  c->k_second = std::abs(k - b2);
+  c->l_second = std::abs(k - c2);
+}
+
+// The original with two outputs: its coupler's direction (A to B) and the point K.
+Mechanism CouplerDirectionAndPoint(const Mechanism& m, const FourBarJoints& f, const PointRef& point) {
+  Mechanism traced = m;
+  traced.outputs.clear();
+  Output coupler;
+  coupler.name = "coupler";
+  coupler.kind = OutputKind::kDirection;
+  auto on_coupler = [&](int joint) {
+    const Joint& j = m.joints[joint];
+    return PointRef{f.coupler, j.link_a == f.coupler ? j.point_a : j.point_b};
+  };
+  coupler.p = on_coupler(f.a);
+  coupler.q = on_coupler(f.b);
+  Output traced_k;
+  traced_k.name = "K";
+  traced_k.kind = OutputKind::kPoint;
+  traced_k.p = point;
+  traced.outputs = {coupler, traced_k};
+  return traced;
+}
+
+// Cognate 1's input range over a turn of the original: its crank turns with the original's
+// coupler, so its input is `start` plus the unwrapped turning of the coupler direction (column 0
+// of `sweep`, which begins at `coupler_start`).
+void SetFirstCognateInputRange(Cognates* c, const SweepResult& sweep, double coupler_start, double start) {
+  c->first_input_min = c->first_input_max = start;
+  double previous = coupler_start, unwrapped = start;
+  for (size_t i = 0; i < sweep.inputs.size(); ++i) {
+    // unwrap the sampled direction so a full turn of the coupler shows as one
+    const double d = std::remainder(sweep.outputs(i, 0) - previous, 2 * kPi);
+    previous += d;
+    unwrapped += d;
+    c->first_input_min = std::min(c->first_input_min, unwrapped);
+    c->first_input_max = std::max(c->first_input_max, unwrapped);
+  }
+}
+
+// Roberts' theorem says cognate 2, driven with the original's input, puts K where the original
+// does; proved here on this mechanism, sample by sample (its hint could have picked the other
+// assembly branch, which traces another curve). Empty when it does, else why not.
+std::string SecondCognateTracesOriginal(const Mechanism& m, const Cognates& c, const SweepOptions& turn,
+                                        const SweepResult& original) {
+  const SweepResult second = Sweep(c.second, turn);
+  const double same = 1e-9 * std::max(1.0, LengthScale(m));
+  double worst = 0;
+  const size_t n = std::min(original.inputs.size(), second.inputs.size());
+  for (size_t i = 0; i < n; ++i) {
+    if (std::abs(original.inputs[i] - second.inputs[i]) > 1e-12) break;
+    const auto row = static_cast<Eigen::Index>(i);
+    worst = std::max({worst, std::abs(second.outputs(row, 0) - original.outputs(row, 1)),
+                      std::abs(second.outputs(row, 1) - original.outputs(row, 2))});
+  }
+  if (n < 2) return "cognate 2 could not be swept beside the original: " + second.message;
+  if (!(worst <= same))
+    return "cognate 2 does not trace the original's coupler curve (off by " + std::to_string(worst) + "): not reported";
+  return "";
+}
+
 }  // namespace
 
 Expected<FourBarJoints> IdentifyFourBar(const Mechanism& m) {
@@ -117,24 +216,12 @@ Cognates RobertsCognates(const Mechanism& m, const PointRef& point) {
     c.message = "the point must lie on the coupler '" + m.links[f.coupler].name + "'";
     return c;
   }
-  PositionSolver solver(m);
-  Eigen::VectorXd q(solver.NumCoordinates());
-  const SolveReport assembled = solver.Assemble(q);
-  if (!assembled.ok()) {
-    c.message = "cannot assemble the original: " + assembled.message;
+  const Expected<OriginalFourBarPose> original = AssembleOriginalFourBar(m, f, point);
+  if (!original) {
+    c.message = original.error();
     return c;
   }
-  auto at = [&](int joint, int link) {
-    const Joint& j = m.joints[joint];
-    const PointRef ref = j.link_a == link ? PointRef{j.link_a, j.point_a} : PointRef{j.link_b, j.point_b};
-    double xy[2];
-    solver.system().GlobalPoint(ref, q.data(), xy);
-    return Complex(xy[0], xy[1]);
-  };
-  const Complex a0 = at(f.a0, f.crank), a = at(f.a, f.crank), b = at(f.b, f.coupler), b0 = at(f.b0, f.rocker);
-  double xy[2];
-  solver.system().GlobalPoint(point, q.data(), xy);
-  const Complex k(xy[0], xy[1]);
+  const auto [a0, a, b, b0, k] = *original;
   c.status = DesignStatus::kNoDesign;  // from here on: the geometry has no cognates
   if (std::abs(b - a) == 0) {
     c.message = "the coupler joints coincide";
@@ -153,67 +240,19 @@ Cognates RobertsCognates(const Mechanism& m, const PointRef& point) {
   c.first = BuildFourBar(m.name + "-cognate-1", "A0", a0, "A1", a1, "C1", c1, "C0", c0, k, std::arg(a1 - a0));
   // cognate 2's crank turns with the original crank: the same input as the original
   c.second = BuildFourBar(m.name + "-cognate-2", "C0", c0, "C2", c2, "B2", b2, "B0", b0, k, input);
-  c.frame_first = std::abs(c0 - a0);
-  c.crank_first = std::abs(a1 - a0);
-  c.coupler_first = std::abs(c1 - a1);
-  c.rocker_first = std::abs(c1 - c0);
-  c.k_first = std::abs(k - a1);
-  c.l_first = std::abs(k - c1);
-  c.frame_second = std::abs(b0 - c0);
-  c.crank_second = std::abs(c2 - c0);
-  c.coupler_second = std::abs(b2 - c2);
-  c.rocker_second = std::abs(b2 - b0);
-  c.k_second = std::abs(k - b2);
-  c.l_second = std::abs(k - c2);
+  SetCognateLengths(&c, k, a0, a1, c1, c0, c2, b2, b0);
   // cognate 1's input over a turn of the original: the direction of r (B - A)
   SweepOptions turn;
   turn.from = input;
   turn.to = input + 2 * kPi;
   turn.step = kPi / 360;
-  Mechanism traced = m;
-  traced.outputs.clear();
-  Output coupler;
-  coupler.name = "coupler";
-  coupler.kind = OutputKind::kDirection;
-  auto on_coupler = [&](int joint) {
-    const Joint& j = m.joints[joint];
-    return PointRef{f.coupler, j.link_a == f.coupler ? j.point_a : j.point_b};
-  };
-  coupler.p = on_coupler(f.a);
-  coupler.q = on_coupler(f.b);
-  Output traced_k;
-  traced_k.name = "K";
-  traced_k.kind = OutputKind::kPoint;
-  traced_k.p = point;
-  traced.outputs = {coupler, traced_k};
   turn.order = 0;  // columns: the coupler's direction, K_x, K_y
-  const SweepResult sweep = Sweep(traced, turn);
-  c.first_input_min = c.first_input_max = std::arg(a1 - a0);
-  double previous = std::arg(b - a), unwrapped = std::arg(a1 - a0);
-  for (size_t i = 0; i < sweep.inputs.size(); ++i) {
-    // unwrap the sampled direction so a full turn of the coupler shows as one
-    const double d = std::remainder(sweep.outputs(i, 0) - previous, 2 * kPi);
-    previous += d;
-    unwrapped += d;
-    c.first_input_min = std::min(c.first_input_min, unwrapped);
-    c.first_input_max = std::max(c.first_input_max, unwrapped);
-  }
-  // Roberts' theorem says cognate 2, driven with the original's input, puts K where the original
-  // does; proved here on this mechanism, sample by sample (its hint could have picked the other
-  // assembly branch, which traces another curve).
-  const SweepResult second = Sweep(c.second, turn);
-  const double same = 1e-9 * std::max(1.0, LengthScale(m));
-  double worst = 0;
-  const size_t n = std::min(sweep.inputs.size(), second.inputs.size());
-  for (size_t i = 0; i < n; ++i) {
-    if (std::abs(sweep.inputs[i] - second.inputs[i]) > 1e-12) break;
-    const auto row = static_cast<Eigen::Index>(i);
-    worst = std::max({worst, std::abs(second.outputs(row, 0) - sweep.outputs(row, 1)), std::abs(second.outputs(row, 1) - sweep.outputs(row, 2))});
-  }
-  if (n < 2 || !(worst <= same)) {
+  const SweepResult sweep = Sweep(CouplerDirectionAndPoint(m, f, point), turn);
+  SetFirstCognateInputRange(&c, sweep, std::arg(b - a), std::arg(a1 - a0));
+  const std::string mismatch = SecondCognateTracesOriginal(m, c, turn, sweep);
+  if (!mismatch.empty()) {
     c.status = DesignStatus::kReanalysisFailed;
-    c.message = n < 2 ? "cognate 2 could not be swept beside the original: " + second.message
-                      : "cognate 2 does not trace the original's coupler curve (off by " + std::to_string(worst) + "): not reported";
+    c.message = mismatch;
     return c;
   }
   c.status = DesignStatus::kOk;

@@ -228,6 +228,35 @@ std::string FitReport::Brief() const {
   return text;
 }
 
+namespace {
+
+// The verdict on the fitted design: every target within its tolerance, and the required range.
+void SetFitVerdict(const Mechanism& fitted, const FitOptions& options, FitReport* report) {
+  std::string missed;
+  int n_missed = 0;
+  for (size_t i = 0; i < report->targets.size(); ++i) {
+    const FitTargetResult& t = report->targets[i];
+    if (t.met) continue;
+    ++n_missed;
+    missed += fmt::format("{}target {} '{}' misses by {}", missed.empty() ? "" : "; ", i + 1, t.name, FormatResidual(t));
+  }
+  if (n_missed > 0) {
+    report->status = FitStatus::kAboveTolerance;
+    report->message = fmt::format("{} of {} targets above tolerance: {}", n_missed, report->targets.size(), missed);
+  } else if (!report->assembles_over_range) {
+    report->status = FitStatus::kNotAssembling;
+    const bool angle = fitted.InputIsAngle();
+    auto in_unit = [angle](double v) { return angle ? RadToDeg(v) : v; };
+    report->message = fmt::format("the design does not assemble over the required range {:.6g} .. {:.6g}{}: its drive reaches {:.6g} .. {:.6g}",
+                                  in_unit(options.require_from), in_unit(options.require_to), angle ? " deg" : "", in_unit(report->drivable_from),
+                                  in_unit(report->drivable_to));
+  } else {
+    report->status = FitStatus::kConverged;
+  }
+}
+
+}  // namespace
+
 FitReport Fit(const MechanismBuilder& builder, const std::vector<FitParameter>& parameters, const std::vector<FitTarget>& targets,
               const FitOptions& options) {
   FitReport report;
@@ -270,28 +299,7 @@ FitReport Fit(const MechanismBuilder& builder, const std::vector<FitParameter>& 
   }
   const Mechanism& fitted = *built;
   ReportTargets(fitted, targets, options, n, *best, &report);
-  // the verdict: every target within its tolerance, and the required range
-  std::string missed;
-  int n_missed = 0;
-  for (size_t i = 0; i < report.targets.size(); ++i) {
-    const FitTargetResult& t = report.targets[i];
-    if (t.met) continue;
-    ++n_missed;
-    missed += fmt::format("{}target {} '{}' misses by {}", missed.empty() ? "" : "; ", i + 1, t.name, FormatResidual(t));
-  }
-  if (n_missed > 0) {
-    report.status = FitStatus::kAboveTolerance;
-    report.message = fmt::format("{} of {} targets above tolerance: {}", n_missed, report.targets.size(), missed);
-  } else if (!report.assembles_over_range) {
-    report.status = FitStatus::kNotAssembling;
-    const bool angle = fitted.InputIsAngle();
-    auto in_unit = [angle](double v) { return angle ? RadToDeg(v) : v; };
-    report.message = fmt::format("the design does not assemble over the required range {:.6g} .. {:.6g}{}: its drive reaches {:.6g} .. {:.6g}",
-                                 in_unit(options.require_from), in_unit(options.require_to), angle ? " deg" : "", in_unit(report.drivable_from),
-                                 in_unit(report.drivable_to));
-  } else {
-    report.status = FitStatus::kConverged;
-  }
+  SetFitVerdict(fitted, options, &report);
   return report;
 }
 

@@ -46,42 +46,52 @@ bool TargetModel::Evaluate(const double* unknowns, int n_params, double* residua
       continue;
     }
     const double input = t.input_free ? unknowns[n_params + free_index] : t.input;
-    Continuation path(solver);
-    if (!path.Start(m.hint.input, q).ok() || !path.AdvanceTo(input, 0.05).ok()) return false;
-    const Eigen::VectorXd& qt = path.q();
-    const Eigen::MatrixXd& series = path.Series(1);  // factorises J at qt, gives dq/dinput
+    const int free_column = t.input_free ? n_params + free_index : -1;
+    if (!OutputAt(m, solver, q, sensitivities, t, input, free_column, residuals + row, jacobian ? jacobian + row * n_unknowns : nullptr,
+                  n_params, n_unknowns))
+      return false;
     const int comps = t.point ? 2 : 1;
-    // an angle is compared by its wrapped difference, whatever range the output is reported in
-    const bool angle = TargetUnit(m, t) == FitUnit::kAngle;
-    auto difference = [angle](double a, double b) { return angle ? WrappedAngle(a - b) : a - b; };
-    for (int c = 0; c < comps; ++c) {
-      const int comp = t.point ? c : t.component;
-      const double y = solver.system().Output(t.output, comp, qt.data());
-      const double goal = t.point ? t.position[c] : t.value;
-      residuals[row + c] = t.weight * difference(y, goal);
-    }
-    if (jacobian) {
-      for (int c = 0; c < comps; ++c) std::fill(jacobian + (row + c) * n_unknowns, jacobian + (row + c + 1) * n_unknowns, 0.0);
-      // parameters: IFT
-      Eigen::MatrixXd d;
-      OutputSensitivity(solver, qt, input, perturbed, t.output, t.point ? 0 : t.component, comps, angle, &d);
-      for (int c = 0; c < comps; ++c) {
-        for (int j = 0; j < n_params; ++j) jacobian[(row + c) * n_unknowns + j] = t.weight * d(c, j);
-      }
-      const ConstraintSystem& system = solver.system();
-      if (t.input_free) {
-        // dy/dinput: the exact first-order transfer function, through the output's gradient
-        const double h = 1e-7;
-        const Eigen::VectorXd q_plus = qt + h * series.col(1), q_minus = qt - h * series.col(1);
-        for (int c = 0; c < comps; ++c) {
-          const int comp = t.point ? c : t.component;
-          jacobian[(row + c) * n_unknowns + n_params + free_index] =
-              t.weight * difference(system.Output(t.output, comp, q_plus.data()), system.Output(t.output, comp, q_minus.data())) / (2 * h);
-        }
-      }
-    }
     row += comps;
     if (t.input_free) ++free_index;
+  }
+  return true;
+}
+
+bool TargetModel::OutputAt(const Mechanism& m, PositionSolver& solver, const Eigen::VectorXd& q_hint, const Perturbations* perturbed,
+                           const FitTarget& t, double input, int free_column, double* residuals, double* jacobian, int n_params,
+                           int n_unknowns) const {
+  Continuation path(solver);
+  if (!path.Start(m.hint.input, q_hint).ok() || !path.AdvanceTo(input, 0.05).ok()) return false;
+  const Eigen::VectorXd& qt = path.q();
+  const Eigen::MatrixXd& series = path.Series(1);  // factorises J at qt, gives dq/dinput
+  const int comps = t.point ? 2 : 1;
+  // an angle is compared by its wrapped difference, whatever range the output is reported in
+  const bool angle = TargetUnit(m, t) == FitUnit::kAngle;
+  auto difference = [angle](double a, double b) { return angle ? WrappedAngle(a - b) : a - b; };
+  for (int c = 0; c < comps; ++c) {
+    const int comp = t.point ? c : t.component;
+    const double y = solver.system().Output(t.output, comp, qt.data());
+    const double goal = t.point ? t.position[c] : t.value;
+    residuals[c] = t.weight * difference(y, goal);
+  }
+  if (!jacobian) return true;
+  for (int c = 0; c < comps; ++c) std::fill(jacobian + c * n_unknowns, jacobian + (c + 1) * n_unknowns, 0.0);
+  // parameters: IFT
+  Eigen::MatrixXd d;
+  OutputSensitivity(solver, qt, input, *perturbed, t.output, t.point ? 0 : t.component, comps, angle, &d);
+  for (int c = 0; c < comps; ++c) {
+    for (int j = 0; j < n_params; ++j) jacobian[c * n_unknowns + j] = t.weight * d(c, j);
+  }
+  if (free_column >= 0) {
+    // dy/dinput: the exact first-order transfer function, through the output's gradient
+    const ConstraintSystem& system = solver.system();
+    const double h = 1e-7;
+    const Eigen::VectorXd q_plus = qt + h * series.col(1), q_minus = qt - h * series.col(1);
+    for (int c = 0; c < comps; ++c) {
+      const int comp = t.point ? c : t.component;
+      jacobian[c * n_unknowns + free_column] =
+          t.weight * difference(system.Output(t.output, comp, q_plus.data()), system.Output(t.output, comp, q_minus.data())) / (2 * h);
+    }
   }
   return true;
 }

@@ -31,6 +31,12 @@ class TargetModel {
   int FreeInputs() const;
 
  private:
+  // One output target (a value or a point) at `input`, reached from q_hint: its residuals
+  // (t.weight times the wrapped difference) and, if jacobian is non-null, their rows: the
+  // parameters' columns by the implicit function theorem, and free_column (>= 0: the input is
+  // free) by the transfer function.
+  bool OutputAt(const Mechanism& m, PositionSolver& solver, const Eigen::VectorXd& q_hint, const Perturbations* perturbed, const FitTarget& t,
+                double input, int free_column, double* residuals, double* jacobian, int n_params, int n_unknowns) const;
   // One straight-line target: distances of the samples from their total-least-squares line.
   bool Straight(const Mechanism& m, PositionSolver& solver, const Eigen::VectorXd& q_hint, const Perturbations* perturbed, const FitTarget& t,
                 double* residuals, double* jacobian, int n_unknowns) const;

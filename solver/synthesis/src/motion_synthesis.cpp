@@ -67,6 +67,114 @@ std::optional<double> PoseErrorAssembledAt(const Mechanism& m, const std::vector
   return PoseError(solver, q, poses[j], size);
 }
 
+// Assembles the four-bar f.mechanism in every pose from that pose's own geometry (the crank's
+// direction there in phi) and checks the coupler's pose error; notes a change of assembly branch
+// between the poses. False, with f->message, when a pose does not assemble or is missed.
+bool CouplerHitsEveryPose(const std::vector<Pose>& poses, double size, std::vector<double>* phi, MotionFourBar* f) {
+  const Eigen::Vector2d a0 = f->crank.centre, a = f->crank.circle, b = f->rocker.circle, b0 = f->rocker.centre;
+  const int n = static_cast<int>(poses.size());
+  phi->assign(n, 0.0);
+  std::vector<int> branch(n);
+  for (int j = 0; j < n; ++j) {
+    const Eigen::Vector2d aj = MovePoint(poses[0], poses[j], a), bj = MovePoint(poses[0], poses[j], b);
+    (*phi)[j] = Direction(aj - a0);
+    branch[j] = FourBarBranch(aj, bj, b0);
+    const std::optional<double> error = PoseErrorAssembledAt(f->mechanism, poses, j, a, b, (*phi)[j], size);
+    if (!error) {
+      f->message = fmt::format("the solver does not assemble the four-bar in pose {}", j + 1);
+      return false;
+    }
+    f->pose_error = std::max(f->pose_error, *error);
+  }
+  if (f->pose_error > kPoseTolerance * size) {
+    f->message = fmt::format("the coupler misses a pose by {:.3g} (tolerance {:.3g})", f->pose_error, kPoseTolerance * size);
+    return false;
+  }
+  for (int j = 1; j < n; ++j) f->branch_defect = f->branch_defect || branch[j] != branch[0];
+  return true;
+}
+
+// The drivable range of the first pose's branch and the crank angle of each pose (phi) in the
+// sense of travel, unwrapped: a full turn's sense is the order of the poses (or, out of order, the
+// shorter way to the last); a swinging crank's is its range. Sets the order and reach defects.
+std::vector<double> CrankTravelThroughPoses(const std::vector<double>& phi, MotionFourBar* f) {
+  const int n = static_cast<int>(phi.size());
+  const InputRange reach = DrivableRange(f->mechanism, 2 * kPi * 1.05, DegToRad(1));
+  f->crank_turns_fully = !reach.low_limited && !reach.high_limited;
+  std::vector<double> travel(n);  // unwrapped inputs in the sense of travel
+  if (f->crank_turns_fully) {
+    f->drive_from = phi[0];
+    f->drive_to = phi[0] + 2 * kPi;
+    std::vector<double> ccw(n), cw(n);
+    for (int j = 0; j < n; ++j) {
+      ccw[j] = Positive(phi[j] - phi[0]);
+      cw[j] = Positive(phi[0] - phi[j]);
+    }
+    const bool in_ccw = std::is_sorted(ccw.begin(), ccw.end()), in_cw = std::is_sorted(cw.begin(), cw.end());
+    f->order_defect = !in_ccw && !in_cw;
+    const bool sense = in_ccw || (!in_cw && ccw[n - 1] <= cw[n - 1]);  // out of order: the shorter way to the last
+    for (int j = 0; j < n; ++j) travel[j] = phi[0] + (sense ? ccw[j] : -cw[j]);
+  } else {
+    f->drive_from = reach.low;
+    f->drive_to = reach.high;
+    bool reachable = true;
+    for (int j = 0; j < n; ++j) {
+      travel[j] = reach.low + Positive(phi[j] - reach.low);
+      reachable = reachable && travel[j] <= reach.high + 1e-12;
+    }
+    f->branch_defect = f->branch_defect || !reachable;
+    const bool up = std::is_sorted(travel.begin(), travel.end()), down = std::is_sorted(travel.rbegin(), travel.rend());
+    f->order_defect = !up && !down;
+  }
+  return travel;
+}
+
+// Driven from the first pose, the crank reaches every other one on its branch (else a branch
+// defect with its message). False, with f->message, when the first pose does not assemble or is
+// a singular position.
+bool CrankReachesPosesOnItsBranch(const std::vector<Pose>& poses, const std::vector<double>& travel, double size,
+                                  MotionFourBar* f) {
+  PositionSolver solver(f->mechanism);
+  Eigen::VectorXd q(solver.NumCoordinates());
+  if (!solver.Assemble(q).ok()) {
+    f->message = "the solver does not assemble the four-bar in the first pose";
+    return false;
+  }
+  if (f->branch_defect) return true;
+  Continuation path(solver);
+  if (!path.Start(travel[0], q).ok()) {
+    f->message = "the first pose is a singular position";
+    return false;
+  }
+  for (size_t j = 1; j < travel.size() && !f->branch_defect; ++j) {
+    if (!path.AdvanceTo(travel[j], 0.05).ok() || PoseError(solver, path.q(), poses[j], size) > kPoseTolerance * size) {
+      f->branch_defect = true;
+      f->message = fmt::format("driven from the first pose the crank does not reach pose {} (another circuit)", j + 1);
+    }
+  }
+  return true;
+}
+
+// mu_min over the travel from the first pose to the last (on the first pose's branch). False,
+// with f->message, when it cannot be evaluated: no number rather than a wrong one.
+bool SetMinimumTransmissionAngle(const std::vector<double>& travel, MotionFourBar* f) {
+  SweepOptions sweep;
+  sweep.from = travel.front();
+  sweep.to = travel.back();
+  const double span = std::abs(sweep.to - sweep.from);
+  sweep.step = span > 0 ? span / std::ceil(span / kMuStep) : kMuStep;
+  const OutputExtremes mu = FindOutputExtremes(f->mechanism, 3, 0, sweep);
+  if (!Usable(mu.status)) {
+    f->message = "the transmission angle over the travel cannot be evaluated: " + mu.message;
+    return false;
+  }
+  f->mu_min = mu.minimum.value;
+  if (mu.status == AnalysisStatus::kPartial && f->message.empty()) {
+    f->message = "mu_min only over the part of the travel the branch reaches: " + mu.sweep.message;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool MotionOptions::IsValid(std::string* why) const {
@@ -95,95 +203,15 @@ MotionFourBar AnalyseMotionFourBar(const std::vector<Pose>& poses, const Dyad& c
   g.plane_origin = poses[0].point;
   g.plane_angle = poses[0].angle;
   f.mechanism = DesignedFourBar(g, "burmester-four-bar");
-  const Mechanism& m = f.mechanism;
-  f.grashof = ClassifyChain(m).grashof;
+  f.grashof = ClassifyChain(f.mechanism).grashof;
 
   // every pose: assembled by the solver from its own geometry, the plane where the pose says
-  const int n = static_cast<int>(poses.size());
-  std::vector<double> phi(n);
-  std::vector<int> branch(n);
-  for (int j = 0; j < n; ++j) {
-    const Eigen::Vector2d aj = MovePoint(poses[0], poses[j], a), bj = MovePoint(poses[0], poses[j], b);
-    phi[j] = Direction(aj - a0);
-    branch[j] = FourBarBranch(aj, bj, b0);
-    const std::optional<double> error = PoseErrorAssembledAt(m, poses, j, a, b, phi[j], size);
-    if (!error) {
-      f.message = fmt::format("the solver does not assemble the four-bar in pose {}", j + 1);
-      return f;
-    }
-    f.pose_error = std::max(f.pose_error, *error);
-  }
-  if (f.pose_error > kPoseTolerance * size) {
-    f.message = fmt::format("the coupler misses a pose by {:.3g} (tolerance {:.3g})", f.pose_error, kPoseTolerance * size);
-    return f;
-  }
-  for (int j = 1; j < n; ++j) f.branch_defect = f.branch_defect || branch[j] != branch[0];
-
-  // the drivable range of the first pose's branch and the travel through the poses
-  const InputRange reach = DrivableRange(m, 2 * kPi * 1.05, DegToRad(1));
-  f.crank_turns_fully = !reach.low_limited && !reach.high_limited;
-  std::vector<double> travel(n);  // unwrapped inputs in the sense of travel
-  if (f.crank_turns_fully) {
-    f.drive_from = phi[0];
-    f.drive_to = phi[0] + 2 * kPi;
-    std::vector<double> ccw(n), cw(n);
-    for (int j = 0; j < n; ++j) {
-      ccw[j] = Positive(phi[j] - phi[0]);
-      cw[j] = Positive(phi[0] - phi[j]);
-    }
-    const bool in_ccw = std::is_sorted(ccw.begin(), ccw.end()), in_cw = std::is_sorted(cw.begin(), cw.end());
-    f.order_defect = !in_ccw && !in_cw;
-    const bool sense = in_ccw || (!in_cw && ccw[n - 1] <= cw[n - 1]);  // out of order: the shorter way to the last
-    for (int j = 0; j < n; ++j) travel[j] = phi[0] + (sense ? ccw[j] : -cw[j]);
-  } else {
-    f.drive_from = reach.low;
-    f.drive_to = reach.high;
-    bool reachable = true;
-    for (int j = 0; j < n; ++j) {
-      travel[j] = reach.low + Positive(phi[j] - reach.low);
-      reachable = reachable && travel[j] <= reach.high + 1e-12;
-    }
-    f.branch_defect = f.branch_defect || !reachable;
-    const bool up = std::is_sorted(travel.begin(), travel.end()), down = std::is_sorted(travel.rbegin(), travel.rend());
-    f.order_defect = !up && !down;
-  }
-  f.pose_inputs = travel;
-
-  // driven from the first pose, the crank reaches every other one on its branch
-  PositionSolver solver(m);
-  Eigen::VectorXd q(solver.NumCoordinates());
-  if (!solver.Assemble(q).ok()) {
-    f.message = "the solver does not assemble the four-bar in the first pose";
-    return f;
-  }
-  if (!f.branch_defect) {
-    Continuation path(solver);
-    if (!path.Start(travel[0], q).ok()) {
-      f.message = "the first pose is a singular position";
-      return f;
-    }
-    for (int j = 1; j < n && !f.branch_defect; ++j) {
-      if (!path.AdvanceTo(travel[j], 0.05).ok() || PoseError(solver, path.q(), poses[j], size) > kPoseTolerance * size) {
-        f.branch_defect = true;
-        f.message = fmt::format("driven from the first pose the crank does not reach pose {} (another circuit)", j + 1);
-      }
-    }
-  }
-  // mu_min over the travel from the first pose to the last (on the first pose's branch)
-  SweepOptions sweep;
-  sweep.from = travel[0];
-  sweep.to = travel[n - 1];
-  const double span = std::abs(sweep.to - sweep.from);
-  sweep.step = span > 0 ? span / std::ceil(span / kMuStep) : kMuStep;
-  const OutputExtremes mu = FindOutputExtremes(m, 3, 0, sweep);
-  if (!Usable(mu.status)) {  // no number rather than a wrong one: the four-bar is reported as failed
-    f.message = "the transmission angle over the travel cannot be evaluated: " + mu.message;
-    return f;
-  }
-  f.mu_min = mu.minimum.value;
-  if (mu.status == AnalysisStatus::kPartial && f.message.empty()) {
-    f.message = "mu_min only over the part of the travel the branch reaches: " + mu.sweep.message;
-  }
+  std::vector<double> phi;
+  if (!CouplerHitsEveryPose(poses, size, &phi, &f)) return f;
+  f.pose_inputs = CrankTravelThroughPoses(phi, &f);
+  if (!CrankReachesPosesOnItsBranch(poses, f.pose_inputs, size, &f)) return f;
+  // the four-bar is reported as failed when its mu_min is not known
+  if (!SetMinimumTransmissionAngle(f.pose_inputs, &f)) return f;
   f.passes = true;
   return f;
 }

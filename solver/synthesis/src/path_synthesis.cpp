@@ -124,6 +124,31 @@ struct Placed {
   double error = std::numeric_limits<double>::infinity();
 };
 
+// The timing is where free-timing fits get stuck: gives each point the crank angle of its nearest
+// point on the polished curve and polishes again, while that helps.
+void RetimePlacement(const PathRequest& request, Placed* out) {
+  for (int round = 0; round < kRetimings; ++round) {
+    std::vector<double> unknowns = out->unknowns, inputs = out->inputs;
+    for (size_t i = 0; i < inputs.size(); ++i) {
+      double best = std::numeric_limits<double>::infinity();
+      for (int j = 0; j < kCandidateSamples; ++j) {
+        const double phi = out->placement.phi + 2 * kPi * j / kCandidateSamples - kPi;
+        Eigen::Vector2d p;
+        if (!CouplerPointAt(unknowns, out->placement.branch, phi, &p)) continue;
+        if ((p - request.points[i]).squaredNorm() < best) {
+          best = (p - request.points[i]).squaredNorm();
+          inputs[i] = phi;
+        }
+      }
+    }
+    const double error = PrePolish(request.points, out->placement.branch, &unknowns, &inputs);
+    if (!(error < 0.99 * out->error)) break;
+    out->error = error;
+    out->unknowns = unknowns;
+    out->inputs = inputs;
+  }
+}
+
 std::optional<Placed> Place(const AtlasIndex& atlas, const Candidate& c, const PathRequest& request) {
   const AtlasEntry& entry = atlas.entries()[c.entry];
   AtlasCurve curve;
@@ -159,28 +184,7 @@ std::optional<Placed> Place(const AtlasIndex& atlas, const Candidate& c, const P
   }
   out.error = PrePolish(request.points, out.placement.branch, &out.unknowns, &out.inputs);
   if (!std::isfinite(out.error)) return std::nullopt;
-  // the timing is where free-timing fits get stuck: give each point the crank angle of its nearest
-  // point on the polished curve and polish again, while that helps
-  for (int round = 0; round < kRetimings; ++round) {
-    std::vector<double> unknowns = out.unknowns, inputs = out.inputs;
-    for (size_t i = 0; i < inputs.size(); ++i) {
-      double best = std::numeric_limits<double>::infinity();
-      for (int j = 0; j < kCandidateSamples; ++j) {
-        const double phi = out.placement.phi + 2 * kPi * j / kCandidateSamples - kPi;
-        Eigen::Vector2d p;
-        if (!CouplerPointAt(unknowns, out.placement.branch, phi, &p)) continue;
-        if ((p - request.points[i]).squaredNorm() < best) {
-          best = (p - request.points[i]).squaredNorm();
-          inputs[i] = phi;
-        }
-      }
-    }
-    const double error = PrePolish(request.points, out.placement.branch, &unknowns, &inputs);
-    if (!(error < 0.99 * out.error)) break;
-    out.error = error;
-    out.unknowns = unknowns;
-    out.inputs = inputs;
-  }
+  RetimePlacement(request, &out);
   // the crank angles stay within a turn of the assembly's (the fit walks there by continuation)
   for (double& phi : out.inputs) phi = out.placement.phi + AngleDifference(phi, out.placement.phi);
   return out;
@@ -327,15 +331,10 @@ bool PathRequest::IsValid(std::string* why) const {
   return problem.empty();
 }
 
-PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
-  PathResult result;
-  if (!request.IsValid(&result.message)) return result;
-  const double scale = Scale(request.points);
-  if (!(scale > 0)) {
-    result.message = "the points coincide";
-    return result;
-  }
-  // the readings: mirrored or not, traversed either way, both sides of the ambiguity
+namespace {
+
+// The readings of the points: mirrored or not, traversed either way, both sides of the ambiguity.
+std::vector<Reading> ReadingsOfPathPoints(const PathRequest& request) {
   std::vector<Reading> readings;
   for (bool mirror : {false, true}) {
     for (bool reverse : {false, true}) {
@@ -351,11 +350,12 @@ PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
       readings.push_back({mirror, OtherBranchOfAmbiguity(d)});
     }
   }
-  if (readings.empty()) {
-    result.message = "the points have no extent along a path";
-    return result;
-  }
-  const int wanted = request.candidates > 0 ? request.candidates : std::max(100, 10 * request.top);
+  return readings;
+}
+
+// The `wanted` atlas entries nearest to any reading (each with its best reading), nearest first.
+std::vector<Candidate> NearestAtlasCandidates(const AtlasIndex& atlas, const PathRequest& request,
+                                              const std::vector<Reading>& readings, int wanted) {
   std::map<std::uint32_t, Candidate> best;
   for (const Reading& r : readings) {
     std::array<float, kAtlasFeatures> f;
@@ -369,6 +369,26 @@ PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
   for (const auto& [entry, c] : best) candidates.push_back(c);
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
   if (candidates.size() > static_cast<size_t>(wanted)) candidates.resize(wanted);
+  return candidates;
+}
+
+}  // namespace
+
+PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
+  PathResult result;
+  if (!request.IsValid(&result.message)) return result;
+  const double scale = Scale(request.points);
+  if (!(scale > 0)) {
+    result.message = "the points coincide";
+    return result;
+  }
+  const std::vector<Reading> readings = ReadingsOfPathPoints(request);
+  if (readings.empty()) {
+    result.message = "the points have no extent along a path";
+    return result;
+  }
+  const int wanted = request.candidates > 0 ? request.candidates : std::max(100, 10 * request.top);
+  const std::vector<Candidate> candidates = NearestAtlasCandidates(atlas, request, readings, wanted);
   if (candidates.empty()) {
     result.status = PathStatus::kNoCandidate;
     result.message = request.open ? "the atlas holds no open curves (rocker arcs)" : "the atlas holds no closed curves";

@@ -31,17 +31,15 @@ void Widen(const std::vector<std::vector<Eigen::Vector2d>>& runs, double* low, d
   }
 }
 
-}  // namespace
+// Marks the inputs that were not reached on a panel.
+void ShadeUnreachedInputs(const ToleranceBand& b, Panel* panel) {
+  for (size_t i = 0; i < b.inputs.size(); ++i) {
+    if (!b.ok[i]) panel->shaded.push_back({b.inputs[i], b.inputs[i]});
+  }
+}
 
-PlotResult TolerancePlot(const ToleranceBand& b) {
-  const size_t n = b.inputs.size();
-  if (n == 0 || std::none_of(b.ok.begin(), b.ok.end(), [](bool ok) { return ok; }))
-    return {PlotStatus::kFailed, "no input was reached: nothing to draw", ""};
-  Figure figure;
-  figure.title = b.mechanism + ": tolerance band of " + b.output;
-  const double x_low = *std::min_element(b.inputs.begin(), b.inputs.end()), x_high = *std::max_element(b.inputs.begin(), b.inputs.end());
-
-  // the output itself, then its deviation from nominal: the band is a few percent of the output
+// The output itself over the input.
+Panel NominalOutputPanel(const ToleranceBand& b, double x_low, double x_high) {
   Panel output;
   output.x = NiceAxis(b.input_label, x_low, x_high, b.input_degrees);
   Curve nominal{"", Runs(b, b.nominal), 0, false, ""};
@@ -50,19 +48,21 @@ PlotResult TolerancePlot(const ToleranceBand& b) {
   output.curves.push_back(std::move(nominal));
   output.title = b.output + " [" + b.output_unit + "]";
   output.y = NiceAxis(output.title, low, high);
-  for (size_t i = 0; i < n; ++i) {
-    if (!b.ok[i]) output.shaded.push_back({b.inputs[i], b.inputs[i]});
-  }
-  figure.panels.push_back(std::move(output));
+  ShadeUnreachedInputs(b, &output);
+  return output;
+}
 
+// The deviation from nominal: the linear worst case as a filled band (one polygon per stretch:
+// up along the upper edge, back along the lower) with its edges, and the Monte Carlo extremes.
+Panel DeviationBandPanel(const ToleranceBand& b, double x_low, double x_high) {
+  const size_t n = b.inputs.size();
   Panel band;
   band.x = NiceAxis(b.input_label, x_low, x_high, b.input_degrees);
-  std::vector<double> upper(n), lower(n), zero(n, 0.0);
+  std::vector<double> upper(n), lower(n);
   for (size_t i = 0; i < n; ++i) {
     upper[i] = b.worst_case[i];
     lower[i] = -b.worst_case[i];
   }
-  // the band, one polygon per stretch: up along the upper edge, back along the lower
   const auto upper_runs = Runs(b, upper), lower_runs = Runs(b, lower);
   for (size_t r = 0; r < upper_runs.size(); ++r) {
     Band polygon;
@@ -71,8 +71,7 @@ PlotResult TolerancePlot(const ToleranceBand& b) {
     polygon.label = r == 0 ? "linear worst case" : "";
     band.bands.push_back(std::move(polygon));
   }
-  low = 0;
-  high = 0;
+  double low = 0, high = 0;
   Widen(upper_runs, &low, &high);
   Widen(lower_runs, &low, &high);
   Curve worst_high{"linear worst case", upper_runs, 0, false, ""}, worst_low{"", lower_runs, 0, false, ""};
@@ -92,18 +91,33 @@ PlotResult TolerancePlot(const ToleranceBand& b) {
   }
   band.title = b.output + " − nominal [" + b.output_unit + "]";
   band.y = NiceAxis(band.title, low, high);
-  for (size_t i = 0; i < n; ++i) {
-    if (!b.ok[i]) band.shaded.push_back({b.inputs[i], b.inputs[i]});
-  }
-  figure.panels.push_back(std::move(band));
+  ShadeUnreachedInputs(b, &band);
+  return band;
+}
 
+// Each tolerance's share of the variance over the input.
+Panel VarianceSharePanel(const ToleranceBand& b, double x_low, double x_high) {
   Panel shares;
   shares.x = NiceAxis(b.input_label, x_low, x_high, b.input_degrees);
   shares.y = NiceAxis("share of the variance", 0, 1);
   shares.title = "share of the variance";
   for (size_t j = 0; j < b.names.size(); ++j) shares.curves.push_back({b.names[j], Runs(b, b.shares[j]), static_cast<int>(j), false, ""});
-  figure.panels.push_back(std::move(shares));
+  return shares;
+}
 
+}  // namespace
+
+PlotResult TolerancePlot(const ToleranceBand& b) {
+  const size_t n = b.inputs.size();
+  if (n == 0 || std::none_of(b.ok.begin(), b.ok.end(), [](bool ok) { return ok; }))
+    return {PlotStatus::kFailed, "no input was reached: nothing to draw", ""};
+  Figure figure;
+  figure.title = b.mechanism + ": tolerance band of " + b.output;
+  const double x_low = *std::min_element(b.inputs.begin(), b.inputs.end()), x_high = *std::max_element(b.inputs.begin(), b.inputs.end());
+  // the output itself, then its deviation from nominal: the band is a few percent of the output
+  figure.panels.push_back(NominalOutputPanel(b, x_low, x_high));
+  figure.panels.push_back(DeviationBandPanel(b, x_low, x_high));
+  figure.panels.push_back(VarianceSharePanel(b, x_low, x_high));
   PlotResult result;
   result.svg = RenderFigure(figure);
   if (std::any_of(b.ok.begin(), b.ok.end(), [](bool ok) { return !ok; })) {

@@ -56,6 +56,42 @@ std::string ScriptSafe(std::string json) {
   return json;
 }
 
+// Each output's page data: a point's trace in the scheme and its x and y in the readout; any
+// other output's chart of its value and transfer functions (a transmission angle: its value only),
+// also in the readout.
+void AddViewOutputs(const Mechanism& m, const SampledRun& run, SchemeScene* scene, nlohmann::json* charts, nlohmann::json* readout) {
+  for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
+    const Output& out = m.outputs[o];
+    if (out.kind == OutputKind::kPoint) {
+      // the coupler curve, traced in the scheme; x and y in the numbers
+      for (const Stretch& s : run.stretches) {
+        scene->trace.emplace_back();
+        for (int i = s.begin; i < s.end; ++i)
+          scene->trace.back().emplace_back(run.outputs(i, run.Column(m, o, 0, 0)), run.outputs(i, run.Column(m, o, 1, 0)));
+      }
+      scene->trace_name = out.name;
+      for (int c = 0; c < 2; ++c) {
+        std::vector<double> v;
+        for (int i = 0; i < run.size(); ++i) v.push_back(Rounded(run.outputs(i, run.Column(m, o, c, 0))));
+        readout->push_back({{"label", out.name + (c == 0 ? "_x" : "_y")}, {"values", v}});
+      }
+      continue;
+    }
+    const int orders = out.kind == OutputKind::kTransmissionAngle ? 1 : 3;
+    nlohmann::json series = nlohmann::json::array();
+    for (int k = 0; k < orders; ++k) {
+      std::vector<double> v;
+      for (int i = 0; i < run.size(); ++i) v.push_back(Rounded(ShownOutput(m, o, k, run.outputs(i, run.Column(m, o, 0, k)))));
+      const std::string label = DerivativeLabel(m, o, "", k);
+      series.push_back({{"label", label}, {"values", v}});
+      readout->push_back({{"label", label}, {"values", v}});
+    }
+    charts->push_back({{"title", out.kind == OutputKind::kTransmissionAngle ? "transmission angle " + out.name
+                                                                             : out.name + " and its transfer functions"},
+                      {"series", series}});
+  }
+}
+
 }  // namespace
 
 bool ViewOptions::IsValid(std::string* why) const {
@@ -91,36 +127,7 @@ PlotResult ViewPage(const Mechanism& m, const ViewOptions& options) {
   data["message"] = run.complete ? "" : run.message;
   nlohmann::json charts = nlohmann::json::array(), readout = nlohmann::json::array();
   SchemeScene scene;
-  for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
-    const Output& out = m.outputs[o];
-    if (out.kind == OutputKind::kPoint) {
-      // the coupler curve, traced in the scheme; x and y in the numbers
-      for (const Stretch& s : run.stretches) {
-        scene.trace.emplace_back();
-        for (int i = s.begin; i < s.end; ++i)
-          scene.trace.back().emplace_back(run.outputs(i, run.Column(m, o, 0, 0)), run.outputs(i, run.Column(m, o, 1, 0)));
-      }
-      scene.trace_name = out.name;
-      for (int c = 0; c < 2; ++c) {
-        std::vector<double> v;
-        for (int i = 0; i < run.size(); ++i) v.push_back(Rounded(run.outputs(i, run.Column(m, o, c, 0))));
-        readout.push_back({{"label", out.name + (c == 0 ? "_x" : "_y")}, {"values", v}});
-      }
-      continue;
-    }
-    const int orders = out.kind == OutputKind::kTransmissionAngle ? 1 : 3;
-    nlohmann::json series = nlohmann::json::array();
-    for (int k = 0; k < orders; ++k) {
-      std::vector<double> v;
-      for (int i = 0; i < run.size(); ++i) v.push_back(Rounded(ShownOutput(m, o, k, run.outputs(i, run.Column(m, o, 0, k)))));
-      const std::string label = DerivativeLabel(m, o, "", k);
-      series.push_back({{"label", label}, {"values", v}});
-      readout.push_back({{"label", label}, {"values", v}});
-    }
-    charts.push_back({{"title", out.kind == OutputKind::kTransmissionAngle ? "transmission angle " + out.name
-                                                                             : out.name + " and its transfer functions"},
-                      {"series", series}});
-  }
+  AddViewOutputs(m, run, &scene, &charts, &readout);
   data["charts"] = charts;
   data["readout"] = readout;
   scene.q = run.poses.row(0).transpose();

@@ -46,6 +46,12 @@ class BlockLU {
   struct Fill {
     int slot, entry;  // lu_[slot] = values[entry]
   };
+  // Sorts the pattern's entries into fill_ (inside the diagonal blocks) and off_ (above them,
+  // grouped by block row), given each row's and column's permuted position and each permuted
+  // position's block. False when an entry lies below the diagonal blocks.
+  bool PlaceEntries(const std::vector<int>& rows, const std::vector<int>& cols, const std::vector<int>& row_position,
+                    const std::vector<int>& col_position, const std::vector<int>& block_of);
+
   bool analysed_ = false;
   int n_ = 0;
   std::vector<int> row_perm_, col_perm_;  // row/column k of the permuted matrix is row/column ...[k] of A

@@ -126,7 +126,22 @@ class Continuation {
   bool RestoreFactorization();
   bool RegularWalkTo(double target);
   Crossing CrossBranchPoint(double estimate, double direction, double target, WalkReport* finished);
+  // One attempt at the branch point near `estimate`: the window of half-width `delta` about it (A
+  // before it on the incoming branch, B beyond on A's prediction, the point located between);
+  // null when A or B is not reached. *at_star: the pose and tangent at the point.
+  std::unique_ptr<Window> OpenBranchWindow(double estimate, double direction, double delta, Eigen::MatrixXd* at_star);
+  // Continues the window past its point on the other branch (its far end B'); false when that
+  // branch does not cross the point in the input.
+  bool SwitchBranchInWindow(const Eigen::MatrixXd& at_star, Window* window);
   Crossing LeaveOrEnterWindow(double target, WalkReport* finished);
+  // AdvanceTo's step crossed a sign change of det J: back to the pose before it, then across the
+  // singular position between them.
+  Crossing CrossSignChange(double direction, double target, WalkReport* finished);
+  // AdvanceTo's steps stall: crosses a branch point here, or finishes at a limit point ahead;
+  // kNotCrossed when neither is near (the walk goes on with shorter steps).
+  Crossing ExamineStall(double direction, double target, WalkReport* finished);
+  // AdvanceTo's steps fell below the limit resolution: the walk ends here (at a limit point, or failed).
+  WalkReport EndAtStall(double direction, double target);
   // At a stall in `direction` towards `target`: locates the limit point ahead and reaches the
   // target (or ends at the point). False when no limit point was located (the caller goes on).
   bool FinishAtLimitPoint(double target, double direction, WalkReport* finished);

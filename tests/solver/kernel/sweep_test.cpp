@@ -18,6 +18,10 @@
 namespace koppel::sweep_test {
 namespace {
 
+// [rad] singular points are located to about 1e-10 (continuation.hpp) by either path, the block
+// and the dense one
+constexpr double kSingularLocation = 1e-9;
+
 const double kL23 = 2.5 * std::sqrt(3.0);              // seed 003: l2 = l3 = 5/2 sqrt(3)
 const double kKappa = std::acos(5.0 / 9.0 * std::sqrt(3.0));  // seed 003: cos kappa = 5/9 sqrt(3)
 
@@ -206,7 +210,7 @@ double CheckSamePaths(const Mechanism& m, SweepOptions o) {
     CHECK(fast.singular_points[i].kind == reference.singular_points[i].kind);
     CHECK(fast.singular_points[i].joints == reference.singular_points[i].joints);
     // located to about 1e-10 (continuation.hpp) by either path
-    CHECK_THAT(fast.singular_points[i].input, Catch::Matchers::WithinAbs(reference.singular_points[i].input, 1e-9));
+    CHECK_THAT(fast.singular_points[i].input, Catch::Matchers::WithinAbs(reference.singular_points[i].input, kSingularLocation));
   }
   REQUIRE(fast.gaps.size() == reference.gaps.size());
   double worst = 0.0;

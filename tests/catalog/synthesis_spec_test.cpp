@@ -34,7 +34,8 @@ TEST_CASE("poses are read in order, angles in radians", "[synthesis_spec]") {
 }
 
 TEST_CASE("a motion file's problems are all reported, each at its line", "[synthesis_spec]") {
-  // line 2: not a triple; line 3: repeats pose 1 (360 deg is 0 deg)
+  // line 2: not a triple; line 4: repeats pose 2 (360 deg is 0 deg) -- regression: the malformed
+  // entry before it made the duplicate be reported at line 3, as poses[1], repeating "pose 1"
   const std::vector<Diagnostic> d = Problems([] {
     ParseMotionSpecText("poses:\n  - [0, 0]\n  - [0, 0, 0]\n  - [0, 0, 360]\n  - [1, 1, 1]\n", "p.yaml");
   });
@@ -42,7 +43,7 @@ TEST_CASE("a motion file's problems are all reported, each at its line", "[synth
   CHECK(d[0].line == 2);
   CHECK_THAT(d[0].message, Catch::Contains("expected [x, y, angle_deg]"));
   CHECK(d[1].line == 4);
-  CHECK_THAT(d[1].message, Catch::Contains("repeats pose 1"));
+  CHECK_THAT(d[1].message, Catch::Contains("repeats pose 2"));
   CHECK(d[1].path == "poses[2]");
   // six poses and an unknown key
   const std::vector<Diagnostic> e = Problems([] {
@@ -109,10 +110,14 @@ TEST_CASE("a function file's problems are all reported, each at its line", "[syn
   CHECK(in_e(1, "cannot evaluate at x = -1"));  // sqrt(-1) at the range's end
 }
 
-TEST_CASE("an empty formula is reported at its line", "[synthesis_spec]") {
+TEST_CASE("an empty formula is reported once, at its line", "[synthesis_spec]") {
+  // regression: a formula of blanks was reported twice, the second time as "cannot evaluate at x = 1"
   const std::vector<Diagnostic> d = Problems([] {
     ParseFunctionSpecText("x: [1, 2]\nfunction: '  '\ninput: [0, 90]\noutput: [0, 90]\n", "f.yaml");
   });
+  std::string all;
+  for (const Diagnostic& x : d) all += x.ToString() + "\n";
+  INFO(all);
   REQUIRE(d.size() == 1);
   CHECK(d[0].line == 2);
   CHECK_THAT(d[0].message, Catch::Contains("found an empty text"));

@@ -80,11 +80,18 @@ TEST_CASE("the known crank-rocker passes with its crank angles, type and mu_min"
 }
 
 TEST_CASE("poses out of the crank's order are an order defect", "[motion_synthesis]") {
-  // reference: the crank meets 0, 95, 40 deg (ccw) or 0, -265, -320 (cw): neither in order
+  // reference, a hand count: driven ccw the crank meets them 0, 95, 40, 150 deg on, driven cw
+  // 0, 265, 320, 210 deg on: neither in order (three poses are always in order one way round)
   const FourBarGeometry g = HandPicked();
-  const std::vector<Pose> poses = PosesOf(DesignedFourBar(g, "known"), {0, 95, 40});
+  const std::vector<Pose> poses = PosesOf(DesignedFourBar(g, "known"), {0, 95, 40, 150});
   const MotionFourBar f = AnalyseMotionFourBar(poses, {g.a0, g.a}, {g.b0, g.b});
   CHECK(f.order_defect);
+  // 0, 95, 40 alone are in order clockwise (0, 265, 320 deg on): no defect, the travel runs cw
+  const MotionFourBar three = AnalyseMotionFourBar(PosesOf(DesignedFourBar(g, "known"), {0, 95, 40}), {g.a0, g.a}, {g.b0, g.b});
+  INFO(three.message);
+  CHECK_FALSE(three.order_defect);
+  REQUIRE(three.pose_inputs.size() == 3);
+  CHECK(three.pose_inputs[1] < three.pose_inputs[0]);
 }
 
 TEST_CASE("dyads sharing a point are no four-bar", "[motion_synthesis]") {

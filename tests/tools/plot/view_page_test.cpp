@@ -52,8 +52,8 @@ TEST_CASE("a full turn: the inputs in degrees, the coupler point of the closed f
   const Mechanism m = test::FourBar(kL1, kL2, kL3, kL4, kK, kKappa, 1);
   plot::ViewOptions options;
   options.range = Degrees(0, 360, 5);
-  const PlotResult r = plot::ViewPage(m, options);
-  REQUIRE(r.status == PlotStatus::kComplete);
+  const plot::PlotResult r = plot::ViewPage(m, options);
+  REQUIRE(r.status == plot::PlotStatus::kComplete);
   const nlohmann::json data = PageData(r.svg);
   CHECK(data["title"] == "four-bar");
   CHECK(data["cyclic"] == true);
@@ -82,8 +82,8 @@ TEST_CASE("a range the drive cannot cover: a partial page going back and forth",
   const Mechanism m = test::PlainFourBar(3, 1, 3.5, 4, DegToRad(60), hint);
   plot::ViewOptions options;
   options.range = Degrees(0, 120, 1);
-  const PlotResult r = plot::ViewPage(m, options);
-  REQUIRE(r.status == PlotStatus::kPartial);
+  const plot::PlotResult r = plot::ViewPage(m, options);
+  REQUIRE(r.status == plot::PlotStatus::kPartial);
   CHECK_FALSE(r.message.empty());
   const nlohmann::json data = PageData(r.svg);
   CHECK(data["cyclic"] == false);
@@ -115,8 +115,8 @@ TEST_CASE("a range of too many frames is refused before any work", "[view_page]"
   std::string why;
   CHECK_FALSE(o.IsValid(&why));
   CHECK_THAT(why, Catch::Contains("7201 samples"));
-  const PlotResult r = plot::ViewPage(test::FourBar(kL1, kL2, kL3, kL4, kK, kKappa, 1), o);
-  CHECK(r.status == PlotStatus::kFailed);
+  const plot::PlotResult r = plot::ViewPage(test::FourBar(kL1, kL2, kL3, kL4, kK, kKappa, 1), o);
+  CHECK(r.status == plot::PlotStatus::kFailed);
   CHECK(r.svg.empty());
 }
 

@@ -82,6 +82,7 @@ MotionSpecFile ParseMotionSpecText(const std::string& text, const std::string& p
   const YAML::Node poses = r.Require(root, "poses", "");
   if (poses.IsDefined() && r.ExpectSequence(poses, "poses")) {
     if (poses.size() < 2 || poses.size() > 5) r.Error(poses, "poses", fmt::format("expected 2 to 5 poses, found {}", poses.size()));
+    std::vector<int> node_of;  // the list entry of each pose read (a malformed entry is skipped)
     for (size_t i = 0; i < poses.size(); ++i) {
       const std::string p = Index("poses", static_cast<int>(i));
       if (!poses[i].IsSequence() || poses[i].size() != 3) {
@@ -89,13 +90,16 @@ MotionSpecFile ParseMotionSpecText(const std::string& text, const std::string& p
         continue;
       }
       const auto x = r.Number(poses[i][0], Index(p, 0)), y = r.Number(poses[i][1], Index(p, 1)), a = r.Number(poses[i][2], Index(p, 2));
-      if (x && y && a) spec.poses.push_back({{*x, *y}, DegToRad(*a)});
+      if (x && y && a) {
+        spec.poses.push_back({{*x, *y}, DegToRad(*a)});
+        node_of.push_back(static_cast<int>(i));
+      }
     }
     // two equal poses give no condition
     for (size_t i = 0; i < spec.poses.size(); ++i) {
       for (size_t j = i + 1; j < spec.poses.size(); ++j) {
         if ((spec.poses[i].point - spec.poses[j].point).norm() == 0 && AngleDifference(spec.poses[i].angle, spec.poses[j].angle) == 0)
-          r.Error(poses[j], Index("poses", static_cast<int>(j)), fmt::format("repeats pose {}", i + 1));
+          r.Error(poses[node_of[j]], Index("poses", node_of[j]), fmt::format("repeats pose {}", node_of[i] + 1));
       }
     }
   }
@@ -152,7 +156,8 @@ FunctionSpecFile ParseFunctionSpecText(const std::string& text, const std::strin
     *y = *v;
     return true;
   };
-  if (function.IsDefined() && ranges && !formula.empty()) CheckFunctionFormulaEvaluates(r, function, formula, q);
+  // an empty formula is reported above
+  if (function.IsDefined() && ranges && formula.find_first_not_of(" \t") != std::string::npos) CheckFunctionFormulaEvaluates(r, function, formula, q);
   if (!r.diagnostics().empty()) throw InputError(r.diagnostics());
   return spec;
 }

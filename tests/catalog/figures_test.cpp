@@ -1,21 +1,17 @@
-// The figure quantities: the table is complete and consistent with its enum, and each evaluator
-// recomputes its figure with the solver to the closed form of a four-bar or slider-crank (law
-// of cosines in the dead-centre triangles; the velocity pole of the coupler on the frame line;
-// the sagitta of a circular arc), for Grashof, non-Grashof and double-crank proportions.
+// The check of a catalog entry's figures against its document (catalog/src/figures.cpp): a
+// figure outside its tolerance fails and says both numbers; a figure naming no output is bad
+// input at its line. The quantities themselves are tested in figure_quantities_test.cpp.
 #include "koppel/catalog/check.hpp"
-#include "koppel/catalog/figure_quantities.hpp"
+#include "koppel/catalog/mechanism_file.hpp"
 #include "koppel/core/angles.hpp"
 #include "support/temp_file.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <set>
 
 namespace koppel::figures_test {
 namespace {
-
-using Catch::Matchers::WithinAbs;
 
 // A four-bar A0 = (0, 0), B0 = (l4, 0), crank l1 driven at A0, coupler l2, rocker l3, B above
 // the frame line at the assembly input; the card carries `figures` (YAML list items).
@@ -64,97 +60,7 @@ const CheckOutcome& FindOutcome(const EntryReport& r, const std::string& name) {
   throw std::logic_error("unreachable");
 }
 
-double LawOfCosines(double a, double b, double opposite) { return std::acos((a * a + b * b - opposite * opposite) / (2 * a * b)); }
-
 }  // namespace
-
-TEST_CASE("the figure quantity table has one row per quantity, in enum order, each with an evaluator", "[catalog][figures]") {
-  const auto& table = FigureQuantities();
-  std::set<std::string> names;
-  for (size_t i = 0; i < table.size(); ++i) {
-    INFO(table[i].name);
-    CHECK(static_cast<size_t>(table[i].quantity) == i);
-    CHECK(&QuantityInfo(table[i].quantity) == &table[i]);
-    CHECK(FindFigureQuantity(table[i].name) == &table[i]);
-    CHECK(table[i].evaluate != nullptr);
-    CHECK(names.insert(table[i].name).second);
-  }
-  CHECK(table.size() == static_cast<size_t>(FigureQuantity::kBranchPoint) + 1);
-  CHECK(FindFigureQuantity("strok") == nullptr);
-}
-
-TEST_CASE("crank-rocker figures: swing, dead centres and which joints turn fully", "[catalog][figures]") {
-  // Grashof: s + l = 1 + 3 <= p + q = 2.5 + 3, the crank is the shortest link
-  const double l1 = 1, l2 = 3, l3 = 2.5, l4 = 3;
-  const std::string figures = R"(    - {name: swing, quantity: stroke, output: psi, expected: 0, unit: deg, tolerance: 1000}
-    - {name: span, quantity: deadcentre_span, output: psi, expected: 0, unit: deg, tolerance: 1000}
-    - {name: phi_a, quantity: deadcentre_phi_a, output: psi, expected: 0, unit: deg, tolerance: 1000}
-    - {name: crank turns, quantity: revolves, expected: 1, tolerance: 0}
-    - {name: A turns, quantity: revolves, joint: A, expected: 1, tolerance: 0}
-    - {name: B oscillates, quantity: revolves, joint: B, expected: 0, tolerance: 0}
-    - {name: B0 oscillates, quantity: revolves, joint: B0, expected: 0, tolerance: 0}
-    - {name: rocker turns, quantity: turns, output: psi, expected: 0, tolerance: 1e-12}
-    - {name: no limit, quantity: input_high, expected: 0, unit: deg, tolerance: 1000}
-    - {name: arc band, quantity: straightline_band, output: A, from: 0, to: 90, at: 45, expected: 0, tolerance: 1000}
-)";
-  test::TempDir dir;
-  const EntryReport r = CheckEntry(dir.Write("f.yaml", FourBar(l1, l2, l3, l4, 0, figures)));
-  // rocker angle at the extended (A0B = l2 + l1) and folded (A0B = l2 - l1) dead centres: the
-  // angle at B0 in triangle A0 B0 B, B above the frame: psi = 180 deg - angle(A0 B0 B)
-  const double psi_a = kPi - LawOfCosines(l3, l4, l2 + l1), psi_i = kPi - LawOfCosines(l3, l4, l2 - l1);
-  CHECK_THAT(FindOutcome(r, "swing").value, WithinAbs(RadToDeg(std::abs(psi_a - psi_i)), 1e-8));
-  // crank angle: angle at A0 in the same triangles; folded: A points away from B
-  const double phi_a = LawOfCosines(l2 + l1, l4, l3), phi_i = LawOfCosines(l2 - l1, l4, l3) + kPi;
-  CHECK_THAT(FindOutcome(r, "phi_a").value, WithinAbs(RadToDeg(phi_a), 1e-8));
-  CHECK_THAT(FindOutcome(r, "span").value, WithinAbs(RadToDeg(std::fmod(phi_a - phi_i + 4 * kPi, 2 * kPi)), 1e-8));
-  for (const char* name : {"crank turns", "A turns", "B oscillates", "B0 oscillates", "rocker turns"}) {
-    INFO(name);
-    CHECK(FindOutcome(r, name).passed());
-  }
-  // a crank has no limit position: not computed, which fails the entry
-  CHECK(FindOutcome(r, "no limit").status == CheckStatus::kNotComputed);
-  CHECK_FALSE(r.passed());
-  // the crank pin's circular arc over 0..90 deg against its tangent at 45 deg: the sagitta
-  // l1 (1 - cos 45 deg)
-  CHECK_THAT(FindOutcome(r, "arc band").value, WithinAbs(l1 * (1 - std::cos(kPi / 4)), 1e-6));
-}
-
-TEST_CASE("non-Grashof four-bar: the input's limit positions where coupler and rocker line up", "[catalog][figures]") {
-  // s + l = 2 + 4 > p + q = 2.5 + 3: no link turns fully
-  const double l1 = 2, l2 = 2.5, l3 = 3, l4 = 4;
-  const std::string figures = R"(    - {name: low, quantity: input_low, expected: 0, unit: deg, tolerance: 1000}
-    - {name: high, quantity: input_high, expected: 0, unit: deg, tolerance: 1000}
-    - {name: input oscillates, quantity: revolves, expected: 0, tolerance: 0}
-    - {name: B0 oscillates, quantity: revolves, joint: B0, expected: 0, tolerance: 0}
-)";
-  test::TempDir dir;
-  std::string text = FourBar(l1, l2, l3, l4, 0, figures);
-  const EntryReport r = CheckEntry(dir.Write("f.yaml", text));
-  // extended coupler and rocker: B0A = l2 + l3, angle at A0 in triangle A0 B0 A
-  const double limit = RadToDeg(LawOfCosines(l1, l4, l2 + l3));
-  CHECK_THAT(FindOutcome(r, "high").value, WithinAbs(limit, 1e-5));
-  CHECK_THAT(FindOutcome(r, "low").value, WithinAbs(-limit, 1e-5));
-  CHECK(FindOutcome(r, "input oscillates").passed());
-  CHECK(FindOutcome(r, "B0 oscillates").passed());
-}
-
-TEST_CASE("double crank: the output turns once per turn, its speed ratio from the velocity pole", "[catalog][figures]") {
-  // the frame is the shortest link: s + l = 1 + 3.5 <= 3 + 3
-  const double l1 = 3, l2 = 3.5, l3 = 3, l4 = 1;
-  const std::string figures = R"(    - {name: output turns, quantity: turns, output: psi, expected: 1, tolerance: 1e-9}
-    - {name: ratio at 0, quantity: derivative, output: psi, at: 0, order: 1, expected: 0, tolerance: 1000}
-    - {name: B0 turns, quantity: revolves, joint: B0, expected: 1, tolerance: 0}
-    - {name: B oscillates, quantity: revolves, joint: B, expected: 0, tolerance: 0}
-)";
-  test::TempDir dir;
-  const EntryReport r = CheckEntry(dir.Write("f.yaml", FourBar(l1, l2, l3, l4, 0, figures)));
-  CHECK(FindOutcome(r, "output turns").passed());
-  CHECK(FindOutcome(r, "B0 turns").passed());
-  CHECK(FindOutcome(r, "B oscillates").passed());
-  // at phi = 0 the crank pin A lies on the frame line, so it is the pole P13 of the coupler:
-  // psi' = P13A0 / P13B0 = l1 / (l1 - l4)
-  CHECK_THAT(FindOutcome(r, "ratio at 0").value, WithinAbs(l1 / (l1 - l4), 1e-9));
-}
 
 TEST_CASE("a figure outside its tolerance fails and says both values", "[catalog][figures]") {
   const std::string figures = "    - {name: swing, quantity: stroke, output: psi, expected: 10, unit: deg, tolerance: 0.1}\n";
@@ -165,6 +71,27 @@ TEST_CASE("a figure outside its tolerance fails and says both values", "[catalog
   CHECK_THAT(swing.detail, Catch::Contains("document 10, koppel "));
   CHECK(swing.Ratio() > 1);
   CHECK_FALSE(r.passed());
+}
+
+TEST_CASE("a figure naming no output is bad input at its line", "[catalog][figures]") {
+  // `phi` is no output of the four-bar (psi and A are); the figure is the first of the card's
+  // list, line 25 of the file FourBar writes (reference: a hand count of its template)
+  const std::string figures = "    - {name: swing, quantity: stroke, output: phi, expected: 10, unit: deg, tolerance: 0.1}\n";
+  test::TempDir dir;
+  const std::string path = dir.Write("f.yaml", FourBar(1, 3, 2.5, 3, 0, figures));
+  try {
+    CheckEntry(path);
+    FAIL("no InputError");
+  } catch (const InputError& e) {
+    // (a second report follows, "this figure is not an angle: it has no unit": a consequence of the
+    // unknown output, noted in the issue's report, not asserted here)
+    REQUIRE_FALSE(e.diagnostics().empty());
+    const Diagnostic& d = e.diagnostics()[0];
+    CHECK(d.file == path);
+    CHECK(d.line == 25);
+    CHECK(d.path == "catalog.figures[0].output");
+    CHECK_THAT(d.message, Catch::Contains("names output 'phi', which the file does not declare"));
+  }
 }
 
 }  // namespace koppel::figures_test

@@ -17,6 +17,9 @@
 namespace koppel::input_file_test {
 namespace {
 
+// relative: a chain of 20 000 parameters each adding 1e-5 to the last: the rounding of 20 000 sums
+constexpr double kSumRoundoff = 1e-12;
+
 // A four-bar whose crank length is the last of `count` chained parameters p0..p{count-1}.
 std::string ManyParameters(int count) {
   std::string text = "name: many\nparameters:\n  p0: 0\n";
@@ -106,7 +109,7 @@ TEST_CASE("20 000 parameters are read with work linear in them", "[reader][limit
   // one read per chained formula, plus the few names the links use; quadratic would be 2e8
   CHECK(reads >= kCount);
   CHECK(reads < kCount + 100);
-  CHECK(file.parameters.Value("p19999") == Approx(19'999 * 1e-5).epsilon(1e-12));
+  CHECK(file.parameters.Value("p19999") == Approx(19'999 * 1e-5).epsilon(kSumRoundoff));
   CHECK(file.mechanism.links[1].points[1].local.x() == Approx(0.8));
 }
 

@@ -13,6 +13,9 @@
 namespace koppel::mechanism_file_test {
 namespace {
 
+// relative: formulas and degree conversions of the file against the same in C++: a few ulps
+constexpr double kUlps = 1e-15;
+
 using test::LineOf;
 using test::Replace;
 
@@ -84,13 +87,13 @@ TEST_CASE("a good mechanism file is read in all its parts", "[reader]") {
   CHECK(m.joints[1].type == JointType::kRevolute);  // "D"
   CHECK(m.joints[2].type == JointType::kRevolute);  // "revolute"
   // a formula-valued coordinate, evaluated exactly: 5/2 sqrt(3)
-  CHECK(m.links[2].points[1].local.x() == Approx(2.5 * std::sqrt(3.0)).epsilon(1e-15));
-  CHECK(m.drive.zero == Approx(kPi / 2).epsilon(1e-15));  // degrees in YAML, radians inside
+  CHECK(m.links[2].points[1].local.x() == Approx(2.5 * std::sqrt(3.0)).epsilon(kUlps));
+  CHECK(m.drive.zero == Approx(kPi / 2).epsilon(kUlps));  // degrees in YAML, radians inside
   CHECK(m.drive.input_name == "phi");
   REQUIRE(m.outputs.size() == 4);
-  CHECK(m.outputs[1].offset == Approx(DegToRad(10)).epsilon(1e-15));
+  CHECK(m.outputs[1].offset == Approx(DegToRad(10)).epsilon(kUlps));
   CHECK(m.outputs[3].kind == OutputKind::kTransmissionAngle);
-  CHECK(m.hint.input == Approx(DegToRad(30)).epsilon(1e-15));
+  CHECK(m.hint.input == Approx(DegToRad(30)).epsilon(kUlps));
   // bare "B" expands to the coupler's and the rocker's B; crank.A to one point
   CHECK(m.hint.points.size() == 3);
   CHECK(f.sweep.from == 10);

@@ -10,6 +10,9 @@
 namespace koppel::build_test {
 namespace {
 
+// relative: a normalised axis (3, 4) / 5: a few ulps
+constexpr double kUlps = 1e-15;
+
 using Catch::Matchers::Contains;
 
 Mechanism Crank() {
@@ -35,8 +38,8 @@ TEST_CASE("links, joints, drive, outputs and hints land at the indices the names
   const Joint& p = Prismatic(m, "S", "frame", "F", "block", "A", {3, 4}, 0.25);
   CHECK(p.type == JointType::kPrismatic);
   CHECK((p.link_a == 0 && p.point_a == 1 && p.link_b == 2 && p.point_b == 0));
-  CHECK(p.axis.x() == Approx(0.6).epsilon(1e-15));  // normalised
-  CHECK(p.axis.y() == Approx(0.8).epsilon(1e-15));
+  CHECK(p.axis.x() == Approx(0.6).epsilon(kUlps));  // normalised
+  CHECK(p.axis.y() == Approx(0.8).epsilon(kUlps));
   CHECK(p.angle == 0.25);
   SetDrive(m, "A0", 0.5, "alpha");
   CHECK((m.drive.joint == 0 && m.drive.zero == 0.5 && m.drive.input_name == "alpha"));

@@ -15,6 +15,9 @@
 namespace koppel::mechanism_test {
 namespace {
 
+// relative: the length scale is the longest distance of the points, one sqrt: a few ulps
+constexpr double kUlps = 1e-15;
+
 using Catch::Matchers::Contains;
 
 // Every output kind once on a slider-crank: the unit of each is fixed by the convention.
@@ -163,8 +166,8 @@ TEST_CASE("the mirror image reflects points, hints and senses; twice is the orig
 
 TEST_CASE("the length scale is the largest body-frame point distance, without a floor", "[mechanism]") {
   // slider-crank: |A| = l1 on the crank, |B| = l2 on the coupler, |A0| = e on the frame
-  CHECK(LengthScale(test::SliderCrank(1.0, 2.6, 0.8)) == Approx(2.6).epsilon(1e-15));
-  CHECK(LengthScale(test::SliderCrank(1e-6, 2.6e-6, 0.8e-6)) == Approx(2.6e-6).epsilon(1e-15));
+  CHECK(LengthScale(test::SliderCrank(1.0, 2.6, 0.8)) == Approx(2.6).epsilon(kUlps));
+  CHECK(LengthScale(test::SliderCrank(1e-6, 2.6e-6, 0.8e-6)) == Approx(2.6e-6).epsilon(kUlps));
   CHECK(LengthScale(Mechanism()) == 1.0);  // no points at all: a unit scale
 }
 

@@ -13,6 +13,9 @@
 namespace koppel::classification_test {
 namespace {
 
+// a link length read off the mechanism's points (a difference of O(1) coordinates): an ulp
+constexpr double kLengthRoundoff = 1e-15;
+
 Mechanism FourBar(double a, double b, double c, double d) {
   const auto pose = test::FourBarRocker(a, b, c, d, DegToRad(75), 1);
   return test::PlainFourBar(a, b, c, d, DegToRad(75), pose ? pose->b : Eigen::Vector2d(d, b));
@@ -57,9 +60,9 @@ TEST_CASE("slider-cranks: crank-slider, rocker-slider, change-point", "[classifi
   CHECK(ClassifyChain(test::SliderCrank(1, 1.5, 0.8)).grashof == GrashofType::kRockerSlider);
   const Classification neutral = ClassifyChain(test::SliderCrank(1, 1.8, 0.8));
   CHECK(neutral.grashof == GrashofType::kChangePoint);
-  CHECK(std::abs(Length(neutral, "e")) == Approx(0.8).margin(1e-15));
+  CHECK(std::abs(Length(neutral, "e")) == Approx(0.8).margin(kLengthRoundoff));
   CHECK(Length(neutral, "a") == 1);
-  CHECK(Length(neutral, "b") == Approx(1.8).margin(1e-15));
+  CHECK(Length(neutral, "b") == Approx(1.8).margin(kLengthRoundoff));
   // the six-link proportional linkage is neither
   CHECK(ClassifyChain(test::ProportionalLinkage(1, 0.5, 1.83)).grashof == GrashofType::kNotApplicable);
 }

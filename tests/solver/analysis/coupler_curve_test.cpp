@@ -13,6 +13,23 @@
 
 namespace koppel::coupler_curve_test {
 namespace {
+
+// relative: Gauss on the Hermite interpolant of a circle: O(h^4) ~ 1e-7 at 5 deg steps
+constexpr double kArcLength = 1e-6;
+// relative: a circle's curvature from exact transfer functions: rounding only
+constexpr double kCurvatureRoundoff = 1e-12;
+// [length] a converged pose against seed 003's closed form on O(10) lengths: rounding only
+constexpr double kPoseRoundoff = 1e-12;
+// [deg] the document's figures, read off a chart to 0.1 deg: half of it
+constexpr double kChartDeg = 0.05;
+// L / l1 printed as 3.91: half a unit of its last digit
+constexpr double kChartLength = 0.005;
+// the same band computed twice from the same samples and stretch: rounding only
+constexpr double kSameBand = 1e-12;
+// [deg] the reference input is the one asked for, through two unit conversions
+constexpr double kReferenceDeg = 1e-12;
+// [deg] the sum of two chart readings, each to within kChartDeg
+constexpr double kChartSumDeg = 0.1;
 const double kL23 = 2.5 * std::sqrt(3.0);
 const double kKappa = std::acos(5.0 / 9.0 * std::sqrt(3.0));
 Mechanism Seed003() { return test::FourBar(1.0, kL23, kL23, 4.0, 25.0 / 3, kKappa, 1); }
@@ -27,8 +44,8 @@ TEST_CASE("arc length of the crank pin is l1 times the crank angle", "[curve]") 
   const CouplerCurve c = TraceCurve(m, {1, 1}, range);  // crank.A on a circle of radius l1 = 1
   REQUIRE(c.sweep.complete());
   // Gauss on the Hermite interpolant of a circle: O(h^4) ~ 1e-7 relative at 5 deg steps
-  CHECK(c.arc_length.back() == Approx(2 * kPi).epsilon(1e-6));
-  for (double k : c.curvature) CHECK(k == Approx(1.0).epsilon(1e-12));  // curvature 1/l1
+  CHECK(c.arc_length.back() == Approx(2 * kPi).epsilon(kArcLength));
+  for (double k : c.curvature) CHECK(k == Approx(1.0).epsilon(kCurvatureRoundoff));  // curvature 1/l1
 }
 
 TEST_CASE("seed 003: B0K_I = 10/3 sqrt 6, stroke h = 0.469, K_I flattest", "[curve]") {
@@ -41,8 +58,8 @@ TEST_CASE("seed 003: B0K_I = 10/3 sqrt 6, stroke h = 0.469, K_I flattest", "[cur
   REQUIRE(c.sweep.complete());
   const Eigen::Vector2d b0(4, 0);
   const Eigen::Vector2d k_i = c.points[360], k_ii = c.points[0];  // phi = 180 deg and 0
-  CHECK((k_i - b0).norm() == Approx(10.0 / 3 * std::sqrt(6.0)).margin(1e-12));
-  CHECK((k_ii - b0).norm() - (k_i - b0).norm() == Approx(std::sqrt(2.0) / 3 * (5 * std::sqrt(11.0) - 9 * std::sqrt(3.0))).margin(1e-12));
+  CHECK((k_i - b0).norm() == Approx(10.0 / 3 * std::sqrt(6.0)).margin(kPoseRoundoff));
+  CHECK((k_ii - b0).norm() - (k_i - b0).norm() == Approx(std::sqrt(2.0) / 3 * (5 * std::sqrt(11.0) - 9 * std::sqrt(3.0))).margin(kPoseRoundoff));
   // six-point contact: the curvature vanishes at K_I, and it is the flattest sample
   CHECK(std::abs(c.curvature[360]) < 1e-12);
   CHECK(FlattestSample(c) == 360);
@@ -52,13 +69,13 @@ TEST_CASE("seed 003 reading example: Q_G = 0.005", "[curve]") {
   const StraightStretch s = LongestStraightStretch(Seed003(), {2, 2}, 0.005, kPi, kPi, DegToRad(0.02));
   REQUIRE(s.ok());
   // the document's figures, read off a chart: phi_G = 163.3 deg, phi_A = 98.3 deg (0.1 deg), L/l1 = 3.91
-  CHECK(RadToDeg(s.phi_g) == Approx(163.3).margin(0.05));
-  CHECK(RadToDeg(s.phi_a) == Approx(98.3).margin(0.05));
-  CHECK(s.length == Approx(3.91).margin(0.005));
+  CHECK(RadToDeg(s.phi_g) == Approx(163.3).margin(kChartDeg));
+  CHECK(RadToDeg(s.phi_a) == Approx(98.3).margin(kChartDeg));
+  CHECK(s.length == Approx(3.91).margin(kChartLength));
   CHECK(s.qg <= 0.005);
   // the band of the reported stretch, measured on its own, is the same
   const StraightStretch band = StretchBand(Seed003(), {2, 2}, kPi, s.phi_a, s.phi_e, DegToRad(0.02));
-  CHECK(band.band == Approx(s.band).margin(1e-12));
+  CHECK(band.band == Approx(s.band).margin(kSameBand));
   // a tighter tolerance gives a shorter stretch
   const StraightStretch tight = LongestStraightStretch(Seed003(), {2, 2}, 0.001, kPi, kPi, DegToRad(0.1));
   REQUIRE(tight.ok());
@@ -75,9 +92,9 @@ TEST_CASE("a stretch is reported with phi_I and phi_A in [0, 360) and phi_E = ph
   const Mechanism m = Seed003();
   const StraightStretch at_180 = LongestStraightStretch(m, {2, 2}, 0.005, kPi, kPi, DegToRad(0.02));
   REQUIRE(at_180.ok());
-  CHECK(RadToDeg(at_180.reference) == Approx(180).margin(1e-12));
-  CHECK(RadToDeg(at_180.phi_a) == Approx(98.3).margin(0.05));
-  CHECK(RadToDeg(at_180.phi_e) == Approx(98.3 + 163.3).margin(0.1));
+  CHECK(RadToDeg(at_180.reference) == Approx(180).margin(kReferenceDeg));
+  CHECK(RadToDeg(at_180.phi_a) == Approx(98.3).margin(kChartDeg));
+  CHECK(RadToDeg(at_180.phi_e) == Approx(98.3 + 163.3).margin(kChartSumDeg));
   for (const std::optional<double> reference : {std::optional<double>(), std::optional<double>(-kPi), std::optional<double>(3 * kPi)}) {
     const StraightStretch s = LongestStraightStretch(m, {2, 2}, 0.005, reference, kPi, DegToRad(0.02));
     INFO("reference " << (reference ? RadToDeg(*reference) : -1.0) << " deg: " << s.Brief());
@@ -97,10 +114,10 @@ TEST_CASE("a stretch through input 0 ends beyond 360 deg; its band does not depe
   // K_II at phi = 0 (seed 003): the stretch -20..20 deg around it, written three ways
   const StraightStretch around_0 = StretchBand(m, {2, 2}, 0, DegToRad(-20), DegToRad(20), DegToRad(0.05));
   REQUIRE(around_0.ok());
-  CHECK(RadToDeg(around_0.reference) == Approx(0).margin(1e-12));
-  CHECK(RadToDeg(around_0.phi_a) == Approx(340).margin(1e-9));
-  CHECK(RadToDeg(around_0.phi_e) == Approx(380).margin(1e-9));
-  CHECK(RadToDeg(around_0.phi_g) == Approx(40).margin(1e-9));
+  CHECK(RadToDeg(around_0.reference) == Approx(0).margin(kReferenceDeg));
+  CHECK(RadToDeg(around_0.phi_a) == Approx(340).margin(kSameStretch));
+  CHECK(RadToDeg(around_0.phi_e) == Approx(380).margin(kSameStretch));
+  CHECK(RadToDeg(around_0.phi_g) == Approx(40).margin(kSameStretch));
   const StraightStretch shifted = StretchBand(m, {2, 2}, 2 * kPi, DegToRad(340), DegToRad(380), DegToRad(0.05));
   const StraightStretch turned = StretchBand(m, {2, 2}, 0, DegToRad(340), DegToRad(380), DegToRad(0.05));
   for (const StraightStretch* s : {&shifted, &turned}) {
@@ -114,7 +131,7 @@ TEST_CASE("a stretch through input 0 ends beyond 360 deg; its band does not depe
   // K_II is the point farthest from B0 on the symmetry axis (seed 003): the tangent there is
   // normal to B0 K_II, so the reference point's position is the document's
   CHECK((around_0.reference_point - Eigen::Vector2d(4, 0)).norm() ==
-        Approx(10.0 / 3 * std::sqrt(6.0) + std::sqrt(2.0) / 3 * (5 * std::sqrt(11.0) - 9 * std::sqrt(3.0))).margin(1e-12));
+        Approx(10.0 / 3 * std::sqrt(6.0) + std::sqrt(2.0) / 3 * (5 * std::sqrt(11.0) - 9 * std::sqrt(3.0))).margin(kPoseRoundoff));
   CHECK(std::abs(around_0.tangent.dot((around_0.reference_point - Eigen::Vector2d(4, 0)).normalized())) < 1e-9);
 }
 

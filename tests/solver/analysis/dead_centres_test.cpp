@@ -13,6 +13,16 @@
 
 namespace koppel::dead_centres_test {
 namespace {
+
+// phi_H / (2 pi - phi_H) of dead centres refined to kRefined (1e-11): the ratio of O(1) numbers
+// amplifies it a few times
+constexpr double kPhaseRatio = 1e-10;
+// [rad] mu of an assembled pose against seed 000's closed form: rounding of a converged pose
+constexpr double kSweptMu = 1e-12;
+// [deg] against the seed document's value printed to 10 decimals: its last digit
+constexpr double kDocumentDeg = 1e-9;
+// [deg] against the seed document's value printed to 7 decimals: its last digit
+constexpr double kDocumentStrokeDeg = 1e-6;
 // refined by Newton on s' to 1e-12 in the input; values then follow to roundoff
 constexpr double kRefined = 1e-11;
 }
@@ -42,9 +52,9 @@ TEST_CASE("slider-crank dead centres, stroke and phase ratio match seed 000", "[
     CHECK(r.stroke == Approx(s_a - s_i).margin(kRefined));
     const double phi_h = phi_i - phi_a;  // phi_H = phi_i - phi_a (positive sense)
     CHECK(r.phi_h == Approx(phi_h).margin(kRefined));
-    CHECK(r.phase_ratio == Approx(phi_h / (2 * kPi - phi_h)).margin(1e-10));
+    CHECK(r.phase_ratio == Approx(phi_h / (2 * kPi - phi_h)).margin(kPhaseRatio));
     // the document: phase ratio 1 for e = 0, > 1 for a positive offset, < 1 for a negative one
-    if (e == 0) CHECK(r.phase_ratio == Approx(1.0).margin(1e-10));
+    if (e == 0) CHECK(r.phase_ratio == Approx(1.0).margin(kPhaseRatio));
     if (e > 0) CHECK(r.phase_ratio > 1.0);
     if (e < 0) CHECK(r.phase_ratio < 1.0);
     for (const DeadCentre& d : r.points) {
@@ -65,16 +75,16 @@ TEST_CASE("transmission angle: mu = 90 deg - |psi| and its minimum (seed 000)", 
     REQUIRE(sweep.complete());
     double mu_min = 10, at = -1;
     for (size_t i = 0; i < sweep.inputs.size(); ++i) {
-      CHECK(sweep.outputs(i, 3) == Approx(test::SliderCrank(1.0, 2.6, e, sweep.inputs[i]).mu).margin(1e-12));
+      CHECK(sweep.outputs(i, 3) == Approx(test::SliderCrank(1.0, 2.6, e, sweep.inputs[i]).mu).margin(kSweptMu));
       if (sweep.outputs(i, 3) < mu_min - 1e-12) {
         mu_min = sweep.outputs(i, 3);
         at = sweep.inputs[i];
       }
     }
     // mu_min = 90 deg - arcsin(lambda + eps), at phi = 0 (e = 0: also at 180 deg, arccos(l1/l2))
-    CHECK(mu_min == Approx(kPi / 2 - std::asin(1 / 2.6 + e / 2.6)).margin(1e-12));
+    CHECK(mu_min == Approx(kPi / 2 - std::asin(1 / 2.6 + e / 2.6)).margin(kSweptMu));
     CHECK(at == 0.0);
-    if (e == 0) CHECK(mu_min == Approx(std::acos(1 / 2.6)).margin(1e-12));
+    if (e == 0) CHECK(mu_min == Approx(std::acos(1 / 2.6)).margin(kSweptMu));
   }
 }
 
@@ -90,7 +100,7 @@ TEST_CASE("a crank-rocker's rocker dead centres are classified", "[deadcentres]"
   CHECK(r.classified);
   // swing angle psi_0 from the law of cosines at A0B = l2 + l1 and l2 - l1
   auto psi = [&](double a0b) { return kPi - std::acos((16 + l23 * l23 - a0b * a0b) / (8 * l23)); };
-  CHECK(r.stroke == Approx(std::abs(psi(l23 + 1) - psi(l23 - 1))).margin(1e-11));
+  CHECK(r.stroke == Approx(std::abs(psi(l23 + 1) - psi(l23 - 1))).margin(kRefined));
 }
 
 }  // namespace koppel::dead_centres_test
@@ -124,8 +134,8 @@ TEST_CASE("a dead centre exactly at the start of a whole turn is kept, once", "[
     // psi_a = 87.1340160174 deg, stroke 51.4563618 deg (the issue's truth, by the law of cosines)
     CHECK(std::abs(r.s_a - extended.psi) < kRefined);
     CHECK(std::abs(r.stroke - std::abs(folded.psi - extended.psi)) < kRefined);
-    CHECK(RadToDeg(r.s_a) == Approx(87.1340160174).margin(1e-9));
-    CHECK(RadToDeg(r.stroke) == Approx(51.4563618).margin(1e-6));
+    CHECK(RadToDeg(r.s_a) == Approx(87.1340160174).margin(kDocumentDeg));
+    CHECK(RadToDeg(r.stroke) == Approx(51.4563618).margin(kDocumentStrokeDeg));
   }
 }
 

@@ -15,6 +15,13 @@
 namespace koppel::extremes_test {
 namespace {
 
+// [deg] against the document's value printed to 10 decimals: its last digit
+constexpr double kDocumentDeg = 1e-9;
+// [rad] an extreme at the range's end is at the requested input itself: an ulp
+constexpr double kRangeEnd = 1e-15;
+// [rad] mu of an assembled pose against the closed form: rounding of a converged pose
+constexpr double kSweptMu = 1e-12;
+
 // Stationary points refined to 1e-12 in the input; folds to 1e-12 by Newton on the folded angle.
 constexpr double kRefined = 1e-11;
 
@@ -44,7 +51,7 @@ TEST_CASE("crank-rocker mu_min at phi = 0 and mu_max at 180 deg over a whole tur
   REQUIRE(r.status == AnalysisStatus::kComplete);
   CHECK(std::abs(r.minimum.input) < kRefined);
   CHECK(r.minimum.value == Approx(test::CrankRockerMu(a, b, c, d, 0)).margin(kRefined));
-  CHECK(RadToDeg(r.minimum.value) == Approx(33.2061837935).margin(1e-9));
+  CHECK(RadToDeg(r.minimum.value) == Approx(33.2061837935).margin(kDocumentDeg));
   CHECK(r.minimum.kind == ExtremeKind::kStationary);
   CHECK(std::abs(r.maximum.input - kPi) < kRefined);
   CHECK(r.maximum.value == Approx(test::CrankRockerMu(a, b, c, d, kPi)).margin(kRefined));
@@ -70,8 +77,8 @@ TEST_CASE("over part of a turn an extreme may be an end of the range", "[extreme
   const OutputExtremes r = FindOutputExtremes(test::SliderCrank(l1, l2, e), 1, 0, Range(30, 200, 1));
   REQUIRE(r.status == AnalysisStatus::kComplete);
   CHECK(r.minimum.kind == ExtremeKind::kRangeEnd);
-  CHECK(r.minimum.input == Approx(DegToRad(30)).margin(1e-15));
-  CHECK(r.minimum.value == Approx(test::SliderCrank(l1, l2, e, DegToRad(30)).mu).margin(1e-12));
+  CHECK(r.minimum.input == Approx(DegToRad(30)).margin(kRangeEnd));
+  CHECK(r.minimum.value == Approx(test::SliderCrank(l1, l2, e, DegToRad(30)).mu).margin(kSweptMu));
   CHECK(r.maximum.kind == ExtremeKind::kFold);
   CHECK(std::abs(r.maximum.input - test::SliderCrankMuFolds(l1, e)[0]) < kRefined);
 }
@@ -105,7 +112,7 @@ TEST_CASE("a constant output has itself as its extremes", "[extremes]") {
   REQUIRE(r.status == AnalysisStatus::kComplete);
   CHECK(r.minimum.kind == ExtremeKind::kConstant);
   CHECK(r.maximum.kind == ExtremeKind::kConstant);
-  CHECK(r.minimum.value == Approx(0).margin(1e-12));
+  CHECK(r.minimum.value == Approx(0).margin(kSweptMu));
 }
 
 }  // namespace koppel::extremes_test

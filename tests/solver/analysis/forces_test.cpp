@@ -15,6 +15,10 @@
 namespace koppel::forces_test {
 namespace {
 
+// the normal force is the reaction's projection on the slide's normal, computed again here: the same
+// two products of O(1) numbers, different only by the rounding of the rotation
+constexpr double kSameProjection = 1e-12;
+
 // Drive torque against a closed form: both exact, so they agree to roundoff of sums of O(10)
 // terms of the loads' size.
 constexpr double kExact = 1e-9;
@@ -82,7 +86,7 @@ void AddReactions(const Poser& poser, const ForcesRow& row, Wrenches& w) {
       w.AddMoment(j.link_a, -r.moment);
       const Eigen::Vector2d axis = Rotate(poser.Angle(row.q, j.link_a), j.axis);
       CHECK(std::abs(r.force.dot(axis)) <= kBalance * std::max(1.0, r.force.norm()));  // a slide carries no force along it
-      CHECK_THAT(r.normal, Catch::Matchers::WithinAbs(r.force.dot(Eigen::Vector2d(-axis.y(), axis.x())), 1e-12));
+      CHECK_THAT(r.normal, Catch::Matchers::WithinAbs(r.force.dot(Eigen::Vector2d(-axis.y(), axis.x())), kSameProjection));
     }
   }
   const Joint& d = m.joints[m.drive.joint];

@@ -15,6 +15,9 @@
 namespace koppel::ranges_test {
 namespace {
 
+// [rad] a branch's period is a whole number of turns, summed from the sweep's steps: rounding only
+constexpr double kPeriod = 1e-12;
+
 // limits are located to 1e-11 rad (continuation.hpp); the law of cosines is exact to roundoff
 constexpr double kLimit = 1e-9;
 
@@ -30,7 +33,7 @@ TEST_CASE("a crank-rocker turns fully on both of its assembly branches", "[range
   for (const BranchRange& b : r.branches) {
     CHECK(b.from_kind == RangeEnd::kFullTurn);
     CHECK(b.to_kind == RangeEnd::kFullTurn);
-    CHECK(b.period == Approx(2 * kPi).margin(1e-12));
+    CHECK(b.period == Approx(2 * kPi).margin(kPeriod));
     CHECK(b.singular_points.empty());
   }
   CHECK(r.branches[0].branch == 0);
@@ -72,11 +75,11 @@ TEST_CASE("the kite comes round after 720 deg; the parallelogram stops at its ch
   const RangeReport kite = DrivableRanges(test::PlainFourBar(1, 2.5, 2.5, 1, DegToRad(90), {2, 2}));
   REQUIRE(kite.branches.size() == 1);
   CHECK(kite.branches[0].to_kind == RangeEnd::kFullTurn);
-  CHECK(kite.branches[0].period == Approx(4 * kPi).margin(1e-12));
+  CHECK(kite.branches[0].period == Approx(4 * kPi).margin(kPeriod));
 
   const Mechanism parallelogram = test::PlainFourBar(1, 3, 1, 3, DegToRad(90), {3, 1});
   const RangeReport turning = DrivableRanges(parallelogram);
-  CHECK(turning.branches[0].period == Approx(2 * kPi).margin(1e-12));
+  CHECK(turning.branches[0].period == Approx(2 * kPi).margin(kPeriod));
   RangeOptions stop;
   stop.continuation.at_branch_point = BranchPointAction::kStop;
   const RangeReport stopped = DrivableRanges(parallelogram, stop);

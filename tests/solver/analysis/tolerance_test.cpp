@@ -14,6 +14,24 @@
 namespace koppel::tolerance_test {
 namespace {
 
+// [length] the nominal pose against seed 000's closed form: rounding of a converged pose
+constexpr double kNominalRoundoff = 1e-12;
+// a sensitivity against a central difference of the closed form (step h of the test):
+// truncation O(h^2) and rounding O(eps / h) of the reference
+constexpr double kSensitivityFd = 1e-8;
+// relative: the worst case is the same three products summed again here: rounding only
+constexpr double kSameSum = 1e-14;
+// the shares of the variance add up to 1: rounding of a few quotients
+constexpr double kSharesSum = 1e-12;
+// relative: the clearance's worst case against c / cos(psi) from the closed-form psi
+constexpr double kClearance = 1e-9;
+// relative: the sampled standard deviation of 20000 samples against the linear model's: within
+// ~1 % (3 standard errors, see the checks), 3 % with margin for the seed
+constexpr double kMonteCarlo = 0.03;
+// the sampled mean within 0.05 linear standard deviations of the nominal: about seven
+// standard errors of a 20000-sample mean (1 / sqrt(20000) = 0.007)
+constexpr double kMonteCarloMean = 0.05;
+
 // parameters l1, l2, e of seed 000's slider-crank (tests/support/mechanisms.hpp)
 const MechanismBuilder kBuilder = [](const std::vector<double>& p) -> Expected<Mechanism> {
   if (!(p[0] > 0 && p[1] > 0)) return Expected<Mechanism>::Error("lengths must be positive");
@@ -38,7 +56,7 @@ TEST_CASE("sensitivities of s to l1, l2, e against central differences of seed 0
   const double h = 1e-5;
   for (const ToleranceRow& row : r.rows) {
     REQUIRE(row.ok);
-    CHECK(row.nominal == Approx(test::SliderCrank(1.0, 2.6, 0.8, row.input).s).margin(1e-12));
+    CHECK(row.nominal == Approx(test::SliderCrank(1.0, 2.6, 0.8, row.input).s).margin(kNominalRoundoff));
     for (int j = 0; j < 3; ++j) {
       std::vector<double> plus = kNominal, minus = kNominal;
       plus[j] += h;
@@ -46,13 +64,13 @@ TEST_CASE("sensitivities of s to l1, l2, e against central differences of seed 0
       const double reference =
           (test::SliderCrank(plus[0], plus[1], plus[2], row.input).s - test::SliderCrank(minus[0], minus[1], minus[2], row.input).s) / (2 * h);
       INFO("phi = " << RadToDeg(row.input) << ", parameter " << j);
-      CHECK(row.sensitivity[j] == Approx(reference).margin(1e-8));
+      CHECK(row.sensitivity[j] == Approx(reference).margin(kSensitivityFd));
     }
     const double worst = std::abs(row.sensitivity[0]) * 0.01 + std::abs(row.sensitivity[1]) * 0.02 + std::abs(row.sensitivity[2]) * 0.005;
-    CHECK(row.worst_case == Approx(worst).epsilon(1e-14));
+    CHECK(row.worst_case == Approx(worst).epsilon(kSameSum));
     double shares = 0;
     for (double s : row.share) shares += s;
-    CHECK(shares == Approx(1.0).epsilon(1e-12));
+    CHECK(shares == Approx(1.0).epsilon(kSharesSum));
   }
 }
 
@@ -70,7 +88,7 @@ TEST_CASE("the crank pin's clearance moves the slider by c / cos psi", "[toleran
     const double sin_psi = -(1.0 / 2.6) * std::cos(row.input) - 0.8 / 2.6;
     const double cos_psi = std::sqrt(1 - sin_psi * sin_psi);
     INFO("phi = " << RadToDeg(row.input));
-    CHECK(row.clearance_worst_case == Approx(0.003 / cos_psi).epsilon(1e-9));
+    CHECK(row.clearance_worst_case == Approx(0.003 / cos_psi).epsilon(kClearance));
   }
 }
 
@@ -98,8 +116,8 @@ TEST_CASE("Monte Carlo through the exact solver stays inside the worst-case band
       }
       // the standard deviation of 20000 samples is within ~1 % (3 standard errors) of the
       // linear model's: T / sqrt(3) for uniform, T / 3 for normal, c / 2 for a pin in its hole
-      CHECK(row.mc_std == Approx(row.linear_std).epsilon(0.03));
-      CHECK(row.mc_mean == Approx(row.nominal).margin(0.05 * row.linear_std));
+      CHECK(row.mc_std == Approx(row.linear_std).epsilon(kMonteCarlo));
+      CHECK(row.mc_mean == Approx(row.nominal).margin(kMonteCarloMean * row.linear_std));
     }
   }
 }
@@ -111,7 +129,7 @@ TEST_CASE("without clearance the Monte Carlo standard deviation is rss / sqrt(3)
     o.distribution = distribution;
     const ToleranceReport r = AnalyseTolerances(kBuilder, kNominal, o);
     REQUIRE(r.status == AnalysisStatus::kComplete);
-    CHECK(r.rows[0].mc_std == Approx(r.rows[0].rss * factor).epsilon(0.03));
+    CHECK(r.rows[0].mc_std == Approx(r.rows[0].rss * factor).epsilon(kMonteCarlo));
   }
 }
 

@@ -17,6 +17,13 @@
 namespace koppel::constraints_test {
 namespace {
 
+// Evaluate and Residuals are the same equations (trig computed once vs per call) on O(1)
+// coordinates: they differ by rounding only, a few ulps of |F| ~ 1
+constexpr double kSameEquations = 1e-14;
+// Taylor coefficients by the recurrences against series arithmetic through the residuals: both
+// exact up to the rounding of O(order^2) products of O(1) coefficients
+constexpr double kSeriesRoundoff = 1e-12;
+
 // A slide-driven mechanism: the P drive row.
 Mechanism SlideDriven() {
   Mechanism m = test::SliderCrank(1.0, 2.6, 0.8);
@@ -112,7 +119,7 @@ TEST_CASE("one-pass evaluation: the residuals and Jacobian of Residuals and Jaco
       const double input = angle(rng);
       system.Evaluate(q.data(), input, residual.data(), values.data(), trig.data());
       system.Residuals(q.data(), input, reference.data());
-      for (int r = 0; r < rows; ++r) CHECK_THAT(residual[r], Catch::Matchers::WithinAbs(reference[r], 1e-14));
+      for (int r = 0; r < rows; ++r) CHECK_THAT(residual[r], Catch::Matchers::WithinAbs(reference[r], kSameEquations));
       // the Jacobian from finite differences (the first test case) is the dense one; every entry
       // outside the pattern is zero there
       Eigen::MatrixXd dense(rows, n), from_pattern = Eigen::MatrixXd::Zero(rows, n);
@@ -160,7 +167,7 @@ TEST_CASE("series residuals order by order: the coefficients of Residuals on Tay
       system.Residuals(qs.data(), series_input, rs.data());
       system.TrigSeriesPartial(k, qc.data(), trig_series.data());
       system.SeriesResidual(k, qc.data(), trig_series.data(), residual.data());
-      for (int r = 0; r < rows; ++r) CHECK_THAT(residual[r], Catch::Matchers::WithinAbs(rs[r].c[k], 1e-12));
+      for (int r = 0; r < rows; ++r) CHECK_THAT(residual[r], Catch::Matchers::WithinAbs(rs[r].c[k], kSeriesRoundoff));
       system.TrigSeriesComplete(k, qc.data(), trig_series.data());
     }
     // and the trig series are those of cos and sin of the angles' full series
@@ -171,8 +178,8 @@ TEST_CASE("series residuals order by order: the coefficients of Residuals on Tay
       for (int j = 0; j <= kOrder; ++j) theta.c[j] = qc(i + 2, j);
       SinCos(theta, s, c);
       for (int j = 0; j <= kOrder; ++j) {
-        CHECK_THAT(trig_series[2 * l + t * j], Catch::Matchers::WithinAbs(c.c[j], 1e-12));
-        CHECK_THAT(trig_series[2 * l + 1 + t * j], Catch::Matchers::WithinAbs(s.c[j], 1e-12));
+        CHECK_THAT(trig_series[2 * l + t * j], Catch::Matchers::WithinAbs(c.c[j], kSeriesRoundoff));
+        CHECK_THAT(trig_series[2 * l + 1 + t * j], Catch::Matchers::WithinAbs(s.c[j], kSeriesRoundoff));
       }
     }
   }

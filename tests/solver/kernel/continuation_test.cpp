@@ -19,6 +19,12 @@
 namespace koppel::continuation_test {
 namespace {
 
+// [rad] a sample's input is from + i step: rounding only
+constexpr double kSampleInput = 1e-12;
+// [length/rad] s' in a row at a branch point comes from the window's interpolant of the
+// branch (exact to ~1e-11 in the pose, less in its derivative), not from the singular Jacobian
+constexpr double kBranchPointRate = 1e-8;
+
 // The solver and the closed forms agree to roundoff; a pose next to a branch point comes from
 // the window's interpolant (exact to ~1e-11 there): 1e-9 rad leaves room for both.
 constexpr double kPose = 1e-9;
@@ -118,7 +124,7 @@ TEST_CASE("deltoid (kite) turns its crank twice for one turn of the rocker, thro
   CheckBranchPointsAt(r, {0, 360, 720});
   // the rocker turns once while the crank turns twice
   const int column = OutputColumn(m, 0, 0, 2);
-  CHECK(r.outputs(r.inputs.size() - 1, column) - r.outputs(0, column) == Approx(2 * kPi).margin(1e-9));
+  CHECK(r.outputs(r.inputs.size() - 1, column) - r.outputs(0, column) == Approx(2 * kPi).margin(kPose));
   // switching is impossible there: the other branch (coupler and rocker turning together) runs
   // at constant input; the sweep stops at the point and says why
   const SweepResult s = Sweep(m, Range(0, 720, 7.5, BranchPointAction::kSwitch));
@@ -145,7 +151,7 @@ TEST_CASE("--at-branch-point switch takes the other branch, stop ends the sweep 
   CHECK(t.status == SweepStatus::kPartial);
   CHECK(std::abs(t.reached.to - kPi) < kLocation);
   REQUIRE(t.gaps.size() == 1);
-  CHECK(t.inputs.back() == Approx(kPi).margin(1e-12));  // the sample on the point itself is kept, flagged
+  CHECK(t.inputs.back() == Approx(kPi).margin(kSampleInput));  // the sample on the point itself is kept, flagged
   CHECK(t.singular.back() == 1);
 }
 
@@ -168,8 +174,8 @@ TEST_CASE("a slider-crank with l2 = l1 + e: the rows at its branch points carry 
     CHECK(std::abs(r.outputs(i, s + 1) - (closed(phi + h) - closed(phi - h)) / (2 * h)) < kRate);
     CHECK(std::abs(r.outputs(i, s + 2)) < 10.0);  // finite and of the size of the geometry
   }
-  CHECK(r.outputs(0, s + 1) == Approx(l1 + std::sqrt(l1 * l1 + e * l1)).margin(1e-8));
-  CHECK(r.outputs(r.inputs.size() - 1, s + 1) == Approx(l1 - std::sqrt(l1 * l1 + e * l1)).margin(1e-8));
+  CHECK(r.outputs(0, s + 1) == Approx(l1 + std::sqrt(l1 * l1 + e * l1)).margin(kBranchPointRate));
+  CHECK(r.outputs(r.inputs.size() - 1, s + 1) == Approx(l1 - std::sqrt(l1 * l1 + e * l1)).margin(kBranchPointRate));
   CHECK(r.singular.front() == 1);
   CHECK(r.singular.back() == 1);
 }

@@ -17,6 +17,13 @@
 namespace koppel::drive_input_test {
 namespace {
 
+// [rad] a sample's input is the one asked for (from + i step): rounding only
+constexpr double kSampleInput = 1e-12;
+// [rad] limit points are located by regula falsi on det(J S) to ~1e-13 rad (continuation.hpp)
+constexpr double kLimitInput = 1e-12;
+// a distance output against 2 a |sin(phi / 2)| of O(1) lengths: rounding of the assembled pose
+constexpr double kDistanceRoundoff = 1e-12;
+
 // psi against the circle intersection: roundoff of both (1e-12), far below a wrong branch (O(1)).
 constexpr double kPose = 1e-9;
 
@@ -46,7 +53,7 @@ TEST_CASE("an R drive's input is an angle: 260 .. 360 deg of a triple-rocker are
   REQUIRE(r.inputs.size() == 11);
   const int psi = OutputColumn(f.m, 0, 0, 2);
   for (size_t i = 0; i < r.inputs.size(); ++i) {
-    CHECK(r.inputs[i] == Approx(DegToRad(260 + 10.0 * i)).margin(1e-12));  // as asked
+    CHECK(r.inputs[i] == Approx(DegToRad(260 + 10.0 * i)).margin(kSampleInput));  // as asked
     INFO("phi = " << RadToDeg(r.inputs[i]));
     CHECK(std::abs(AngleDifference(r.outputs(i, psi), test::FourBarRocker(f.a, f.b, f.c, f.d, r.inputs[i], +1)->psi)) < kPose);
   }
@@ -54,8 +61,8 @@ TEST_CASE("an R drive's input is an angle: 260 .. 360 deg of a triple-rocker are
   const SweepResult t = Sweep(f.m, Range(0, 360, 1));
   CHECK(t.status == SweepStatus::kPartial);
   REQUIRE(t.gaps.size() == 1);
-  CHECK(t.gaps[0].from == Approx(f.phi_g).margin(1e-12));
-  CHECK(t.gaps[0].to == Approx(2 * kPi - f.phi_g).margin(1e-12));
+  CHECK(t.gaps[0].from == Approx(f.phi_g).margin(kLimitInput));
+  CHECK(t.gaps[0].to == Approx(2 * kPi - f.phi_g).margin(kLimitInput));
   CHECK(t.inputs.size() == 106 + 106);  // 0 .. 105 and 255 .. 360
   for (size_t i = 0; i < t.inputs.size(); ++i) {
     INFO("phi = " << RadToDeg(t.inputs[i]));
@@ -63,8 +70,8 @@ TEST_CASE("an R drive's input is an angle: 260 .. 360 deg of a triple-rocker are
   }
   // both limits are reported, each once
   REQUIRE(t.singular_points.size() == 2);
-  CHECK(t.singular_points[0].input == Approx(-f.phi_g).margin(1e-12));
-  CHECK(t.singular_points[1].input == Approx(f.phi_g).margin(1e-12));
+  CHECK(t.singular_points[0].input == Approx(-f.phi_g).margin(kLimitInput));
+  CHECK(t.singular_points[1].input == Approx(f.phi_g).margin(kLimitInput));
 }
 
 TEST_CASE("a branch point stop is no limit: the kite's second turn is not its first one again", "[sweep][periodic]") {
@@ -139,12 +146,12 @@ TEST_CASE("a distance output through zero: its rows, the cells without a number 
   const int column = OutputColumn(m, 0, 0, 2);
   for (int i = 0; i < 5; ++i) {
     const double phi = r.inputs[i];
-    CHECK(r.outputs(i, column) == Approx(2 * a * std::abs(std::sin(phi / 2))).margin(1e-12));
+    CHECK(r.outputs(i, column) == Approx(2 * a * std::abs(std::sin(phi / 2))).margin(kDistanceRoundoff));
     const bool zero = i == 2;
     CHECK(r.Defined(i, column));
     CHECK(r.Defined(i, column + 1) == !zero);
     CHECK(r.Defined(i, column + 2) == !zero);
-    if (!zero) CHECK(r.outputs(i, column + 1) == Approx(a * std::cos(phi / 2) * (phi > 0 ? 1 : -1)).margin(1e-9));
+    if (!zero) CHECK(r.outputs(i, column + 1) == Approx(a * std::cos(phi / 2) * (phi > 0 ? 1 : -1)).margin(kPose));
     CHECK(r.Defined(i, OutputColumn(m, 1, 0, 2) + 1));  // psi is differentiable everywhere
   }
   CHECK_THAT(r.message, Catch::Contains("output 'd' is not differentiable at phi = 0 deg"));

@@ -18,6 +18,17 @@
 namespace koppel::sweep_test {
 namespace {
 
+// y' against a central difference of the swept y with h = 1e-5: truncation h^2 y''' / 6 ~ 1e-11,
+// rounding eps |y| / h ~ 1e-11; 1e-7 with margin
+constexpr double kFirstDifference = 1e-7;
+// y'' against (y(+h) - 2 y + y(-h)) / h^2 with h = 1e-5: the rounding of the poses (~1e-13)
+// over h^2 = 1e-10 is ~1e-3
+constexpr double kSecondDifference = 1e-3;
+
+// [rad] singular points are located to about 1e-10 (continuation.hpp) by either path, the block
+// and the dense one
+constexpr double kSingularLocation = 1e-9;
+
 const double kL23 = 2.5 * std::sqrt(3.0);              // seed 003: l2 = l3 = 5/2 sqrt(3)
 const double kKappa = std::acos(5.0 / 9.0 * std::sqrt(3.0));  // seed 003: cos kappa = 5/9 sqrt(3)
 
@@ -102,7 +113,7 @@ TEST_CASE("seed 001: the flat point s''(180) = s'''(180) = s''''(180) = 0 for la
   // s'''(180) = c (1 - 2 lambda^2 - lambda)/(1 + lambda)^3, c = l1 h/l6, zero only for lambda = 0.5
   const double lambda = 0.4, c = 0.4 * 1.83;
   const SweepResult other = Sweep(test::ProportionalLinkage(1.0, 0.4, 1.83), at180);
-  CHECK(other.outputs(0, 3) == Approx(c * (1 - 2 * lambda * lambda - lambda) / std::pow(1 + lambda, 3)).margin(1e-9));
+  CHECK(other.outputs(0, 3) == Approx(c * (1 - 2 * lambda * lambda - lambda) / std::pow(1 + lambda, 3)).margin(test::kClosedForm));
   CHECK(std::abs(other.outputs(0, 3)) > 0.07);
 }
 
@@ -183,8 +194,8 @@ TEST_CASE("two independent loops: velocities agree with differences of solved po
     REQUIRE(local.inputs.size() == 3);
     const double fd1 = (local.outputs(2, 0) - local.outputs(0, 0)) / (2 * h);
     const double fd2 = (local.outputs(2, 0) - 2 * local.outputs(1, 0) + local.outputs(0, 0)) / (h * h);
-    CHECK(local.outputs(1, 1) == Approx(fd1).margin(1e-7));
-    CHECK(local.outputs(1, 2) == Approx(fd2).margin(1e-3));
+    CHECK(local.outputs(1, 1) == Approx(fd1).margin(kFirstDifference));
+    CHECK(local.outputs(1, 2) == Approx(fd2).margin(kSecondDifference));
   }
 }
 
@@ -206,7 +217,7 @@ double CheckSamePaths(const Mechanism& m, SweepOptions o) {
     CHECK(fast.singular_points[i].kind == reference.singular_points[i].kind);
     CHECK(fast.singular_points[i].joints == reference.singular_points[i].joints);
     // located to about 1e-10 (continuation.hpp) by either path
-    CHECK_THAT(fast.singular_points[i].input, Catch::Matchers::WithinAbs(reference.singular_points[i].input, 1e-9));
+    CHECK_THAT(fast.singular_points[i].input, Catch::Matchers::WithinAbs(reference.singular_points[i].input, kSingularLocation));
   }
   REQUIRE(fast.gaps.size() == reference.gaps.size());
   double worst = 0.0;

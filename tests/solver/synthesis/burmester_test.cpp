@@ -18,6 +18,10 @@
 namespace koppel::burmester_test {
 namespace {
 
+// [rad] the turn about a centre point built in closed form, read back with atan2 of O(1)
+// vectors: a few ulps
+constexpr double kTurnRoundoff = 1e-12;
+
 constexpr double kRecovered = 1e-9;  // the issue's: the known four-bar among the answers to 1e-9
 
 struct Known {
@@ -199,7 +203,7 @@ TEST_CASE("two poses: the centre point on the bisector turns the crank by the gi
     CHECK(r.residual <= 1e-12);
     const Eigen::Vector2d a2 = MovePoint(poses[0], poses[1], {0.3, 0.8});
     const Eigen::Vector2d u = r.dyad.circle - r.dyad.centre, v = a2 - r.dyad.centre;
-    CHECK_THAT(std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v)), Catch::Matchers::WithinAbs(DegToRad(turn_deg), 1e-12));
+    CHECK_THAT(std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v)), Catch::Matchers::WithinAbs(DegToRad(turn_deg), kTurnRoundoff));
   }
 }
 

@@ -14,6 +14,9 @@
 
 namespace koppel::cognates_test {
 namespace {
+
+// Roberts' cognates are closed forms (similar triangles) of O(10) lengths: rounding only
+constexpr double kCognateRoundoff = 1e-12;
 const double kL23 = 2.5 * std::sqrt(3.0);
 const double kKappa = std::acos(5.0 / 9.0 * std::sqrt(3.0));
 constexpr double kSame = 1e-9;  // "the same curve": the 1e-9 at 360 points
@@ -24,18 +27,18 @@ TEST_CASE("seed 003 cognate dimensions", "[cognates]") {
   REQUIRE(c.ok());
   // first cognate as listed: l1* = 25/3, l2* = 10/9 sqrt 3, l3* = 25/3, k* = l* = 1, and the
   // frame A0*B0* = 40/9 sqrt 3 (the printed 40/3 sqrt 3 is an OCR error)
-  CHECK(c.crank_first == Approx(25.0 / 3).margin(1e-12));
-  CHECK(c.coupler_first == Approx(10.0 / 9 * std::sqrt(3.0)).margin(1e-12));
-  CHECK(c.rocker_first == Approx(25.0 / 3).margin(1e-12));
-  CHECK(c.k_first == Approx(1.0).margin(1e-12));
-  CHECK(c.l_first == Approx(1.0).margin(1e-12));
-  CHECK(c.frame_first == Approx(40.0 / 9 * std::sqrt(3.0)).margin(1e-12));
+  CHECK(c.crank_first == Approx(25.0 / 3).margin(kCognateRoundoff));
+  CHECK(c.coupler_first == Approx(10.0 / 9 * std::sqrt(3.0)).margin(kCognateRoundoff));
+  CHECK(c.rocker_first == Approx(25.0 / 3).margin(kCognateRoundoff));
+  CHECK(c.k_first == Approx(1.0).margin(kCognateRoundoff));
+  CHECK(c.l_first == Approx(1.0).margin(kCognateRoundoff));
+  CHECK(c.frame_first == Approx(40.0 / 9 * std::sqrt(3.0)).margin(kCognateRoundoff));
   CHECK(std::abs(c.frame_first - 40.0 / 3 * std::sqrt(3.0)) > 10);
   // second cognate: "the same kinematic dimensions as the original"
-  CHECK(c.frame_second == Approx(4.0).margin(1e-12));
-  CHECK(c.crank_second == Approx(1.0).margin(1e-12));
-  CHECK(c.coupler_second == Approx(kL23).margin(1e-12));
-  CHECK(c.rocker_second == Approx(kL23).margin(1e-12));
+  CHECK(c.frame_second == Approx(4.0).margin(kCognateRoundoff));
+  CHECK(c.crank_second == Approx(1.0).margin(kCognateRoundoff));
+  CHECK(c.coupler_second == Approx(kL23).margin(kCognateRoundoff));
+  CHECK(c.rocker_second == Approx(kL23).margin(kCognateRoundoff));
 }
 
 TEST_CASE("cognates trace the same coupler curve at 360 points", "[cognates]") {

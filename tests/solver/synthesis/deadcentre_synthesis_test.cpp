@@ -16,6 +16,13 @@
 namespace koppel::deadcentre_synthesis_test {
 namespace {
 
+// [rad] the ends of the admissible range are bisected on admissibility, where mu -> 0 like a
+// square root
+constexpr double kAdmissibleEnd = 1e-7;
+// the synthesis' closed form against the independent construction (tests/support/
+// deadcentre_construction) on O(1) lengths: rounding only
+constexpr double kConstruction = 1e-12;
+
 constexpr double kReanalysed = 1e-9;  // the issue's tolerance; dead centres are refined to 1e-12
 // The brute force accepts a candidate whose swing and phi0 (refined to 1e-13 by golden section,
 // so that their error is about sqrt(1e-16) in the angles) match within this.
@@ -152,8 +159,8 @@ TEST_CASE("the arc LE ends at the document's points L and E (same sense)", "[syn
     const Eigen::Vector2d e = phi0 > 180 + psi0 ? test::PointEOnLineLB0(c) : c.e;
     const double beta_l = std::abs(std::atan2(c.l.y(), c.l.x())), beta_e = std::abs(std::atan2(e.y(), e.x()));
     // the ends are bisected on admissibility, where mu -> 0 like a square root: 1e-7 rad
-    CHECK(d.beta_l == Approx(beta_l).margin(1e-7));
-    CHECK(d.beta_e == Approx(beta_e).margin(1e-7));
+    CHECK(d.beta_l == Approx(beta_l).margin(kAdmissibleEnd));
+    CHECK(d.beta_e == Approx(beta_e).margin(kAdmissibleEnd));
   }
 }
 
@@ -166,12 +173,12 @@ TEST_CASE("a given beta: designs inside the arc LE are exact, outside refused wi
     const CrankRockerDesign d = CrankRockerFromBeta(Request(phi0, psi0, sense), DegToRad(beta));
     INFO(d.Brief());
     CheckReanalysed(d);
-    CHECK(d.beta == Approx(DegToRad(beta)).margin(1e-12));
+    CHECK(d.beta == Approx(DegToRad(beta)).margin(kConstruction));
     // reference: the document's construction at the same beta gives the same lengths
     const test::ConstructedDesign c = test::DesignOnRay(test::Construct(DegToRad(phi0), DegToRad(psi0), Sign(sense)), d.phi_a);
-    CHECK(d.l1 == Approx(c.l1).margin(1e-12));
-    CHECK(d.l2 == Approx(c.l2).margin(1e-12));
-    CHECK(d.l3 == Approx(c.l3).margin(1e-12));
+    CHECK(d.l1 == Approx(c.l1).margin(kConstruction));
+    CHECK(d.l2 == Approx(c.l2).margin(kConstruction));
+    CHECK(d.l3 == Approx(c.l3).margin(kConstruction));
   }
   const CrankRockerDesign outside = CrankRockerFromBeta(Request(164, 60, RockerSense::kSame), DegToRad(70));
   CHECK(outside.status == DesignStatus::kNoDesign);
@@ -200,8 +207,8 @@ TEST_CASE("phi0 = 180 + psi0 (same sense): one beta for the whole family, design
     const CrankRockerDesign d = CrankRockerFromLambda(r, lambda);
     INFO(d.Brief());
     CheckReanalysed(d);
-    CHECK(d.l1 == Approx(std::sin(DegToRad(5))).margin(1e-12));
-    CHECK(RadToDeg(d.beta) == Approx(85).margin(1e-9));
+    CHECK(d.l1 == Approx(std::sin(DegToRad(5))).margin(kConstruction));
+    CHECK(RadToDeg(d.beta) == Approx(85).margin(kReanalysed));
   }
   CheckReanalysed(BestCrankRocker(r));
   CHECK(CrankRockerFromBeta(r, DegToRad(85)).status == DesignStatus::kNoDesign);

@@ -14,6 +14,9 @@
 namespace koppel::fit_model_test {
 namespace {
 
+// [rad] 202 deg - (-158 deg) is one turn: wrapped to 0 up to the rounding of two degree conversions
+constexpr double kWrapRoundoff = 1e-15;
+
 // Central differences, h = 1e-6 max(1, |x|) (the house rule): truncation ~1e-12, roundoff of
 // residuals solved to 1e-13 ~ 1e-7; the IFT Jacobian itself carries a 1e-6 parameter step.
 constexpr double kJacobianTolerance = 1e-5;
@@ -87,7 +90,7 @@ TEST_CASE("fit model: an angle target across the +-180 deg seam has a wrapped re
   // and the wrap itself: (-pi, pi], pi maps to pi, -pi to pi
   CHECK(WrappedAngle(kPi) == Approx(kPi));
   CHECK(WrappedAngle(-kPi) == Approx(kPi));
-  CHECK(WrappedAngle(DegToRad(202) - DegToRad(-158)) == Approx(0).margin(1e-15));
+  CHECK(WrappedAngle(DegToRad(202) - DegToRad(-158)) == Approx(0).margin(kWrapRoundoff));
 }
 
 TEST_CASE("fit model: the check rejects a deliberately wrong sensitivity", "[fit]") {

@@ -19,6 +19,14 @@
 namespace koppel::function_synthesis_test {
 namespace {
 
+// [deg] against the value printed to 10 decimals: its last digit
+constexpr double kDocumentDeg = 1e-9;
+// x of the largest error against the value printed to 5 decimals: its last digit
+constexpr double kDocumentX = 1e-5;
+
+// the Chebyshev points from one cosine each, on x ~ 10: a few ulps
+constexpr double kChebyshevRoundoff = 1e-12;
+
 constexpr double kExact = 1e-9;       // exact through the precision points: solver precision, far below 1e-9
 constexpr double kSameCurve = 1e-9;   // closed form and solver agree on every sample
 
@@ -148,8 +156,8 @@ TEST_CASE("log10 x over 1..10, three Chebyshev points: exact at the points, the 
   CHECK(d.error_curve.size() == 361);
   CheckAgainstClosedForm(r, d);
   // the Chebyshev points themselves: x_i = 5.5 - 4.5 cos((2i - 1) pi / 6)
-  CHECK_THAT(d.precision_x[0], Catch::Matchers::WithinAbs(5.5 - 4.5 * std::cos(kPi / 6), 1e-12));
-  CHECK_THAT(d.precision_x[1], Catch::Matchers::WithinAbs(5.5, 1e-12));
+  CHECK_THAT(d.precision_x[0], Catch::Matchers::WithinAbs(5.5 - 4.5 * std::cos(kPi / 6), kChebyshevRoundoff));
+  CHECK_THAT(d.precision_x[1], Catch::Matchers::WithinAbs(5.5, kChebyshevRoundoff));
 }
 
 TEST_CASE("x^2 over 0..1, three Chebyshev points and points given by `at`", "[function]") {
@@ -240,8 +248,8 @@ TEST_CASE("sin x over 0..1.5, five points: error_max is the maximum between the 
   INFO(d.Brief());
   REQUIRE(d.ok());
   CheckAgainstClosedForm(r, d);
-  CHECK(RadToDeg(d.error_max) == Approx(3.0445747805).margin(1e-9));
-  CHECK(d.error_max_x == Approx(1.05191).margin(1e-5));
+  CHECK(RadToDeg(d.error_max) == Approx(3.0445747805).margin(kDocumentDeg));
+  CHECK(d.error_max_x == Approx(1.05191).margin(kDocumentX));
   double largest_sample = 0;
   for (const StructuralErrorSample& e : d.error_curve) largest_sample = std::max(largest_sample, std::abs(e.error));
   CHECK(RadToDeg(d.error_max - largest_sample) > 1e-5);  // the samples miss the maximum by ~9e-5 deg

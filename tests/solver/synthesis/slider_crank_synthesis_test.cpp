@@ -15,6 +15,13 @@
 namespace koppel::slider_crank_synthesis_test {
 namespace {
 
+// the design's closed forms (cot, the dead-centre triangles) on O(1) lengths: rounding only
+constexpr double kClosedFormRoundoff = 1e-12;
+// the document's chart, read by eye to about half a unit of its 0.01 grid (koppel: 0.1621)
+constexpr double kChartE = 0.005;
+// [deg] the document's "~12 deg" read off its chart (koppel: 11.21 deg)
+constexpr double kChartMuDeg = 1.0;
+
 constexpr double kReanalysed = 1e-9;
 
 double Wrap2Pi(double a) { return std::fmod(std::fmod(a, 2 * kPi) + 2 * kPi, 2 * kPi); }
@@ -97,13 +104,13 @@ TEST_CASE("slider-crank from the offset or from beta, inside and outside their r
   const SliderCrankDesign by_e = SliderCrankFromOffset(r, 0.16);
   CheckReanalysed(by_e);
   // the ranges: |e| < s0 cot(theta) and beta < 90 deg - theta, theta = |phi0 - 180 deg| = 60 deg
-  CHECK(by_e.offset_max == Approx(1 / std::tan(DegToRad(60))).margin(1e-12));
-  CHECK(by_e.beta_max == Approx(DegToRad(30)).margin(1e-12));
+  CHECK(by_e.offset_max == Approx(1 / std::tan(DegToRad(60))).margin(kClosedFormRoundoff));
+  CHECK(by_e.beta_max == Approx(DegToRad(30)).margin(kClosedFormRoundoff));
   const SliderCrankDesign by_beta = SliderCrankFromBeta(r, by_e.beta);
   CheckReanalysed(by_beta);
-  CHECK(by_beta.e == Approx(0.16).margin(1e-12));
-  CHECK(by_beta.l1 == Approx(by_e.l1).margin(1e-12));
-  CHECK(by_beta.l2 == Approx(by_e.l2).margin(1e-12));
+  CHECK(by_beta.e == Approx(0.16).margin(kClosedFormRoundoff));
+  CHECK(by_beta.l1 == Approx(by_e.l1).margin(kClosedFormRoundoff));
+  CHECK(by_beta.l2 == Approx(by_e.l2).margin(kClosedFormRoundoff));
   // just inside both ends of the offset range there are (poor) cranks, outside none
   CheckReanalysed(SliderCrankFromOffset(r, 0.01));
   CheckReanalysed(SliderCrankFromOffset(r, 0.99 * by_e.offset_max));
@@ -116,8 +123,8 @@ TEST_CASE("slider-crank from the offset or from beta, inside and outside their r
 TEST_CASE("seed 002's example phi0 = 120 deg: the best offset against the printed e/s0 = 0.16, mu_min ~ 12 deg", "[synthesis]") {
   const SliderCrankDesign best = BestSliderCrank(Request(120, 1.0));
   CheckReanalysed(best);
-  CHECK(best.e == Approx(0.16).margin(0.005));               // koppel: 0.1621
-  CHECK(RadToDeg(best.mu_min) == Approx(12.0).margin(1.0));  // koppel: 11.21 deg ("~12" read off the chart)
+  CHECK(best.e == Approx(0.16).margin(kChartE));               // koppel: 0.1621
+  CHECK(RadToDeg(best.mu_min) == Approx(12.0).margin(kChartMuDeg));  // koppel: 11.21 deg ("~12" read off the chart)
   // a true maximum: both neighbours are worse
   CHECK(SliderCrankFromOffset(best.request, best.e - 0.01).mu_min < best.mu_min);
   CHECK(SliderCrankFromOffset(best.request, best.e + 0.01).mu_min < best.mu_min);

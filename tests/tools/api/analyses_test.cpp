@@ -14,6 +14,17 @@ using Catch::Matchers::WithinAbs;
 
 namespace analyses_test {  // this file's own names, apart from the other tests' in a unity build
 namespace {
+
+// [deg] the sweep's inputs are from + i step in radians, shown in degrees: rounding only
+constexpr double kSampleInput = 1e-9;
+// [deg] an angle within kClosedForm = 1e-9 rad of the closed form, shown in degrees (x 57.3), with margin
+constexpr double kAngleDeg = 1e-7;
+// [deg] the end of the requested range is the requested input itself, through two unit conversions
+constexpr double kRangeEnd = 1e-12;
+// [deg] the limit positions are folds of the drive, located to ~1e-9 rad; shown in degrees
+constexpr double kLimitDeg = 1e-7;
+// [deg] a full turn is 2 pi exactly, shown in degrees: rounding only
+constexpr double kPeriodDeg = 1e-9;
 constexpr double kClosedForm = 1e-9;  // the catalog entry's own tolerance against seed 000
 constexpr double kDeadCentre = 1e-8;  // dead centres are refined to 1e-12 in the input
 constexpr double kL1 = 1, kL2 = 2.6;
@@ -28,12 +39,12 @@ TEST_CASE("Model::Sweep: the columns of koppel analyze, values equal to seed 000
   REQUIRE(t.rows == 73);
   const std::vector<double> phi = t.Column("phi"), s = t.Column("s"), s1 = t.Column("s_d1"), s2 = t.Column("s_d2"), mu = t.Column("mu");
   for (int i = 0; i < t.rows; ++i) {
-    CHECK_THAT(phi[i], WithinAbs(5.0 * i, 1e-9));
+    CHECK_THAT(phi[i], WithinAbs(5.0 * i, kSampleInput));
     const test::SliderCrankValues ref = test::SliderCrank(kL1, kL2, 0.8, DegToRad(phi[i]));
     CHECK_THAT(s[i], WithinAbs(ref.s, kClosedForm));
     CHECK_THAT(s1[i], WithinAbs(ref.s1, kClosedForm));
     CHECK_THAT(s2[i], WithinAbs(ref.s2, kClosedForm));
-    CHECK_THAT(mu[i], WithinAbs(RadToDeg(ref.mu), 1e-7));
+    CHECK_THAT(mu[i], WithinAbs(RadToDeg(ref.mu), kAngleDeg));
     CHECK(t.At(i, t.ColumnIndex("singular")) == 0.0);
   }
   CHECK(t.ColumnIndex("nope") == -1);
@@ -96,7 +107,7 @@ TEST_CASE("Model::FindDeadCentres: mu_min and mu_max of seed 000 and where they 
   const DeadCentres part = m.FindDeadCentres("mu", 30, 120);
   REQUIRE(part.has_extremes);
   CHECK(part.minimum.at == "range end");
-  CHECK_THAT(part.minimum.input, WithinAbs(30, 1e-12));
+  CHECK_THAT(part.minimum.input, WithinAbs(30, kRangeEnd));
   CHECK_THAT(part.minimum.value, WithinAbs(RadToDeg(test::SliderCrank(kL1, kL2, 0.8, DegToRad(30)).mu), kClosedForm));
   CHECK(d.unresolved.empty());
 }
@@ -111,14 +122,14 @@ TEST_CASE("Model::DrivableRanges: the triple rocker swings between its two limit
   CHECK(b.to_kind == "limit");
   // the law of cosines: cos(phi) = (a^2 + d^2 - (b + c)^2) / (2 a d), symmetric about the frame line
   const double limit = RadToDeg(std::acos((4.0 + 16.0 - 5.5 * 5.5) / (2 * 2 * 4)));
-  CHECK_THAT(b.from, WithinAbs(-limit, 1e-7));
-  CHECK_THAT(b.to, WithinAbs(limit, 1e-7));
+  CHECK_THAT(b.from, WithinAbs(-limit, kLimitDeg));
+  CHECK_THAT(b.to, WithinAbs(limit, kLimitDeg));
 
   const Model crank = Model::Load(test::CatalogEntryPath("slider-crank-offset"));
   const Ranges full = crank.DrivableRanges();
   REQUIRE(full.status == AnalysisStatus::kComplete);
   CHECK(full.branches.at(0).to_kind == "full-turn");
-  CHECK_THAT(full.branches.at(0).period, WithinAbs(360, 1e-9));
+  CHECK_THAT(full.branches.at(0).period, WithinAbs(360, kPeriodDeg));
   CHECK(crank.SingularPositions().empty());
 }
 

@@ -14,6 +14,16 @@ using Catch::Matchers::WithinAbs;
 
 namespace model_test {  // this file's own names, apart from the other tests' in a unity build
 namespace {
+
+// [deg] the pose's input is the one asked for, through degrees -> radians -> degrees
+constexpr double kInputDeg = 1e-12;
+// [deg] kClosedForm (1e-9 rad) shown in degrees (x 57.3), with margin
+constexpr double kAngleDeg = 1e-7;
+// s''' against a central difference of the closed-form s'' (h = 1e-5): truncation ~1e-10 and
+// rounding ~1e-11 (see the test), plus the solver's own 1e-9-class error of a third derivative
+constexpr double kThirdOrder = 1e-8;
+// the written file has every number to 17 digits: the same mechanism, the same Newton path
+constexpr double kWrittenBack = 1e-12;
 // the closed-form checks of the catalog entry ask 1e-9 of the solver; the API adds only a unit
 // conversion
 constexpr double kClosedForm = 1e-9;
@@ -46,12 +56,12 @@ TEST_CASE("Model: a pose's outputs and transfer functions equal seed 000's close
   for (double phi_deg : {37.0, 145.0, 290.0, -60.0}) {
     const PoseResult p = m.MoveTo(phi_deg, 3);
     REQUIRE(p.status == AnalysisStatus::kComplete);
-    CHECK_THAT(p.input, WithinAbs(phi_deg, 1e-12));
+    CHECK_THAT(p.input, WithinAbs(phi_deg, kInputDeg));
     const test::SliderCrankValues ref = test::SliderCrank(kL1, kL2, 0.8, DegToRad(phi_deg));
     CHECK_THAT(p.Get("s"), WithinAbs(ref.s, kClosedForm));
     CHECK_THAT(p.Get("s_d1"), WithinAbs(ref.s1, kClosedForm));
     CHECK_THAT(p.Get("s_d2"), WithinAbs(ref.s2, kClosedForm));
-    CHECK_THAT(p.Get("mu"), WithinAbs(RadToDeg(ref.mu), 1e-7));  // degrees: 1e-9 rad
+    CHECK_THAT(p.Get("mu"), WithinAbs(RadToDeg(ref.mu), kAngleDeg));  // degrees: 1e-9 rad
     CHECK(p.valid_order == 3);
     CHECK_FALSE(p.singular);
   }
@@ -66,7 +76,7 @@ TEST_CASE("Model::MoveTo: the 3rd-order transfer function equals a central diffe
   const double reference = (test::SliderCrank(kL1, kL2, 0.8, phi + h).s2 - test::SliderCrank(kL1, kL2, 0.8, phi - h).s2) / (2 * h);
   const PoseResult p = m.MoveTo(100, 8);
   REQUIRE(p.status == AnalysisStatus::kComplete);
-  CHECK_THAT(p.Get("s_d3"), WithinAbs(reference, 1e-8));
+  CHECK_THAT(p.Get("s_d3"), WithinAbs(reference, kThirdOrder));
   CHECK(p.valid_order == 8);
   CHECK(std::isfinite(p.Get("s_d8")));
 }
@@ -130,7 +140,7 @@ TEST_CASE("Model::ToYaml reads back to the same outputs", "[api]") {
   const Model m = Model::Load(test::CatalogEntryPath("slider-crank-offset"), {{"e", "0.3"}});
   Model back = Model::Parse(m.ToYaml(), "written.yaml");
   Model again = m;
-  CHECK_THAT(back.MoveTo(77).Get("s"), WithinAbs(again.MoveTo(77).Get("s"), 1e-12));
+  CHECK_THAT(back.MoveTo(77).Get("s"), WithinAbs(again.MoveTo(77).Get("s"), kWrittenBack));
 }
 
 TEST_CASE("Model::FromMechanism refuses an inconsistent mechanism", "[api]") {

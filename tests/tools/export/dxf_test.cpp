@@ -18,6 +18,9 @@
 namespace koppel::dxf_test {
 namespace {
 
+// the bulge tan(sweep / 4) of a half circle is tan(pi / 4) = 1 up to the rounding of pi / 4 (1 ulp)
+constexpr double kBulgeRoundoff = 1e-14;
+
 // What a DXF holds, as dxflib reads it.
 struct Reader : DL_CreationAdapter {
   std::vector<std::string> layers;
@@ -93,7 +96,7 @@ TEST_CASE("DXF of a drawing read back with dxflib", "[export][dxf]") {
   CHECK(r.polylines[1] == std::pair<std::string, int>{"curve-K", 4});
   // half circles: bulge tan(pi/4) = 1 at the arcs' starts
   REQUIRE(r.vertices.size() == 8);
-  CHECK_THAT(r.vertices[0].bulge, Catch::Matchers::WithinAbs(1, 1e-14));
+  CHECK_THAT(r.vertices[0].bulge, Catch::Matchers::WithinAbs(1, kBulgeRoundoff));
   CHECK(r.vertices[1].bulge == 0);
   plot::WorkshopDrawing failed;
   failed.status = plot::PlotStatus::kFailed;

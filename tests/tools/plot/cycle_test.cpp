@@ -16,6 +16,11 @@
 namespace koppel::cycle_test {
 namespace {
 
+// [rad] inputs of a cycle are from + i step on angles below 2 pi: rounding only
+constexpr double kStepRoundoff = 1e-12;
+// [rad] the way back mirrors the way out on inputs of 1..2: the same arithmetic, an ulp at most
+constexpr double kMirrored = 1e-15;
+
 using Catch::Matchers::WithinAbs;
 
 // The solver converges to 1e-12 of the length scale.
@@ -38,7 +43,7 @@ TEST_CASE("cycle range: a crank turns fully, a rocker swings between its limits"
   REQUIRE(turn);
   CHECK(turn->full_turn);
   CHECK(turn->from == 0);
-  CHECK_THAT(turn->to, WithinAbs(2 * kPi, 1e-12));
+  CHECK_THAT(turn->to, WithinAbs(2 * kPi, kStepRoundoff));
   CHECK(turn->note.empty());
 
   const Expected<plot::CycleRange> swing = plot::CycleRangeOf(test::DoubleRocker(), FileSweep(52, 95));
@@ -58,7 +63,7 @@ TEST_CASE("cycle inputs: a turn in equal steps, a swing there and back", "[plot]
   const plot::CycleRange turn{0, 2 * kPi, true, ""};
   const std::vector<double> t = plot::CycleInputs(turn, 36);
   REQUIRE(t.size() == 36);
-  for (int i = 0; i < 36; ++i) CHECK_THAT(t[i], WithinAbs(DegToRad(10.0 * i), 1e-12));  // never 360 again
+  for (int i = 0; i < 36; ++i) CHECK_THAT(t[i], WithinAbs(DegToRad(10.0 * i), kStepRoundoff));  // never 360 again
   CHECK(plot::TracedUpTo(turn, 36, 20) == t[20]);
 
   const plot::CycleRange swing{1, 2, false, ""};
@@ -66,7 +71,7 @@ TEST_CASE("cycle inputs: a turn in equal steps, a swing there and back", "[plot]
   REQUIRE(s.size() == 12);
   CHECK(s[0] == 1);
   CHECK(s[6] == 2);
-  for (int i = 1; i < 12; ++i) CHECK_THAT(s[i], WithinAbs(s[12 - i], 1e-15));  // the same way back
+  for (int i = 1; i < 12; ++i) CHECK_THAT(s[i], WithinAbs(s[12 - i], kMirrored));  // the same way back
   for (int i = 1; i <= 6; ++i) CHECK(s[i] > s[i - 1]);
   // the curves grow on the way there and stay whole on the way back
   CHECK(plot::TracedUpTo(swing, 12, 3) == s[3]);

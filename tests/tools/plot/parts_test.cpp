@@ -19,6 +19,11 @@
 namespace koppel::parts_test {
 namespace {
 
+// an arc's radius is the one asked for, copied or halved: exact up to an ulp
+constexpr double kCopiedRadius = 1e-15;
+// [rad] sweeps of arcs from atan2 of O(1) vectors, summed over a few arcs: rounding only
+constexpr double kTurnRoundoff = 1e-12;
+
 using Vec = Eigen::Vector2d;
 using Catch::Matchers::WithinAbs;
 
@@ -93,11 +98,11 @@ TEST_CASE("a rounded hull keeps its distance from the points it is drawn around"
     double turn = 0;
     for (const plot::Arc& a : c.arcs) {
       CHECK(a.sweep > 0);
-      CHECK_THAT(a.radius, WithinAbs(radius, 1e-15));
+      CHECK_THAT(a.radius, WithinAbs(radius, kCopiedRadius));
       CHECK(Nearest(points, a.centre) < 1e-12);  // each arc turns around one of the points
       turn += a.sweep;
     }
-    CHECK_THAT(turn, WithinAbs(2 * kPi, 1e-12));
+    CHECK_THAT(turn, WithinAbs(2 * kPi, kTurnRoundoff));
     // every point of the outline is at least `radius` from each point, and the arcs exactly
     for (const Vec& p : Trace(c)) CHECK(Nearest(points, p) > radius - kTolerance);
     // the lines between arcs are tangent to both: perpendicular to the radius at either end
@@ -144,7 +149,7 @@ TEST_CASE("four-bar parts: holes at the joints, plates around the points", "[plo
   // the crank's plate is a bar: two half circles of radius W/2 round A0 and A
   const plot::Part& crank = PartOf(parts, "crank");
   REQUIRE(crank.outline.arcs.size() == 2);
-  for (const plot::Arc& arc : crank.outline.arcs) CHECK_THAT(arc.sweep, WithinAbs(kPi, 1e-12));
+  for (const plot::Arc& arc : crank.outline.arcs) CHECK_THAT(arc.sweep, WithinAbs(kPi, kTurnRoundoff));
 }
 
 TEST_CASE("slider-crank parts: the frame's slot over the slider's travel", "[plot][parts]") {
@@ -163,7 +168,7 @@ TEST_CASE("slider-crank parts: the frame's slot over the slider's travel", "[plo
   CHECK_THAT(slot.from.x(), WithinAbs(std::sqrt((l2 - l1) * (l2 - l1) - e * e), kSampling));
   CHECK_THAT(slot.to.x(), WithinAbs(std::sqrt((l2 + l1) * (l2 + l1) - e * e), kSampling));
   CHECK_THAT(slot.from.y(), WithinAbs(0, kTolerance));
-  for (const plot::Arc& arc : slot.outline.arcs) CHECK_THAT(arc.radius, WithinAbs(sizes.pin_diameter / 2, 1e-15));
+  for (const plot::Arc& arc : slot.outline.arcs) CHECK_THAT(arc.radius, WithinAbs(sizes.pin_diameter / 2, kCopiedRadius));
   // the frame's pivot A0; the slider's pin B: the R and P joints at B share one hole
   CHECK(frame.holes.size() == 1);
   CHECK(HasHoleAt(frame, Vec(0, -e)));

@@ -72,15 +72,8 @@ std::string Duration(double ns) {
   return fmt::format("{:.3g} {}", ns, units[u]);
 }
 
-void RunBench(const BenchArgs& args) {
-  if (args.format != "table" && args.format != "csv" && args.format != "json") {
-    Complain("--format must be table, csv or json, found '" + args.format + "'");
-    throw Exit{kExitBadInput};
-  }
-  if (!(args.min_time > 0.0 && args.min_time <= 60.0)) {
-    Complain("--min-time must lie in (0, 60] seconds");
-    throw Exit{kExitBadInput};
-  }
+// The benchmarks --filter names, and the baselines their ratios need. Exit{2} when none matches.
+std::set<std::string> WantedCases(const BenchArgs& args, const std::vector<bench::Case>& cases) {
   std::regex filter;
   try {
     filter = std::regex(args.filter.empty() ? "." : args.filter, std::regex::extended);
@@ -88,8 +81,6 @@ void RunBench(const BenchArgs& args) {
     Complain("--filter: not a regular expression: '" + args.filter + "' (" + e.what() + ")");
     throw Exit{kExitBadInput};
   }
-  std::vector<bench::Case> cases = bench::AllCases();
-  // the cases asked for, and the baselines they need
   std::set<std::string> wanted;
   for (const bench::Case& c : cases) {
     if (!std::regex_search(c.name, filter)) continue;
@@ -102,6 +93,11 @@ void RunBench(const BenchArgs& args) {
     Complain("--filter '" + args.filter + "' matches no benchmark; there are: " + names);
     throw Exit{kExitBadInput};
   }
+  return wanted;
+}
+
+// Google Benchmark over the wanted cases, in this process (so the baselines run beside them).
+std::map<std::string, Measured> RunCases(const BenchArgs& args, const std::vector<bench::Case>& cases, const std::set<std::string>& wanted) {
   int argc = 1;
   char program[] = "koppel";
   char* argv[] = {program, nullptr};
@@ -111,21 +107,23 @@ void RunBench(const BenchArgs& args) {
     benchmark::internal::Benchmark* b = benchmark::RegisterBenchmark(c.name.c_str(), c.run)->MinTime(args.min_time);
     if (c.threaded) b->UseRealTime();
   }
-  double load[1] = {0.0};
-  const bool have_load = getloadavg(load, 1) == 1;
   Collector collector;
   benchmark::RunSpecifiedBenchmarks(&collector);
   benchmark::ClearRegisteredBenchmarks();
   benchmark::Shutdown();
+  return collector.measured();
+}
 
-  std::vector<Row> rows;
-  bool failed = false;
+// One row per wanted case: its time per step (or run) and its ratio to its baseline or budget.
+std::vector<Row> RowsOf(const std::vector<bench::Case>& cases, const std::set<std::string>& wanted, std::map<std::string, Measured>& measured,
+                        bool* failed) {
   std::map<std::string, double> ns_of;
   for (const bench::Case& c : cases) {
-    const Measured& m = collector.measured()[c.name];
+    const Measured& m = measured[c.name];
     const double ns = c.threaded ? m.wall_ns : m.cpu_ns;
     if (m.ran && m.error.empty()) ns_of[c.name] = c.per == bench::Per::kStep ? ns / c.steps_per_iteration : ns;
   }
+  std::vector<Row> rows;
   for (const bench::Case& c : cases) {
     if (!wanted.count(c.name)) continue;
     Row row;
@@ -133,10 +131,10 @@ void RunBench(const BenchArgs& args) {
     row.per = c.per == bench::Per::kStep ? "step" : "run";
     row.clock = c.threaded ? "wall" : "cpu";
     row.note = c.note;
-    const Measured& m = collector.measured()[c.name];
+    const Measured& m = measured[c.name];
     if (!c.skipped && !m.error.empty()) {
       row.note = "failed: " + m.error;
-      failed = true;
+      *failed = true;
     }
     if (ns_of.count(c.name)) {
       row.measured = true;
@@ -154,44 +152,74 @@ void RunBench(const BenchArgs& args) {
     }
     rows.push_back(row);
   }
+  return rows;
+}
 
+void PrintJson(const std::vector<Row>& rows, unsigned cores, bool have_load, double load) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const Row& r : rows) {
+    nlohmann::json j = {{"name", r.name}, {"per", r.per}, {"clock", r.clock}};
+    j["ns_per_step"] = r.measured ? nlohmann::json(r.ns) : nlohmann::json(nullptr);
+    j["baseline"] = r.baseline_ns > 0.0 ? nlohmann::json(r.baseline_ns) : nlohmann::json(nullptr);
+    j["ratio"] = r.ratio > 0.0 ? nlohmann::json(r.ratio) : nlohmann::json(nullptr);
+    j["baseline_name"] = r.baseline_name;
+    if (!r.note.empty()) j["note"] = r.note;
+    list.push_back(j);
+  }
+  nlohmann::json out = {{"benchmarks", list}, {"cores", cores}};
+  if (have_load) out["load_average"] = load;
+  std::cout << JsonText(out);
+}
+
+void PrintCsv(const std::vector<Row>& rows) {
+  std::string text = "name,per,clock,ns_per_step,baseline,ratio,baseline_name,note\n";
+  for (const Row& r : rows) {
+    text += fmt::format("{},{},{},{},{},{},{},\"{}\"\n", r.name, r.per, r.clock, r.measured ? Number(r.ns, 6) : "",
+                        r.baseline_ns > 0 ? Number(r.baseline_ns, 6) : "", r.ratio > 0 ? Number(r.ratio, 4) : "", r.baseline_name,
+                        r.note);
+  }
+  std::cout << text;
+}
+
+void PrintTable(const std::vector<Row>& rows, unsigned cores, bool have_load, double load) {
+  std::cout << fmt::format("{:<24} {:>14} {:>14} {:>8}  {}\n", "name", "time", "baseline", "ratio", "baseline is");
+  for (const Row& r : rows) {
+    auto time = [&](double ns) { return Duration(ns) + "/" + r.per; };
+    std::cout << fmt::format("{:<24} {:>14} {:>14} {:>8}  {}{}\n", r.name, r.measured ? time(r.ns) : "-",
+                             r.baseline_ns > 0 ? time(r.baseline_ns) : "-", r.ratio > 0 ? Number(r.ratio, 3) : "-", r.baseline_name,
+                             r.note.empty() ? "" : (r.baseline_name.empty() ? "" : "; ") + r.note);
+  }
+  std::string wall;
+  for (const Row& r : rows) {
+    if (r.clock == "wall") wall += (wall.empty() ? "" : ", ") + r.name;
+  }
+  std::cout << fmt::format("(CPU time of this process{}; {} cores, load average {} at the start)\n",
+                           wall.empty() ? "" : "; wall time for " + wall, cores, have_load ? Number(load, 3) : "unknown");
+}
+
+void RunBench(const BenchArgs& args) {
+  if (args.format != "table" && args.format != "csv" && args.format != "json") {
+    Complain("--format must be table, csv or json, found '" + args.format + "'");
+    throw Exit{kExitBadInput};
+  }
+  if (!(args.min_time > 0.0 && args.min_time <= 60.0)) {
+    Complain("--min-time must lie in (0, 60] seconds");
+    throw Exit{kExitBadInput};
+  }
+  const std::vector<bench::Case> cases = bench::AllCases();
+  const std::set<std::string> wanted = WantedCases(args, cases);
+  double load[1] = {0.0};
+  const bool have_load = getloadavg(load, 1) == 1;
+  std::map<std::string, Measured> measured = RunCases(args, cases, wanted);
+  bool failed = false;
+  const std::vector<Row> rows = RowsOf(cases, wanted, measured, &failed);
   const unsigned cores = std::thread::hardware_concurrency();
   if (args.format == "json") {
-    nlohmann::json list = nlohmann::json::array();
-    for (const Row& r : rows) {
-      nlohmann::json j = {{"name", r.name}, {"per", r.per}, {"clock", r.clock}};
-      j["ns_per_step"] = r.measured ? nlohmann::json(r.ns) : nlohmann::json(nullptr);
-      j["baseline"] = r.baseline_ns > 0.0 ? nlohmann::json(r.baseline_ns) : nlohmann::json(nullptr);
-      j["ratio"] = r.ratio > 0.0 ? nlohmann::json(r.ratio) : nlohmann::json(nullptr);
-      j["baseline_name"] = r.baseline_name;
-      if (!r.note.empty()) j["note"] = r.note;
-      list.push_back(j);
-    }
-    nlohmann::json out = {{"benchmarks", list}, {"cores", cores}};
-    if (have_load) out["load_average"] = load[0];
-    std::cout << JsonText(out);
+    PrintJson(rows, cores, have_load, load[0]);
   } else if (args.format == "csv") {
-    std::string text = "name,per,clock,ns_per_step,baseline,ratio,baseline_name,note\n";
-    for (const Row& r : rows) {
-      text += fmt::format("{},{},{},{},{},{},{},\"{}\"\n", r.name, r.per, r.clock, r.measured ? Number(r.ns, 6) : "",
-                          r.baseline_ns > 0 ? Number(r.baseline_ns, 6) : "", r.ratio > 0 ? Number(r.ratio, 4) : "", r.baseline_name,
-                          r.note);
-    }
-    std::cout << text;
+    PrintCsv(rows);
   } else {
-    std::cout << fmt::format("{:<24} {:>14} {:>14} {:>8}  {}\n", "name", "time", "baseline", "ratio", "baseline is");
-    for (const Row& r : rows) {
-      auto time = [&](double ns) { return Duration(ns) + "/" + r.per; };
-      std::cout << fmt::format("{:<24} {:>14} {:>14} {:>8}  {}{}\n", r.name, r.measured ? time(r.ns) : "-",
-                               r.baseline_ns > 0 ? time(r.baseline_ns) : "-", r.ratio > 0 ? Number(r.ratio, 3) : "-", r.baseline_name,
-                               r.note.empty() ? "" : (r.baseline_name.empty() ? "" : "; ") + r.note);
-    }
-    std::string wall;
-    for (const Row& r : rows) {
-      if (r.clock == "wall") wall += (wall.empty() ? "" : ", ") + r.name;
-    }
-    std::cout << fmt::format("(CPU time of this process{}; {} cores, load average {} at the start)\n",
-                             wall.empty() ? "" : "; wall time for " + wall, cores, have_load ? Number(load[0], 3) : "unknown");
+    PrintTable(rows, cores, have_load, load[0]);
   }
   if (failed) throw Exit{kExitFailed};
 }

@@ -227,6 +227,7 @@ std::string ClassHelp() {
 }  // namespace
 }  // namespace catalog_command
 
+// long: one flat list of the catalog command's subcommands and flags in the order --help shows them
 void AddCatalogCommand(CLI::App& app) {
   using namespace catalog_command;
   auto args = std::make_shared<CatalogArgs>();

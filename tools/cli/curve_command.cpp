@@ -20,50 +20,48 @@ struct Args {
   std::string format = "csv", out;
 };
 
-void Run(const Args& args) {
-  CheckFormat(args.format);
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
+// The curve of `point` over --from/--to/--step: position, tangent, arc length, curvature.
+void RunTrace(const Args& args, const MechanismFile& file, const PointRef& point, const ContinuationOptions& continuation) {
   const Mechanism& m = file.mechanism;
-  const PointRef point = ResolvePoint(m, args.point, "--point");
   const bool angle = m.InputIsAngle();
   auto in = [&](double v) { return angle ? DegToRad(v) : v; };
   auto shown = [&](double v) { return angle ? RadToDeg(v) : v; };
-  const std::string unit = angle ? "deg" : file.loads.LengthUnit();
-  ContinuationOptions continuation;
-  continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
-  if (!args.straight) {
-    SweepOptions range;
-    range.continuation = continuation;
-    range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
-    range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
-    range.step = in(args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step));
-    std::string why;
-    CheckSampleCount(range.from, range.to, range.step, "--from/--to/--step");
-    if (!range.IsValid(&why)) {
-      Complain("--from/--to/--step: " + why);
-      throw Exit{kExitBadInput};
-    }
-    const CouplerCurve c = TraceCurve(m, point, range);
-    Table t;
-    t.columns = {m.drive.input_name, "x", "y", "dx", "dy", "arc", "curvature", "singular"};
-    for (size_t i = 0; i < c.inputs.size(); ++i)
-      t.rows.push_back({shown(c.inputs[i]), c.points[i].x(), c.points[i].y(), c.d1[i].x(), c.d1[i].y(), c.arc_length[i], c.curvature[i],
-                        static_cast<double>(c.singular[i])});
-    if (args.format == "json") {
-      nlohmann::json j = t.ToJson();
-      j["mechanism"] = m.name;
-      j["point"] = m.links[point.link].name + "." + m.links[point.link].points[point.point].name;
-      j["complete"] = c.sweep.complete();
-      j.update(SweepEventsJson(m, c.sweep));
-      if (!c.sweep.complete()) j["message"] = c.sweep.message;
-      WriteOutput(args.out, JsonText(j));
-    } else {
-      WriteOutput(args.out, t.ToCsv());
-    }
-    ReportSweep(args.file, m, c.sweep);
-    if (!c.sweep.complete()) throw Exit{kExitFailed};
-    return;
+  SweepOptions range;
+  range.continuation = continuation;
+  range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
+  range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
+  range.step = in(args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step));
+  std::string why;
+  CheckSampleCount(range.from, range.to, range.step, "--from/--to/--step");
+  if (!range.IsValid(&why)) {
+    Complain("--from/--to/--step: " + why);
+    throw Exit{kExitBadInput};
   }
+  const CouplerCurve c = TraceCurve(m, point, range);
+  Table t;
+  t.columns = {m.drive.input_name, "x", "y", "dx", "dy", "arc", "curvature", "singular"};
+  for (size_t i = 0; i < c.inputs.size(); ++i)
+    t.rows.push_back({shown(c.inputs[i]), c.points[i].x(), c.points[i].y(), c.d1[i].x(), c.d1[i].y(), c.arc_length[i], c.curvature[i],
+                      static_cast<double>(c.singular[i])});
+  if (args.format == "json") {
+    nlohmann::json j = t.ToJson();
+    j["mechanism"] = m.name;
+    j["point"] = m.links[point.link].name + "." + m.links[point.link].points[point.point].name;
+    j["complete"] = c.sweep.complete();
+    j.update(SweepEventsJson(m, c.sweep));
+    if (!c.sweep.complete()) j["message"] = c.sweep.message;
+    WriteOutput(args.out, JsonText(j));
+  } else {
+    WriteOutput(args.out, t.ToCsv());
+  }
+  ReportSweep(args.file, m, c.sweep);
+  if (!c.sweep.complete()) throw Exit{kExitFailed};
+}
+
+// --straight: the longest stretch within --qg (or the band of --stretch A:E) about --at.
+void RunStraight(const Args& args, const MechanismFile& file, const PointRef& point, const ContinuationOptions& continuation) {
+  const Mechanism& m = file.mechanism;
+  const bool angle = m.InputIsAngle();
   if (!angle) {
     Complain("--straight needs a rotating drive (an R joint)");
     throw Exit{kExitBadInput};
@@ -115,6 +113,19 @@ void Run(const Args& args) {
   sum.Add("delta_y", s.band, file.loads.LengthUnit());
   sum.Add("Q_G", s.qg, "1");
   WriteOutput(args.out, args.format == "json" ? JsonText(sum.ToJson()) : sum.ToCsv());
+}
+
+void Run(const Args& args) {
+  CheckFormat(args.format);
+  const MechanismFile file = LoadMechanism(args.file, args.sets);
+  const PointRef point = ResolvePoint(file.mechanism, args.point, "--point");
+  ContinuationOptions continuation;
+  continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
+  if (args.straight) {
+    RunStraight(args, file, point, continuation);
+  } else {
+    RunTrace(args, file, point, continuation);
+  }
 }
 
 }  // namespace

@@ -23,6 +23,37 @@ struct Args {
   std::string out;
 };
 
+// --deadcentres: the dead-centre poses of --output drawn over the scheme, named in the caption;
+// what cannot be drawn goes to `problems`.
+void AddDeadCentres(const Args& args, const Mechanism& m, const plot::SampledRun& run, const SweepOptions& range,
+                    plot::SchemeScene& scene, std::vector<std::string>& problems) {
+  const bool angle = m.InputIsAngle();
+  auto in = [&](double v) { return angle ? DegToRad(v) : v; };
+  auto shown = [&](double v) { return angle ? RadToDeg(v) : v; };
+  const std::string input_name = m.drive.input_name == "phi" ? "φ" : m.drive.input_name, unit = angle ? "°" : "";
+  const int output = ResolveScalarOutput(m, args.output, "--output", args.file);
+  SweepOptions search = range;
+  search.step = in(1.0) < std::abs(range.step) ? in(1.0) : range.step;  // the search resolution of `deadcentres`
+  const DeadCentreReport dead = FindDeadCentres(m, output, 0, search);
+  if (!dead.sweep.complete()) problems.push_back("dead centres: " + dead.sweep.message);
+  int unnamed = 0;
+  std::string list;
+  for (const DeadCentre& d : dead.points) {
+    plot::OverlayPose overlay;
+    overlay.suffix = d.kind == DeadCentreKind::kExtended ? "a" : d.kind == DeadCentreKind::kFolded ? "i" : std::to_string(++unnamed);
+    const Expected<Eigen::VectorXd> dead_pose = plot::PoseAt(m, run, d.input);
+    if (!dead_pose) {
+      problems.push_back("dead centre at " + fmt::format("{:g}", shown(d.input)) + ": " + dead_pose.error());
+      continue;
+    }
+    overlay.q = *dead_pose;
+    list += fmt::format("{}{}_{} = {:.2f}{}", list.empty() ? "" : ", ", input_name, overlay.suffix, shown(d.input), unit);
+    scene.overlays.push_back(std::move(overlay));
+  }
+  if (dead.points.empty()) problems.push_back("no dead centre of '" + m.outputs[output].name + "' found");
+  if (!list.empty()) scene.caption += "; dead centres of " + m.outputs[output].name + ": " + list;
+}
+
 void Run(const Args& args) {
   const MechanismFile file = LoadMechanism(args.file, args.sets);
   const Mechanism& m = file.mechanism;
@@ -66,29 +97,7 @@ void Run(const Args& args) {
     }
     scene.trace_name = args.trace;
   }
-  if (args.deadcentres) {
-    const int output = ResolveScalarOutput(m, args.output, "--output", args.file);
-    SweepOptions search = range;
-    search.step = in(1.0) < std::abs(range.step) ? in(1.0) : range.step;  // the search resolution of `deadcentres`
-    const DeadCentreReport dead = FindDeadCentres(m, output, 0, search);
-    if (!dead.sweep.complete()) problems.push_back("dead centres: " + dead.sweep.message);
-    int unnamed = 0;
-    std::string list;
-    for (const DeadCentre& d : dead.points) {
-      plot::OverlayPose overlay;
-      overlay.suffix = d.kind == DeadCentreKind::kExtended ? "a" : d.kind == DeadCentreKind::kFolded ? "i" : std::to_string(++unnamed);
-      const Expected<Eigen::VectorXd> dead_pose = plot::PoseAt(m, run, d.input);
-      if (!dead_pose) {
-        problems.push_back("dead centre at " + fmt::format("{:g}", shown(d.input)) + ": " + dead_pose.error());
-        continue;
-      }
-      overlay.q = *dead_pose;
-      list += fmt::format("{}{}_{} = {:.2f}{}", list.empty() ? "" : ", ", input_name, overlay.suffix, shown(d.input), unit);
-      scene.overlays.push_back(std::move(overlay));
-    }
-    if (dead.points.empty()) problems.push_back("no dead centre of '" + m.outputs[output].name + "' found");
-    if (!list.empty()) scene.caption += "; dead centres of " + m.outputs[output].name + ": " + list;
-  }
+  if (args.deadcentres) AddDeadCentres(args, m, run, range, scene, problems);
   WriteOutput(args.out, plot::DrawScheme(m, scene));
   if (!problems.empty()) {
     for (const std::string& p : problems) Complain(args.file + ": " + p);

@@ -1,6 +1,7 @@
 // koppel synth fit: least-squares fitting of any mechanism file to targets (fit_problem.hpp).
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 
 #include "koppel/catalog/fit_problem.hpp"
 #include "koppel/catalog/mechanism_writer.hpp"
@@ -24,35 +25,9 @@ struct Args {
 double InUnit(FitUnit unit, double v) { return unit == FitUnit::kAngle ? RadToDeg(v) : v; }
 const char* UnitName(FitUnit unit) { return unit == FitUnit::kAngle ? "deg" : "length"; }
 
-void Run(const Args& args) {
-  CheckFormat(args.format);
-  FitProblem problem;
-  try {
-    problem = ReadFitProblem(args.problem);
-  } catch (const InputError& e) {
-    for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
-    throw Exit{kExitBadInput};
-  }
-  if (!args.threads.empty()) problem.options.threads = static_cast<int>(ParseNumberFlag("--threads", args.threads));
-  std::string why;
-  if (!problem.options.IsValid(&why)) {
-    Complain(args.problem + ": " + why);
-    throw Exit{kExitBadInput};
-  }
-  const FitReport r = Fit(problem.builder, problem.parameters, problem.targets, problem.options);
-  if (!args.quiet) {
-    for (const FitStart& s : r.starts) std::cerr << fmt::format("koppel synth fit: start {}: {}\n", s.index + 1, s.brief);
-  }
-  if (r.values.empty()) {
-    Complain(args.problem + ": " + r.message);
-    throw Exit{r.status == FitStatus::kInvalidOptions ? kExitBadInput : kExitFailed};
-  }
-  const Expected<Mechanism> built = problem.builder(r.values);
-  if (!built) {
-    Complain(args.problem + ": the fitted values do not build the mechanism: " + built.error());
-    throw Exit{kExitFailed};
-  }
-  const Mechanism& fitted = *built;
+// The report's quantity,value,unit rows: the fitted parameters, each target's residual against
+// its tolerance, the starts, and what the fitted mechanism does over a turn of its drive.
+Summary FitSummary(const FitProblem& problem, const FitReport& r, const Mechanism& fitted) {
   const bool angle = fitted.InputIsAngle();
   const FitUnit input_unit = angle ? FitUnit::kAngle : FitUnit::kLength;
   // a crank: the drive turns through a full revolution; mu_min over that turn if there is a mu output
@@ -90,16 +65,45 @@ void Run(const Args& args) {
     for (int k = 0; k < o; ++k) column += fitted.outputs[k].Components();
     s.Add("mu_min_" + fitted.outputs[o].name, RadToDeg(sweep.outputs.col(column).minCoeff()), "deg");
   }
-  if (!args.yaml.empty()) {
-    // the fitted mechanism: the original file's structure with the fitted parameter values
-    Overrides fitted_values;
-    for (size_t j = 0; j < r.values.size(); ++j) fitted_values.emplace_back(problem.parameters[j].name, fmt::format("{:.17g}", r.values[j]));
-    const MechanismFile fitted_file = ReadMechanismFile(problem.mechanism_path, fitted_values);
-    const auto& values = fitted_file.parameters.Values();
-    WriteOutput(args.yaml, WriteMechanismYaml(fitted, fmt::format("Fitted by koppel synth fit from {}; cost {:.3g}{}", args.problem, r.cost,
-                                                                  r.ok() ? "" : " (" + std::string(ToString(r.status)) + ")"),
-                                              problem.base.sweep, values));
+  return s;
+}
+
+// --yaml: the original file's structure with the fitted parameter values.
+void WriteFittedFile(const Args& args, const FitProblem& problem, const FitReport& r, const Mechanism& fitted) {
+  Overrides fitted_values;
+  for (size_t j = 0; j < r.values.size(); ++j) fitted_values.emplace_back(problem.parameters[j].name, fmt::format("{:.17g}", r.values[j]));
+  const MechanismFile fitted_file = ReadMechanismFile(problem.mechanism_path, fitted_values);
+  const auto& values = fitted_file.parameters.Values();
+  WriteOutput(args.yaml, WriteMechanismYaml(fitted, fmt::format("Fitted by koppel synth fit from {}; cost {:.3g}{}", args.problem, r.cost,
+                                                                r.ok() ? "" : " (" + std::string(ToString(r.status)) + ")"),
+                                            problem.base.sweep, values));
+}
+
+void Run(const Args& args) {
+  CheckFormat(args.format);
+  FitProblem problem = Checked([&] { return ReadFitProblem(args.problem); });  // bad input: its diagnostics, exit 2
+  if (!args.threads.empty()) problem.options.threads = static_cast<int>(ParseNumberFlag("--threads", args.threads));
+  std::string why;
+  if (!problem.options.IsValid(&why)) {
+    Complain(args.problem + ": " + why);
+    throw Exit{kExitBadInput};
   }
+  const FitReport r = Fit(problem.builder, problem.parameters, problem.targets, problem.options);
+  if (!args.quiet) {
+    for (const FitStart& s : r.starts) std::cerr << fmt::format("koppel synth fit: start {}: {}\n", s.index + 1, s.brief);
+  }
+  if (r.values.empty()) {
+    Complain(args.problem + ": " + r.message);
+    throw Exit{r.status == FitStatus::kInvalidOptions ? kExitBadInput : kExitFailed};
+  }
+  const Expected<Mechanism> built = problem.builder(r.values);
+  if (!built) {
+    Complain(args.problem + ": the fitted values do not build the mechanism: " + built.error());
+    throw Exit{kExitFailed};
+  }
+  const Mechanism& fitted = *built;
+  const Summary s = FitSummary(problem, r, fitted);
+  if (!args.yaml.empty()) WriteFittedFile(args, problem, r, fitted);
   WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv());
   if (!args.quiet) std::cerr << fmt::format("koppel synth fit: cost {:.3g} after {} iterations (start {}; {} of {} starts reached it)\n", r.cost, r.iterations,
                            r.best_start + 1, r.starts_at_best, r.starts.size());

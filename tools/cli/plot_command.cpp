@@ -122,6 +122,31 @@ void RunTolerancePlot(const Args& args, const MechanismFile& file) {
   Finish(args, picture);
 }
 
+// --from/--to/--step (else the file's sweep) and --at-branch-point, as the plot's range.
+SweepOptions RangeOf(const Args& args, const MechanismFile& file) {
+  auto in = [&](double v) { return file.mechanism.InputIsAngle() ? DegToRad(v) : v; };
+  SweepOptions range;
+  range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
+  range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
+  range.step = in(args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step));
+  range.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
+  return range;
+}
+
+// The transmission angle over the range: the file's first transmission-angle output.
+void RunMuPlot(const Args& args, const Mechanism& m, const SweepOptions& range) {
+  plot::MuPlotOptions options;
+  for (int o = 0; o < static_cast<int>(m.outputs.size()) && options.output < 0; ++o)
+    if (m.outputs[o].kind == OutputKind::kTransmissionAngle) options.output = o;
+  options.range = range;
+  std::string why;
+  if (!options.IsValid(m, &why)) {
+    Complain(args.file + ": " + why);
+    throw Exit{kExitBadInput};
+  }
+  Finish(args, plot::MuPlot(m, options));
+}
+
 void Run(const Args& args) {
   const bool csv = args.file.size() > 4 && args.file.substr(args.file.size() - 4) == ".csv";
   const int kinds = !args.transfer.empty() + args.mu + !args.curve.empty() + args.forces + !args.tolerance.empty();
@@ -139,12 +164,7 @@ void Run(const Args& args) {
   }
   const MechanismFile file = LoadMechanism(args.file, args.sets);
   const Mechanism& m = file.mechanism;
-  auto in = [&](double v) { return m.InputIsAngle() ? DegToRad(v) : v; };
-  SweepOptions range;
-  range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
-  range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
-  range.step = in(args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step));
-  range.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
+  const SweepOptions range = RangeOf(args, file);
   std::string why;
   if (!args.transfer.empty()) {
     plot::TransferPlotOptions options;
@@ -162,15 +182,7 @@ void Run(const Args& args) {
   } else if (!args.tolerance.empty()) {
     RunTolerancePlot(args, file);
   } else if (args.mu) {
-    plot::MuPlotOptions options;
-    for (int o = 0; o < static_cast<int>(m.outputs.size()) && options.output < 0; ++o)
-      if (m.outputs[o].kind == OutputKind::kTransmissionAngle) options.output = o;
-    options.range = range;
-    if (!options.IsValid(m, &why)) {
-      Complain(args.file + ": " + why);
-      throw Exit{kExitBadInput};
-    }
-    Finish(args, plot::MuPlot(m, options));
+    RunMuPlot(args, m, range);
   } else {
     plot::CurvePlotOptions options;
     options.point = ResolvePoint(m, args.curve, "--curve");

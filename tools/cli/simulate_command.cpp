@@ -84,51 +84,39 @@ DriveLaw ParseMotor(const std::string& text, bool angle) {
   return law;
 }
 
-void RunSimulate(const SimulateArgs& args) {
-  CheckFormat(args.format);
-  if (args.torque.empty() == args.motor.empty()) BadInput("give the drive torque: either --torque FORMULA or --motor CURVE");
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const Mechanism& m = file.mechanism;
+// --t, --initial, --dt and --tolerance as the integrator's options (refused with exit 2).
+SimulationOptions OptionsOf(const SimulateArgs& args, const Mechanism& m) {
   const bool angle = m.InputIsAngle();
-  const double speed_unit = angle ? kRpm : 1.0;
-
-  DriveLaw law;
-  if (!args.torque.empty()) {
-    law.kind = DriveLaw::Kind::kFormula;
-    law.formula = args.torque;
-  } else {
-    law = ParseMotor(args.motor, angle);
-  }
   SimulationOptions options;
   std::tie(options.t_start, options.t_end) = ParseTimeSpan(args.time);
   options.initial_input = m.hint.input;
   if (!args.initial.empty()) {
     const auto [input, speed] = ParsePair("--initial", args.initial);
     options.initial_input = angle ? DegToRad(input) : input;
-    options.initial_speed = speed * speed_unit;
+    options.initial_speed = speed * (angle ? kRpm : 1.0);
   }
   options.output_step = args.dt.empty() ? (options.t_end - options.t_start) / 200.0 : ParseNumberFlag("--dt", args.dt);
   if (!args.tolerance.empty()) options.relative_tolerance = options.absolute_tolerance = ParseNumberFlag("--tolerance", args.tolerance);
   std::string why;
   if (!options.IsValid(&why)) BadInput("--t/--initial/--dt/--tolerance: " + why);
+  return options;
+}
 
-  const SimulationResult result = Simulate(m, file.loads, law, options);
-  // the message goes to the input it is about: the file (loads), the drive flag or the options
-  switch (result.bad_part) {
-    case SimulationResult::BadPart::kNone: break;
-    case SimulationResult::BadPart::kLoads: BadInput(args.file + ": " + result.message);
-    case SimulationResult::BadPart::kDrive: BadInput((args.torque.empty() ? "--motor " : "--torque ") + (args.torque.empty() ? args.motor : args.torque) + ": " + result.message);
-    case SimulationResult::BadPart::kOptions: BadInput("--t/--initial/--dt/--tolerance: " + result.message);
-  }
-
+// The rows as they are printed: t, the input, its speed, every output, the drive's torque (or
+// force) and the energies; `units` receives each column's unit (lengths in the file's unit).
+Table SimulationTable(const MechanismFile& file, const SimulationResult& result, std::vector<std::string>& units) {
+  const Mechanism& m = file.mechanism;
+  const bool angle = m.InputIsAngle();
+  const double speed_unit = angle ? kRpm : 1.0;
+  const std::string length = file.loads.LengthUnit();
   Table table;
-  std::vector<std::string> units = {"s", angle ? "deg" : "length", angle ? "rpm" : "length/s"};
+  units = {"s", angle ? "deg" : length, angle ? "rpm" : length + "/s"};
   table.columns = {"t", m.drive.input_name, "speed"};
   for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
     const Output& out = m.outputs[o];
     for (int c = 0; c < out.Components(); ++c) {
       table.columns.push_back(out.Components() == 2 ? out.name + (c == 0 ? "_x" : "_y") : out.name);
-      units.push_back(m.OutputIsAngle(o) ? "deg" : "length");
+      units.push_back(m.OutputIsAngle(o) ? "deg" : length);
     }
   }
   for (const char* name : {angle ? "torque" : "force", "E_kin", "E_pot"}) table.columns.push_back(name);
@@ -144,6 +132,33 @@ void RunSimulate(const SimulateArgs& args) {
     row.insert(row.end(), {r.drive, r.kinetic_energy, r.potential_energy});
     table.rows.push_back(std::move(row));
   }
+  return table;
+}
+
+void RunSimulate(const SimulateArgs& args) {
+  CheckFormat(args.format);
+  if (args.torque.empty() == args.motor.empty()) BadInput("give the drive torque: either --torque FORMULA or --motor CURVE");
+  const MechanismFile file = LoadMechanism(args.file, args.sets);
+  const Mechanism& m = file.mechanism;
+  DriveLaw law;
+  if (!args.torque.empty()) {
+    law.kind = DriveLaw::Kind::kFormula;
+    law.formula = args.torque;
+  } else {
+    law = ParseMotor(args.motor, m.InputIsAngle());
+  }
+  const SimulationOptions options = OptionsOf(args, m);
+  const SimulationResult result = Simulate(m, file.loads, law, options);
+  // the message goes to the input it is about: the file (loads), the drive flag or the options
+  switch (result.bad_part) {
+    case SimulationResult::BadPart::kNone: break;
+    case SimulationResult::BadPart::kLoads: BadInput(args.file + ": " + result.message);
+    case SimulationResult::BadPart::kDrive: BadInput((args.torque.empty() ? "--motor " : "--torque ") + (args.torque.empty() ? args.motor : args.torque) + ": " + result.message);
+    case SimulationResult::BadPart::kOptions: BadInput("--t/--initial/--dt/--tolerance: " + result.message);
+  }
+
+  std::vector<std::string> units;
+  const Table table = SimulationTable(file, result, units);
   if (args.format == "csv") {
     WriteOutput(args.out, table.ToCsv());
   } else {

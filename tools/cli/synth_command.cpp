@@ -360,6 +360,7 @@ void RunMzc(const Args& args) {
 }  // namespace
 }  // namespace synth_command
 
+// long: one flat list of the synth command's flags and subcommands in the order --help shows them
 void AddSynthCommand(CLI::App& app) {
   using namespace synth_command;
   auto args = std::make_shared<Args>();

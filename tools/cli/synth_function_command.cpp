@@ -1,6 +1,7 @@
 // koppel synth function: function generation (function_synthesis.hpp).
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 
 #include "koppel/catalog/mechanism_writer.hpp"
 #include "koppel/catalog/synthesis_spec.hpp"
@@ -20,13 +21,7 @@ struct Args {
 
 void Run(const Args& args) {
   CheckFormat(args.format);
-  FunctionSpecFile spec;
-  try {
-    spec = ReadFunctionSpec(args.spec);
-  } catch (const InputError& e) {
-    for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
-    throw Exit{kExitBadInput};
-  }
+  FunctionSpecFile spec = Checked([&] { return ReadFunctionSpec(args.spec); });  // bad input: its diagnostics, exit 2
   const FunctionRequest& r = spec.request;
   const FunctionDesign d = SynthesiseFunction(r);
   if (d.status == FunctionStatus::kInvalidRequest || d.status == FunctionStatus::kNoMechanism) {

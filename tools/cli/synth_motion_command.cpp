@@ -1,6 +1,7 @@
 // koppel synth motion: Burmester motion generation (burmester.hpp, motion_synthesis.hpp).
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 
 #include "koppel/catalog/mechanism_writer.hpp"
 #include "koppel/catalog/synthesis_spec.hpp"
@@ -119,13 +120,7 @@ std::string Comment(const MotionFourBar& f, int rank, const std::string& poses) 
 
 void Run(const Args& args) {
   CheckFormat(args.format);
-  MotionSpecFile spec;
-  try {
-    spec = ReadMotionSpec(args.poses);
-  } catch (const InputError& e) {
-    for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
-    throw Exit{kExitBadInput};
-  }
+  MotionSpecFile spec = Checked([&] { return ReadMotionSpec(args.poses); });  // bad input: its diagnostics, exit 2
   MotionOptions options;
   if (!args.require.empty()) {
     if (args.require != "crank") {

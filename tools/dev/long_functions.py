@@ -6,7 +6,7 @@ line holding its closing brace, both included. A lambda or local class counts as
 function that holds it. A function left long on purpose carries `// long: <reason>` on the line
 just above its signature; such functions are listed with their reason (they still count).
 
-Usage: tools/dev/long_functions.py [--limit 60] [dir ...]   (default dirs: core solver catalog tools)
+Usage: tools/dev/long_functions.py [--limit 60] [--check N] [dir ...]   (default dirs: core solver catalog tools)
 Prints one line per function, longest first: `length  file:line  name  [long: reason]`, then the
 count. A heuristic scanner, not a C++ parser: comments, strings and character literals are blanked,
 then each `{` is classified by the text before it (namespace, class, function or other).
@@ -120,6 +120,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--limit", type=int, default=60)
     parser.add_argument("dirs", nargs="*", default=["core", "solver", "catalog", "tools"])
+    parser.add_argument("--check", type=int, metavar="N",
+                        help="exit 1 when more than N functions are over the limit or one of them has no `// long:` reason")
     args = parser.parse_args()
     found = []
     for d in args.dirs:
@@ -131,6 +133,11 @@ def main():
     for length, where, name, reason in sorted(found, key=lambda f: (-f[0], f[1])):
         print(f"{length:5d}  {where}  {name}" + (f"  [long: {reason}]" if reason else ""))
     print(f"{len(found)} functions over {args.limit} lines", file=sys.stderr)
+    if args.check is not None:
+        unexplained = [f for f in found if not f[3]]
+        if len(found) > args.check or unexplained:
+            print(f"more than {args.check}, or without a `// long: <reason>` comment: {len(unexplained)}", file=sys.stderr)
+            return 1
     return 0
 
 

@@ -69,12 +69,6 @@ TEST_CASE("singular points in the API's words and units", "[display]") {
   CHECK(s[0].action == "switch");
 }
 
-TEST_CASE("the API's branch-point words map one to one onto the kernel's", "[display]") {
-  CHECK(api_detail::Internal(AtBranchPoint::kContinue) == BranchPointAction::kContinue);
-  CHECK(api_detail::Internal(AtBranchPoint::kStop) == BranchPointAction::kStop);
-  CHECK(api_detail::Internal(AtBranchPoint::kSwitch) == BranchPointAction::kSwitch);
-}
-
 TEST_CASE("bad input names the file and the field", "[display]") {
   try {
     api_detail::BadInput("m.yaml", "from", "must be finite");

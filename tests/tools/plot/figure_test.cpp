@@ -44,8 +44,8 @@ TEST_CASE("RenderFigure: one path per curve, gaps as separate subpaths, markers 
   plot::Panel p;
   p.x = plot::NiceAxis("x", 0, 10);
   p.y = plot::NiceAxis("y", -1, 1);
-  p.curves.push_back({"first", {{{0, 0}, {1, 0.5}, {2, 1}}, {{5, -1}, {10, 0}}}, 0, false});
-  p.curves.push_back({"second", {{{0, 1}, {10, -1}}}, 1, true});
+  p.curves.push_back({"first", {{{0, 0}, {1, 0.5}, {2, 1}}, {{5, -1}, {10, 0}}}, 0, false, ""});
+  p.curves.push_back({"second", {{{0, 1}, {10, -1}}}, 1, true, ""});
   p.markers.push_back({{7, 0.25}, "m", "deadcentre"});
   p.shaded.push_back({2, 5});
   f.panels = {p, p};

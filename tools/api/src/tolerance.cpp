@@ -78,51 +78,88 @@ std::vector<std::optional<double>> ToleranceResult::Row(size_t i) const {
   return v;
 }
 
-ToleranceResult Model::Tolerances(const ToleranceRequest& request) const {
-  const Mechanism& m = mechanism();
-  if (impl_->source == Impl::Source::kMechanism) BadInput(path(), "tol", "a mechanism built in code has no parameters to tolerance");
-  const auto [output, component] = ResolveOutput(*this, request.output);
+namespace {
+
+// The request checked against the model (each problem an InputError naming its field) as the
+// analysis' options; `names` and `nominal` receive the toleranced parameters and their values.
+ToleranceOptions CheckedToleranceOptions(const Model& model, const ToleranceRequest& request, std::vector<std::string>& names,
+                                         std::vector<double>& nominal) {
+  const auto [output, component] = ResolveOutput(model, request.output);
   ToleranceOptions o;
   o.output = output;
   o.component = component;
-  if (request.inputs.empty()) BadInput(path(), "input", "no input to evaluate at");
+  if (request.inputs.empty()) BadInput(model.path(), "input", "no input to evaluate at");
   for (double x : request.inputs) {
-    if (!std::isfinite(x)) BadInput(path(), "input", "the input is not a finite number");
-    o.inputs.push_back(InputInternal(m, x));
+    if (!std::isfinite(x)) BadInput(model.path(), "input", "the input is not a finite number");
+    o.inputs.push_back(InputInternal(model.mechanism(), x));
   }
   // the toleranced parameters and their nominal values (after every override so far)
-  std::vector<std::string> names;
-  std::vector<double> nominal;
-  const auto values = parameters();
+    const auto values = model.parameters();
   for (const auto& [name, tolerance] : request.tolerances) {
     auto found = std::find_if(values.begin(), values.end(), [&](const auto& v) { return v.first == name; });
-    if (found == values.end()) BadInput(path(), "tol", "the mechanism has no parameter '" + name + "'");
-    if (std::find(names.begin(), names.end(), name) != names.end()) BadInput(path(), "tol", "parameter '" + name + "' is toleranced twice");
-    if (!(tolerance > 0) || !std::isfinite(tolerance)) BadInput(path(), "tol", "the tolerance of '" + name + "' must be a positive number");
+    if (found == values.end()) BadInput(model.path(), "tol", "the mechanism has no parameter '" + name + "'");
+    if (std::find(names.begin(), names.end(), name) != names.end()) BadInput(model.path(), "tol", "parameter '" + name + "' is toleranced twice");
+    if (!(tolerance > 0) || !std::isfinite(tolerance)) BadInput(model.path(), "tol", "the tolerance of '" + name + "' must be a positive number");
     names.push_back(name);
     nominal.push_back(found->second);
     o.tolerances.push_back(tolerance);
   }
   for (const auto& [joint, radius] : request.clearances) {
-    const int j = m.FindJoint(joint);
-    if (j < 0) BadInput(path(), "clearance", "the mechanism has no joint '" + joint + "'");
-    if (m.joints[j].type != JointType::kRevolute)
-      BadInput(path(), "clearance", "joint '" + joint + "' is a slide: clearance is modelled for revolute joints (a pin in a hole)");
-    if (!(radius > 0) || !std::isfinite(radius)) BadInput(path(), "clearance", "the clearance of '" + joint + "' must be a positive number");
+    const int j = model.mechanism().FindJoint(joint);
+    if (j < 0) BadInput(model.path(), "clearance", "the mechanism has no joint '" + joint + "'");
+    if (model.mechanism().joints[j].type != JointType::kRevolute)
+      BadInput(model.path(), "clearance", "joint '" + joint + "' is a slide: clearance is modelled for revolute joints (a pin in a hole)");
+    if (!(radius > 0) || !std::isfinite(radius)) BadInput(model.path(), "clearance", "the clearance of '" + joint + "' must be a positive number");
     if (std::find(o.clearance_joints.begin(), o.clearance_joints.end(), j) != o.clearance_joints.end())
-      BadInput(path(), "clearance", "joint '" + joint + "' is given twice");
+      BadInput(model.path(), "clearance", "joint '" + joint + "' is given twice");
     o.clearance_joints.push_back(j);
     o.clearances.push_back(radius);
   }
-  if (names.empty() && o.clearances.empty()) BadInput(path(), "tol", "give at least one tolerance or clearance");
-  if (request.samples < 0) BadInput(path(), "samples", "the number of samples must not be negative");
+  if (names.empty() && o.clearances.empty()) BadInput(model.path(), "tol", "give at least one tolerance or clearance");
+  if (request.samples < 0) BadInput(model.path(), "samples", "the number of samples must not be negative");
   if (request.distribution == "uniform") o.distribution = ToleranceDistribution::kUniform;
   else if (request.distribution == "normal") o.distribution = ToleranceDistribution::kNormal;
-  else BadInput(path(), "distribution", "the distribution is uniform or normal, not '" + request.distribution + "'");
+  else BadInput(model.path(), "distribution", "the distribution is uniform or normal, not '" + request.distribution + "'");
   o.samples = request.samples;
   o.seed = request.seed;
   o.threads = request.threads;
   o.progress = request.progress;
+  return o;
+}
+
+// One row in the units of the request: `k` turns the output's radians into degrees (1 for a length).
+ToleranceRowReport ToleranceRowShown(const ToleranceRow& row, double k, double input) {
+  ToleranceRowReport r;
+  r.input = input;  // as asked for, not through radians and back
+  r.ok = row.ok;
+  r.message = row.message;
+  r.nominal = k * row.nominal;
+  for (double s : row.sensitivity) r.sensitivity.push_back(k * s);
+  for (double g : row.clearance_gain) r.clearance_gain.push_back(k * g);
+  r.worst_case = k * row.worst_case;
+  r.rss = k * row.rss;
+  r.clearance_worst_case = k * row.clearance_worst_case;
+  r.linear_std = k * row.linear_std;
+  r.share = row.share;
+  r.mc_samples = row.mc_samples;
+  r.mc_failed = row.mc_failed;
+  r.mc_min = k * row.mc_min;
+  r.mc_max = k * row.mc_max;
+  r.mc_mean = k * row.mc_mean;
+  r.mc_std = k * row.mc_std;
+  for (double q : row.quantiles) r.quantiles.push_back(k * q);
+  return r;
+}
+
+}  // namespace
+
+ToleranceResult Model::Tolerances(const ToleranceRequest& request) const {
+  const Mechanism& m = mechanism();
+  if (impl_->source == Impl::Source::kMechanism) BadInput(path(), "tol", "a mechanism built in code has no parameters to tolerance");
+  std::vector<std::string> names;
+  std::vector<double> nominal;
+  const ToleranceOptions o = CheckedToleranceOptions(*this, request, names, nominal);
+  const int output = o.output;
 
   // every sample reads the file's text again, without the catalog card (it does not make the mechanism)
   const std::string text = MechanismTextWithoutCard(impl_->source == Impl::Source::kFile ? MechanismFileText(path()) : impl_->text, path());
@@ -134,9 +171,9 @@ ToleranceResult Model::Tolerances(const ToleranceRequest& request) const {
   out.message = report.message;
   out.output = request.output;
   out.input_name = input_name();
-  out.input_unit = input_is_angle() ? "deg" : "length";
+  out.input_unit = input_is_angle() ? "deg" : length_unit();  // the file's length unit, "length" when it names none
   const bool angle = m.OutputIsAngle(output);
-  out.unit = angle ? "deg" : "length";
+  out.unit = angle ? "deg" : length_unit();
   out.parameters = names;
   out.tolerances = o.tolerances;
   for (const auto& c : request.clearances) {
@@ -148,29 +185,7 @@ ToleranceResult Model::Tolerances(const ToleranceRequest& request) const {
   out.seed = o.seed;
   out.quantile_levels = o.quantile_levels;
   const double k = angle ? RadToDeg(1.0) : 1.0;
-  for (size_t i = 0; i < report.rows.size(); ++i) {
-    const ToleranceRow& row = report.rows[i];
-    ToleranceRowReport r;
-    r.input = request.inputs[i];  // as asked for, not through radians and back
-    r.ok = row.ok;
-    r.message = row.message;
-    r.nominal = k * row.nominal;
-    for (double s : row.sensitivity) r.sensitivity.push_back(k * s);
-    for (double g : row.clearance_gain) r.clearance_gain.push_back(k * g);
-    r.worst_case = k * row.worst_case;
-    r.rss = k * row.rss;
-    r.clearance_worst_case = k * row.clearance_worst_case;
-    r.linear_std = k * row.linear_std;
-    r.share = row.share;
-    r.mc_samples = row.mc_samples;
-    r.mc_failed = row.mc_failed;
-    r.mc_min = k * row.mc_min;
-    r.mc_max = k * row.mc_max;
-    r.mc_mean = k * row.mc_mean;
-    r.mc_std = k * row.mc_std;
-    for (double q : row.quantiles) r.quantiles.push_back(k * q);
-    out.rows.push_back(std::move(r));
-  }
+  for (size_t i = 0; i < report.rows.size(); ++i) out.rows.push_back(ToleranceRowShown(report.rows[i], k, request.inputs[i]));
   return out;
 }
 

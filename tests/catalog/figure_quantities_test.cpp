@@ -7,6 +7,8 @@
 #include "koppel/core/angles.hpp"
 #include "support/temp_file.hpp"
 
+#include "figure_cards.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -29,53 +31,6 @@ constexpr double kLimitDeg = 1e-5;
 constexpr double kRatio = 1e-9;
 
 using Catch::Matchers::WithinAbs;
-
-// A four-bar A0 = (0, 0), B0 = (l4, 0), crank l1 driven at A0, coupler l2, rocker l3, B above
-// the frame line at the assembly input; the card carries `figures` (YAML list items).
-std::string FourBar(double l1, double l2, double l3, double l4, double assembly_input, const std::string& figures) {
-  const double phi = DegToRad(assembly_input);
-  const double ax = l1 * std::cos(phi), ay = l1 * std::sin(phi);
-  // B = intersection of circle(A, l2) and circle(B0, l3) with B left of A -> B0 (above for A on the frame line)
-  const double dx = l4 - ax, dy = -ay, d = std::hypot(dx, dy);
-  const double a = (l2 * l2 - l3 * l3 + d * d) / (2 * d), h = std::sqrt(std::max(0.0, l2 * l2 - a * a));
-  const double bx = ax + a * dx / d - h * dy / d, by = ay + a * dy / d + h * dx / d;
-  char buffer[2048];
-  std::snprintf(buffer, sizeof buffer, R"(name: four-bar
-parameters: {l1: %.17g, l2: %.17g, l3: %.17g, l4: %.17g}
-links:
-  frame: {frame: true, points: {A0: [0, 0], B0: [l4, 0]}}
-  crank: {points: {A0: [0, 0], A: [l1, 0]}}
-  coupler: {points: {A: [0, 0], B: [l2, 0]}}
-  rocker: {points: {B0: [0, 0], B: [l3, 0]}}
-joints:
-  A0: {type: R, links: [frame, crank]}
-  A: {type: R, links: [crank, coupler]}
-  B: {type: R, links: [coupler, rocker]}
-  B0: {type: R, links: [frame, rocker]}
-drive: {joint: A0}
-outputs:
-  psi: {link: rocker}
-  A: {point: crank.A}
-assembly: {input: %.17g, points: {B: [%.17g, %.17g]}}
-catalog:
-  title: {de: Gelenkviereck, en: four-bar}
-  kind: transfer
-  outputs: [psi]
-  features: {drive_joints: 1, output_links: 1, links: 4, joints: 4}
-  sweep: {from: 0, to: 360, step: 1}
-  figures:
-)",
-                l1, l2, l3, l4, assembly_input, bx, by);
-  return buffer + figures;
-}
-
-const CheckOutcome& FindOutcome(const EntryReport& r, const std::string& name) {
-  for (const CheckOutcome& c : r.checks) {
-    if (c.name == name) return c;
-  }
-  FAIL("no check " << name);
-  throw std::logic_error("unreachable");
-}
 
 double LawOfCosines(double a, double b, double opposite) { return std::acos((a * a + b * b - opposite * opposite) / (2 * a * b)); }
 
@@ -111,25 +66,25 @@ TEST_CASE("crank-rocker figures: swing, dead centres and which joints turn fully
     - {name: arc band, quantity: straightline_band, output: A, from: 0, to: 90, at: 45, expected: 0, tolerance: 1000}
 )";
   test::TempDir dir;
-  const EntryReport r = CheckEntry(dir.Write("f.yaml", FourBar(l1, l2, l3, l4, 0, figures)));
+  const EntryReport r = CheckEntry(dir.Write("f.yaml", test::FourBar(l1, l2, l3, l4, 0, figures)));
   // rocker angle at the extended (A0B = l2 + l1) and folded (A0B = l2 - l1) dead centres: the
   // angle at B0 in triangle A0 B0 B, B above the frame: psi = 180 deg - angle(A0 B0 B)
   const double psi_a = kPi - LawOfCosines(l3, l4, l2 + l1), psi_i = kPi - LawOfCosines(l3, l4, l2 - l1);
-  CHECK_THAT(FindOutcome(r, "swing").value, WithinAbs(RadToDeg(std::abs(psi_a - psi_i)), kDeadCentreDeg));
+  CHECK_THAT(test::FindOutcome(r, "swing").value, WithinAbs(RadToDeg(std::abs(psi_a - psi_i)), kDeadCentreDeg));
   // crank angle: angle at A0 in the same triangles; folded: A points away from B
   const double phi_a = LawOfCosines(l2 + l1, l4, l3), phi_i = LawOfCosines(l2 - l1, l4, l3) + kPi;
-  CHECK_THAT(FindOutcome(r, "phi_a").value, WithinAbs(RadToDeg(phi_a), kDeadCentreDeg));
-  CHECK_THAT(FindOutcome(r, "span").value, WithinAbs(RadToDeg(std::fmod(phi_a - phi_i + 4 * kPi, 2 * kPi)), kDeadCentreDeg));
+  CHECK_THAT(test::FindOutcome(r, "phi_a").value, WithinAbs(RadToDeg(phi_a), kDeadCentreDeg));
+  CHECK_THAT(test::FindOutcome(r, "span").value, WithinAbs(RadToDeg(std::fmod(phi_a - phi_i + 4 * kPi, 2 * kPi)), kDeadCentreDeg));
   for (const char* name : {"crank turns", "A turns", "B oscillates", "B0 oscillates", "rocker turns"}) {
     INFO(name);
-    CHECK(FindOutcome(r, name).passed());
+    CHECK(test::FindOutcome(r, name).passed());
   }
   // a crank has no limit position: not computed, which fails the entry
-  CHECK(FindOutcome(r, "no limit").status == CheckStatus::kNotComputed);
+  CHECK(test::FindOutcome(r, "no limit").status == CheckStatus::kNotComputed);
   CHECK_FALSE(r.passed());
   // the crank pin's circular arc over 0..90 deg against its tangent at 45 deg: the sagitta
   // l1 (1 - cos 45 deg)
-  CHECK_THAT(FindOutcome(r, "arc band").value, WithinAbs(l1 * (1 - std::cos(kPi / 4)), kBand));
+  CHECK_THAT(test::FindOutcome(r, "arc band").value, WithinAbs(l1 * (1 - std::cos(kPi / 4)), kBand));
 }
 
 TEST_CASE("non-Grashof four-bar: the input's limit positions where coupler and rocker line up", "[catalog][figure_quantities]") {
@@ -141,14 +96,14 @@ TEST_CASE("non-Grashof four-bar: the input's limit positions where coupler and r
     - {name: B0 oscillates, quantity: revolves, joint: B0, expected: 0, tolerance: 0}
 )";
   test::TempDir dir;
-  std::string text = FourBar(l1, l2, l3, l4, 0, figures);
+  std::string text = test::FourBar(l1, l2, l3, l4, 0, figures);
   const EntryReport r = CheckEntry(dir.Write("f.yaml", text));
   // extended coupler and rocker: B0A = l2 + l3, angle at A0 in triangle A0 B0 A
   const double limit = RadToDeg(LawOfCosines(l1, l4, l2 + l3));
-  CHECK_THAT(FindOutcome(r, "high").value, WithinAbs(limit, kLimitDeg));
-  CHECK_THAT(FindOutcome(r, "low").value, WithinAbs(-limit, kLimitDeg));
-  CHECK(FindOutcome(r, "input oscillates").passed());
-  CHECK(FindOutcome(r, "B0 oscillates").passed());
+  CHECK_THAT(test::FindOutcome(r, "high").value, WithinAbs(limit, kLimitDeg));
+  CHECK_THAT(test::FindOutcome(r, "low").value, WithinAbs(-limit, kLimitDeg));
+  CHECK(test::FindOutcome(r, "input oscillates").passed());
+  CHECK(test::FindOutcome(r, "B0 oscillates").passed());
 }
 
 TEST_CASE("double crank: the output turns once per turn, its speed ratio from the velocity pole", "[catalog][figure_quantities]") {
@@ -160,13 +115,13 @@ TEST_CASE("double crank: the output turns once per turn, its speed ratio from th
     - {name: B oscillates, quantity: revolves, joint: B, expected: 0, tolerance: 0}
 )";
   test::TempDir dir;
-  const EntryReport r = CheckEntry(dir.Write("f.yaml", FourBar(l1, l2, l3, l4, 0, figures)));
-  CHECK(FindOutcome(r, "output turns").passed());
-  CHECK(FindOutcome(r, "B0 turns").passed());
-  CHECK(FindOutcome(r, "B oscillates").passed());
+  const EntryReport r = CheckEntry(dir.Write("f.yaml", test::FourBar(l1, l2, l3, l4, 0, figures)));
+  CHECK(test::FindOutcome(r, "output turns").passed());
+  CHECK(test::FindOutcome(r, "B0 turns").passed());
+  CHECK(test::FindOutcome(r, "B oscillates").passed());
   // at phi = 0 the crank pin A lies on the frame line, so it is the pole P13 of the coupler:
   // psi' = P13A0 / P13B0 = l1 / (l1 - l4)
-  CHECK_THAT(FindOutcome(r, "ratio at 0").value, WithinAbs(l1 / (l1 - l4), kRatio));
+  CHECK_THAT(test::FindOutcome(r, "ratio at 0").value, WithinAbs(l1 / (l1 - l4), kRatio));
 }
 
 }  // namespace koppel::figure_quantities_test

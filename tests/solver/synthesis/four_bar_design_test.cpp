@@ -8,6 +8,8 @@
 #include "koppel/solver/sweep.hpp"
 
 #include <Eigen/Geometry>
+#include "hand_picked_four_bar.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -21,18 +23,6 @@ constexpr double kRoundoff = 1e-12;
 // The solver's poses against independent geometry: Newton converges to 1e-13 of the size, the
 // issue's bar for a re-analysed synthesis is 1e-9 of the mechanism's size (here ~4).
 constexpr double kPose = 1e-9;
-
-// A crank-rocker (crank 1.02 the shortest, Grashof) with the plane's origin off the coupler line.
-FourBarGeometry HandPicked() {
-  FourBarGeometry g;
-  g.a0 = {0, 0};
-  g.a = {1, 0.2};
-  g.b = {3.1, 2.4};
-  g.b0 = {4, 0.3};
-  g.plane_origin = {2.2, 3.3};
-  g.plane_angle = 0.3;
-  return g;
-}
 
 // The outputs P, theta, psi, mu at one input (a sweep of one point).
 Eigen::VectorXd OutputsAt(const Mechanism& m, double input) {
@@ -86,7 +76,7 @@ TEST_CASE("FourBarJointB refuses what cannot close, FourBarBranch says 0 on the 
 TEST_CASE("the designed four-bar is the drawn one in its pose", "[four_bar_design]") {
   // reference: the geometry it was made from: P at the plane's origin, theta the plane's angle,
   // psi the angle of B0 -> B, mu from the angle between B -> A and B -> B0 folded to 0..90 deg
-  const FourBarGeometry g = HandPicked();
+  const FourBarGeometry g = test::HandPickedFourBar(0.3);
   const Mechanism m = DesignedFourBar(g, "drawn");
   CHECK(m.name == "drawn");
   const double phi = Direction(g.a - g.a0);
@@ -103,7 +93,7 @@ TEST_CASE("the designed four-bar is the drawn one in its pose", "[four_bar_desig
 TEST_CASE("driven away from its pose the coupler plane moves rigidly", "[four_bar_design]") {
   // reference: A' on the crank circle, B' from the triangle A' B' B0 on the pose's branch, and
   // the plane point carried by the rotation of A -> B into A' -> B'
-  FourBarGeometry g = HandPicked();
+  FourBarGeometry g = test::HandPickedFourBar(0.3);
   g.input = 0.25;  // the input reads 0.25 rad in the drawn pose
   g.psi = -1.0;
   const Mechanism m = DesignedFourBar(g, "offset");

@@ -10,6 +10,8 @@
 #include "koppel/synthesis/four_bar_design.hpp"
 #include "support/closed_forms.hpp"
 
+#include "hand_picked_four_bar.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -23,18 +25,6 @@ constexpr double kPose = 1e-9;
 // mu_min (refined by Newton from a 1-degree search) against a closed form sampled every 1e-4 rad:
 // mu is quadratic at an interior minimum, so the sampled minimum is high by < 1e-8 rad.
 constexpr double kMuMin = 1e-7;
-
-// A crank-rocker: crank 1.02, coupler 3.04, rocker 2.28, frame 4.01 (1.02 + 4.01 < 3.04 + 2.28).
-FourBarGeometry HandPicked() {
-  FourBarGeometry g;
-  g.a0 = {0, 0};
-  g.a = {1, 0.2};
-  g.b = {3.1, 2.4};
-  g.b0 = {4, 0.3};
-  g.plane_origin = {2.2, 3.3};
-  g.plane_angle = 0.3;
-  return g;
-}
 
 // The plane's poses at the drawn input plus the offsets (the solver's sweep of the known four-bar).
 std::vector<Pose> PosesOf(const Mechanism& m, const std::vector<double>& offsets_deg) {
@@ -51,7 +41,7 @@ std::vector<Pose> PosesOf(const Mechanism& m, const std::vector<double>& offsets
 }
 
 TEST_CASE("the known crank-rocker passes with its crank angles, type and mu_min", "[motion_synthesis]") {
-  const FourBarGeometry g = HandPicked();
+  const FourBarGeometry g = test::HandPickedFourBar(0.3);
   const std::vector<double> offsets = {0, 40, 95};
   const std::vector<Pose> poses = PosesOf(DesignedFourBar(g, "known"), offsets);
   const MotionFourBar f = AnalyseMotionFourBar(poses, {g.a0, g.a}, {g.b0, g.b});
@@ -82,7 +72,7 @@ TEST_CASE("the known crank-rocker passes with its crank angles, type and mu_min"
 TEST_CASE("poses out of the crank's order are an order defect", "[motion_synthesis]") {
   // reference, a hand count: driven ccw the crank meets them 0, 95, 40, 150 deg on, driven cw
   // 0, 265, 320, 210 deg on: neither in order (three poses are always in order one way round)
-  const FourBarGeometry g = HandPicked();
+  const FourBarGeometry g = test::HandPickedFourBar(0.3);
   const std::vector<Pose> poses = PosesOf(DesignedFourBar(g, "known"), {0, 95, 40, 150});
   const MotionFourBar f = AnalyseMotionFourBar(poses, {g.a0, g.a}, {g.b0, g.b});
   CHECK(f.order_defect);
@@ -95,7 +85,7 @@ TEST_CASE("poses out of the crank's order are an order defect", "[motion_synthes
 }
 
 TEST_CASE("dyads sharing a point are no four-bar", "[motion_synthesis]") {
-  const FourBarGeometry g = HandPicked();
+  const FourBarGeometry g = test::HandPickedFourBar(0.3);
   const std::vector<Pose> poses = PosesOf(DesignedFourBar(g, "known"), {0, 40, 95});
   const MotionFourBar f = AnalyseMotionFourBar(poses, {g.a0, g.a}, {g.a0, g.b});  // A0 = B0
   CHECK_FALSE(f.passes);
@@ -115,7 +105,7 @@ TEST_CASE("the pairs of n dyads are n (n - 1), or half of them driven one way", 
 }
 
 TEST_CASE("every pair of dyads is accounted for, the known four-bar among the passing", "[motion_synthesis]") {
-  const FourBarGeometry g = HandPicked();
+  const FourBarGeometry g = test::HandPickedFourBar(0.3);
   const std::vector<Pose> poses = PosesOf(DesignedFourBar(g, "known"), {0, 40, 95});
   // the known dyads and a third whose circle point is the plane's origin, centre elsewhere
   const std::vector<Dyad> dyads = {{g.a0, g.a}, {g.b0, g.b}, {{1.5, -1.0}, g.plane_origin}};

@@ -9,6 +9,8 @@
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
 
+#include "hand_picked_four_bar.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -69,21 +71,11 @@ std::vector<Eigen::Vector2d> CurvePoints(const FourBarGeometry& g, int n) {
   return points;
 }
 
-FourBarGeometry HandPicked() {
-  FourBarGeometry g;
-  g.a0 = {0, 0};
-  g.a = {1, 0.2};
-  g.b = {3.1, 2.4};
-  g.b0 = {4, 0.3};
-  g.plane_origin = {2.2, 3.3};
-  return g;
-}
-
 }  // namespace
 
 TEST_CASE("path synthesis matches a crank-rocker that is not in the atlas to 1e-6", "[path]") {
   PathRequest r;
-  r.points = CurvePoints(HandPicked(), 24);
+  r.points = CurvePoints(test::HandPickedFourBar(0), 24);
   r.top = 3;
   const PathResult result = SynthesisePath(CiAtlas(), r);
   INFO(result.message);
@@ -120,7 +112,7 @@ TEST_CASE("a noisy query returns a linkage within the noise", "[path]") {
   std::normal_distribution<double> noise(0, 0.01);  // 1 % of the curve's size (about 1)
   PathRequest r;
   double noise_rms = 0;
-  for (const Eigen::Vector2d& p : CurvePoints(HandPicked(), 36)) {
+  for (const Eigen::Vector2d& p : CurvePoints(test::HandPickedFourBar(0), 36)) {
     const Eigen::Vector2d e(noise(rng), noise(rng));
     noise_rms += e.squaredNorm();
     r.points.push_back(p + e);
@@ -150,7 +142,7 @@ TEST_CASE("path requests without enough points are refused", "[path]") {
 TEST_CASE("path synthesis returns distinct designs and names the cognates", "[path]") {
   constexpr double kDistinct = 1e-6;  // far above the polish's agreement (1e-11 for exact points)
   PathRequest r;
-  r.points = CurvePoints(HandPicked(), 24);
+  r.points = CurvePoints(test::HandPickedFourBar(0), 24);
   r.top = 3;
   const PathResult result = SynthesisePath(CiAtlas(), r);
   REQUIRE(result.ok());
@@ -174,8 +166,8 @@ TEST_CASE("path synthesis returns distinct designs and names the cognates", "[pa
   // the original comes first; its cognate on B0 (a crank-rocker too) is named as such
   const PathLinkage& best = result.linkages.front();
   CHECK(best.cognate_of < 0);
-  CHECK((best.geometry.a0 - HandPicked().a0).norm() < kDistinct);
-  CHECK((best.geometry.b0 - HandPicked().b0).norm() < kDistinct);
+  CHECK((best.geometry.a0 - test::HandPickedFourBar(0).a0).norm() < kDistinct);
+  CHECK((best.geometry.b0 - test::HandPickedFourBar(0).b0).norm() < kDistinct);
   int named = 0;
   for (const PathLinkage& l : result.linkages) {
     if (l.cognate_of < 0) continue;
@@ -209,7 +201,7 @@ PathLinkage Linkage(const FourBarPose& p) {
 }  // namespace
 
 TEST_CASE("the same design: joints in order or reversed; a mirror image or a shifted joint is another", "[path]") {
-  const FourBarGeometry g = HandPicked();
+  const FourBarGeometry g = test::HandPickedFourBar(0);
   const FourBarPose original{g.a0, g.a, g.b, g.b0, g.plane_origin};
   const double tolerance = 1e-6;
   FourBarPose nudged = original;

@@ -7,7 +7,7 @@
 #include "input_file.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/core/limits.hpp"
-#include "koppel/solver/constraints.hpp"
+#include "koppel/core/transmission.hpp"
 #include "yaml_reader.hpp"
 
 #include <cctype>
@@ -421,27 +421,6 @@ class MechanismReader {
 };
 
 }  // namespace
-
-std::string Diagnostic::ToString() const {
-  std::string s = file;
-  if (line > 0) s += ":" + std::to_string(line) + (column > 0 ? ":" + std::to_string(column) : "");
-  s += ": " + message;
-  if (!path.empty()) s += " (" + path + ")";
-  return s;
-}
-
-static std::string JoinDiagnostics(const std::vector<Diagnostic>& diagnostics) {
-  std::string s;
-  // appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "" + temporary here
-  for (const Diagnostic& d : diagnostics) {
-    if (!s.empty()) s += '\n';
-    s += d.ToString();
-  }
-  return s;
-}
-
-InputError::InputError(std::vector<Diagnostic> diagnostics)
-    : std::runtime_error(JoinDiagnostics(diagnostics)), diagnostics_(std::move(diagnostics)) {}
 
 MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides) {
   return ParseMechanismNode(ParseYamlText(text, file_name), file_name, overrides);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "koppel/api/model.hpp"
+#include "koppel/catalog/mechanism_file.hpp"
 #include "koppel/solver/assembly.hpp"
 #include "koppel/solver/continuation.hpp"
 #include "koppel/solver/position.hpp"
@@ -35,6 +36,12 @@ struct Model::Impl {
   }
   PoseResult Pose(int order);
   void StartWalk(const Assembly& assembly, AtBranchPoint action);
+};
+
+// How the API's sources beyond model.cpp read a Model's file (the analyses of their own headers
+// take a `const Model&`); nothing outside tools/api sees it.
+struct ModelAccess {
+  static const MechanismFile& File(const Model& model) { return model.impl_->file; }
 };
 
 }  // namespace koppel

@@ -4,38 +4,17 @@
 #pragma once
 
 #include "koppel/catalog/card.hpp"
+#include "koppel/core/diagnostic.hpp"  // Diagnostic, InputError (every reader throws them)
 #include "koppel/core/expression.hpp"
 #include "koppel/core/loads.hpp"
 #include "koppel/core/mechanism.hpp"
 
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace koppel {
-
-// One problem in an input file. line and column are 1-based; 0 when unknown.
-struct Diagnostic {
-  std::string file;
-  int line = 0;
-  int column = 0;
-  std::string path;     // key path, e.g. "joints.A.links[1]"
-  std::string message;
-  // "mech.yaml:12:7: joint 'A' names unknown link 'crank2' (joints.A.links[1])"
-  std::string ToString() const;
-};
-
-// Thrown once per file (or per catalog) with every problem found.
-class InputError : public std::runtime_error {
- public:
-  explicit InputError(std::vector<Diagnostic> diagnostics);
-  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
-
- private:
-  std::vector<Diagnostic> diagnostics_;
-};
 
 // The default sweep of a file, in the drive's YAML units (degrees for an R drive).
 struct SweepDefaults {

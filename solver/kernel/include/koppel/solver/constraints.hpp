@@ -18,6 +18,7 @@
 
 #include "koppel/core/expected.hpp"
 #include "koppel/core/mechanism.hpp"
+#include "koppel/core/transmission.hpp"  // TransmissionGeometry
 #include "koppel/solver/taylor.hpp"
 
 #include <Eigen/Core>
@@ -26,21 +27,6 @@
 #include <vector>
 
 namespace koppel {
-
-// How the transmission angle of an output is measured: the coupler line runs from `coupler_from`
-// to `coupler_to` (the output joint's point on the coupler); the output joint point moves either
-// on a circle about `pivot` (a point of the output link pinned to the frame) or along the global
-// direction of `slide_joint`'s axis.
-struct TransmissionGeometry {
-  PointRef coupler_from;
-  PointRef coupler_to;
-  PointRef pivot;        // valid when the output link turns about a frame pivot
-  int slide_joint = -1;  // valid when the output link slides on the frame
-};
-
-// Resolves a kTransmissionAngle output; an error when the coupler is not binary or the output
-// link is not jointed directly to the frame.
-Expected<TransmissionGeometry> ResolveTransmission(const Mechanism& m, const Output& o);
 
 class ConstraintSystem {
  public:

@@ -20,7 +20,7 @@
 #include "koppel/analysis/status.hpp"
 #include "koppel/api/instant_geometry.hpp"
 #include "koppel/api/tolerance.hpp"
-#include "koppel/catalog/mechanism_file.hpp"  // InputError, Diagnostic
+#include "koppel/core/diagnostic.hpp"  // InputError, Diagnostic
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/singular.hpp"  // BranchPointAction
 
@@ -233,6 +233,7 @@ class Model {
 
  private:
   struct Impl;
+  friend struct ModelAccess;  // the API's own sources reach the file read (model_impl.hpp)
   explicit Model(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };

@@ -3,6 +3,7 @@
 // the gaps of the requested range, as stderr lines and as JSON.
 #pragma once
 
+#include "koppel/api/model.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/sweep.hpp"
 
@@ -30,5 +31,12 @@ void ReportSingularPoints(const std::string& file, const Mechanism& mechanism, c
 // inputs in the drive's display unit (deg or length).
 nlohmann::json SweepEventsJson(const Mechanism& mechanism, const SweepEvents& sweep);
 nlohmann::json SingularPointsJson(const Mechanism& mechanism, const std::vector<SingularPoint>& points);
+
+// The same from the API's record of a sweep (koppel/api/model.hpp: inputs in the model's units).
+std::string FormatInput(const Model& model, double shown);
+void ReportSweep(const std::string& file, const Model& model, const SweepRecord& sweep);
+void ReportSingularPoints(const std::string& file, const Model& model, const std::vector<SingularPosition>& points);
+nlohmann::json SweepEventsJson(const SweepRecord& sweep);
+nlohmann::json SingularPointsJson(const std::vector<SingularPosition>& points);
 
 }  // namespace koppel::cli

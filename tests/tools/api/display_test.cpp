@@ -69,6 +69,32 @@ TEST_CASE("singular points in the API's words and units", "[display]") {
   CHECK(s[0].action == "switch");
 }
 
+TEST_CASE("what a sweep met, in the API's units and statuses", "[display]") {
+  const Mechanism m = test::FourBar(1, 3, 2.5, 3.2, 1.5, 0.4, 1);
+  SweepEvents e;
+  e.status = SweepStatus::kPartial;
+  e.message = "beyond the branch";
+  e.notes = {"a note"};
+  e.gaps = {{kPi / 2, kPi}};
+  e.reached = {0, kPi / 2};
+  e.singular_inputs = {kPi / 4};
+  const SweepRecord r = api_detail::Shown(m, e);
+  CHECK(r.status == AnalysisStatus::kPartial);
+  CHECK_FALSE(r.complete());
+  CHECK(r.message == e.message);
+  CHECK(r.notes == e.notes);
+  REQUIRE(r.gaps.size() == 1);
+  CHECK_THAT(r.gaps[0].from, Catch::Matchers::WithinAbs(90.0, kRoundoff));
+  CHECK_THAT(r.gaps[0].to, Catch::Matchers::WithinAbs(180.0, kRoundoff));
+  CHECK_THAT(r.reached.to, Catch::Matchers::WithinAbs(90.0, kRoundoff));
+  REQUIRE(r.singular_inputs.size() == 1);
+  CHECK_THAT(r.singular_inputs[0], Catch::Matchers::WithinAbs(45.0, kRoundoff));
+  // a sweep that could not start is a failed analysis; a complete one is complete
+  CHECK(api_detail::FromSweep(SweepStatus::kNotAssemblable) == AnalysisStatus::kFailed);
+  CHECK(api_detail::FromSweep(SweepStatus::kInvalidOptions) == AnalysisStatus::kFailed);
+  CHECK(api_detail::FromSweep(SweepStatus::kComplete) == AnalysisStatus::kComplete);
+}
+
 TEST_CASE("bad input names the file and the field", "[display]") {
   try {
     api_detail::BadInput("m.yaml", "from", "must be finite");

@@ -81,6 +81,18 @@ TEST_CASE("Model::MoveTo: the 3rd-order transfer function equals a central diffe
   CHECK(std::isfinite(p.Get("s_d8")));
 }
 
+TEST_CASE("Model::Span: what is given, the file's sweep for what is not", "[api]") {
+  const Model m = Model::Load(test::TestDataPath("triple-rocker.yaml"));
+  const SweepSpan file = m.Span();
+  CHECK(file.from == m.sweep_from());
+  CHECK(file.to == m.sweep_to());
+  CHECK(file.step == m.sweep_step());
+  const SweepSpan given = m.Span(10.0, std::nullopt, 0.5);
+  CHECK(given.from == 10.0);
+  CHECK(given.to == m.sweep_to());
+  CHECK(given.step == 0.5);
+}
+
 TEST_CASE("Model::Set rebuilds from the file with the new value; a bad value leaves the model as it was", "[api]") {
   Model m = Model::Load(test::CatalogEntryPath("slider-crank-offset"));
   m.Set("e", 0.0);

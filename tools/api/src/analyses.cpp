@@ -34,15 +34,6 @@ SweepOptions Options(const Model& model, double from, double to, double step, in
   return options;
 }
 
-AnalysisStatus FromSweep(SweepStatus status) {
-  switch (status) {
-    case SweepStatus::kComplete: return AnalysisStatus::kComplete;
-    case SweepStatus::kPartial: return AnalysisStatus::kPartial;
-    case SweepStatus::kNotRun: return AnalysisStatus::kNotRun;
-    default: return AnalysisStatus::kFailed;
-  }
-}
-
 std::string Plural(size_t n, const std::string& word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
 
 }  // namespace

@@ -43,6 +43,27 @@ std::vector<InputGap> Shown(const Mechanism& m, const std::vector<InputInterval>
   return shown;
 }
 
+AnalysisStatus FromSweep(SweepStatus status) {
+  switch (status) {
+    case SweepStatus::kComplete: return AnalysisStatus::kComplete;
+    case SweepStatus::kPartial: return AnalysisStatus::kPartial;
+    case SweepStatus::kNotRun: return AnalysisStatus::kNotRun;
+    default: return AnalysisStatus::kFailed;
+  }
+}
+
+SweepRecord Shown(const Mechanism& m, const SweepEvents& events) {
+  SweepRecord r;
+  r.status = FromSweep(events.status);
+  r.message = events.message;
+  r.notes = events.notes;
+  r.singular_points = Shown(m, events.singular_points);
+  r.gaps = Shown(m, events.gaps);
+  r.reached = {InputShown(m, events.reached.from), InputShown(m, events.reached.to)};
+  for (double input : events.singular_inputs) r.singular_inputs.push_back(InputShown(m, input));
+  return r;
+}
+
 void BadInput(const std::string& file, const std::string& field, const std::string& message) {
   throw InputError({Diagnostic{file, 0, 0, field, message}});
 }

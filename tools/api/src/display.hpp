@@ -22,6 +22,11 @@ double InputInternal(const Mechanism& mechanism, double input);  // rad for an R
 std::vector<SingularPosition> Shown(const Mechanism& mechanism, const std::vector<SingularPoint>& points);
 std::vector<InputGap> Shown(const Mechanism& mechanism, const std::vector<InputInterval>& gaps);
 
+// The sweep's outcome: complete, partial (gaps), not run; failed for the rest.
+AnalysisStatus FromSweep(SweepStatus status);
+// What a sweep met, in the API's units.
+SweepRecord Shown(const Mechanism& mechanism, const SweepEvents& events);
+
 // InputError naming the model's file and `field`.
 [[noreturn]] void BadInput(const std::string& file, const std::string& field, const std::string& message);
 

@@ -128,6 +128,9 @@ bool Model::input_is_angle() const { return mechanism().InputIsAngle(); }
 double Model::sweep_from() const { return impl_->file.sweep.from; }
 double Model::sweep_to() const { return impl_->file.sweep.to; }
 double Model::sweep_step() const { return impl_->file.sweep.step; }
+SweepSpan Model::Span(std::optional<double> from, std::optional<double> to, std::optional<double> step) const {
+  return {from.value_or(sweep_from()), to.value_or(sweep_to()), step.value_or(sweep_step())};
+}
 
 std::vector<std::string> Model::output_names() const {
   std::vector<std::string> names;

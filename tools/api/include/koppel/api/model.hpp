@@ -49,6 +49,25 @@ struct InputGap {
   double from = 0, to = 0;
 };
 
+// What a sweep met on its way, without its rows: every analysis built on a sweep (a coupler
+// curve, dead centres, proportionality, forces) passes it on, so that the reader learns of the
+// singular points and gaps behind its numbers.
+struct SweepRecord {
+  AnalysisStatus status = AnalysisStatus::kNotRun;  // partial: some samples are beyond the branch
+  std::string message;                              // why samples are missing
+  std::vector<std::string> notes;
+  std::vector<SingularPosition> singular_points;
+  std::vector<InputGap> gaps;
+  InputGap reached;                     // the inputs the sweep reached [deg | length]
+  std::vector<double> singular_inputs;  // inputs of the samples at a singular pose [deg | length]
+  bool complete() const { return status == AnalysisStatus::kComplete; }
+};
+
+// A range of the drive's input, from..to by step [deg | length].
+struct SweepSpan {
+  double from = 0, to = 360, step = 1;
+};
+
 // The outputs and transfer functions at the samples of a sweep, laid out as `koppel analyze`:
 // the input, then per output y (y_x, y_y for a point) the columns y, y_d1, ..., y_d<order>, then
 // `singular` (1 where the pose is a singular position).
@@ -183,6 +202,9 @@ class Model {
   double sweep_from() const;
   double sweep_to() const;
   double sweep_step() const;
+  // The range a command sweeps: what is given, the file's sweep for what is not (the one rule
+  // of every --from/--to/--step) [deg | length].
+  SweepSpan Span(std::optional<double> from = {}, std::optional<double> to = {}, std::optional<double> step = {}) const;
 
   // Every parameter after evaluation, in file order.
   std::vector<std::pair<std::string, double>> parameters() const;

@@ -448,6 +448,12 @@ MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file
 }
 
 MechanismFile ReadMechanismFile(const std::string& name, const Overrides& overrides) {
+  std::string path;
+  const std::string text = ReadMechanismFileText(name, &path);
+  return ParseMechanismText(text, path, overrides);
+}
+
+std::string ReadMechanismFileText(const std::string& name, std::string* resolved) {
   const std::string path = ResolveMechanismName(name);
   std::string text;
   try {
@@ -461,7 +467,8 @@ MechanismFile ReadMechanismFile(const std::string& name, const Overrides& overri
     d.message += "; nor is it a catalog id: " + UnknownCatalogId(name, CatalogIds(directory), directory);
     throw InputError({d});
   }
-  return ParseMechanismText(text, path, overrides);
+  *resolved = path;
+  return text;
 }
 
 std::pair<std::string, std::string> ParseAssignment(const std::string& text) {

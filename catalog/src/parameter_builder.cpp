@@ -1,6 +1,5 @@
 #include "koppel/catalog/parameter_builder.hpp"
 
-#include "input_file.hpp"
 #include "mechanism_node.hpp"
 #include "yaml_reader.hpp"
 
@@ -35,10 +34,8 @@ MechanismBuilder ParameterBuilder(const std::string& text, const std::string& fi
   };
 }
 
-}  // namespace koppel
-
-namespace koppel {
-
-std::string MechanismFileText(const std::string& path) { return ReadInputText(path); }
+MechanismBuilder ParameterBuilder(const MechanismSource& source, const Overrides& overrides, const std::vector<std::string>& names) {
+  return ParameterBuilder(source.text(), source.path(), overrides, names);
+}
 
 }  // namespace koppel

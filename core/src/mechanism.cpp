@@ -182,4 +182,15 @@ Expected<PointRef> FindPointByText(const Mechanism& m, const std::string& text) 
   return Expected<PointRef>::Error("no point '" + text + "' (give a point output, link.point, or a point name)");
 }
 
+Expected<int> FindScalarOutput(const Mechanism& m, const std::string& name) {
+  std::string scalars;
+  for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
+    if (m.outputs[o].Components() != 1) continue;
+    if (name.empty() || m.outputs[o].name == name) return o;
+    scalars += (scalars.empty() ? "" : ", ") + m.outputs[o].name;
+  }
+  if (name.empty()) return Expected<int>::Error("the mechanism declares no scalar output (outputs: an angle or a distance, see README)");
+  return Expected<int>::Error("has no scalar output '" + name + "'" + (scalars.empty() ? "" : " (its scalar outputs: " + scalars + ")"));
+}
+
 }  // namespace koppel

@@ -173,3 +173,26 @@ TEST_CASE("the length scale is the largest body-frame point distance, without a 
 
 }  // namespace
 }  // namespace koppel::mechanism_test
+
+namespace koppel::mechanism_test {
+
+TEST_CASE("a scalar output by name; no name is the first scalar output", "[mechanism]") {
+  // the four-bar's outputs in file order: K (a point: two components), psi, phi, mu
+  const Mechanism m = test::FourBar(1, 3, 2.5, 3.2, 1.5, 0.4, 1);
+  const Expected<int> first = FindScalarOutput(m, "");
+  REQUIRE(first);
+  CHECK(m.outputs[*first].name == "psi");  // K is skipped: not scalar
+  const Expected<int> mu = FindScalarOutput(m, "mu");
+  REQUIRE(mu);
+  CHECK(*mu == m.FindOutput("mu"));
+  const Expected<int> point = FindScalarOutput(m, "K");
+  REQUIRE_FALSE(point);
+  CHECK(point.error() == "has no scalar output 'K' (its scalar outputs: psi, phi, mu)");
+  Mechanism bare = m;
+  bare.outputs.erase(bare.outputs.begin() + 1, bare.outputs.end());  // only the point K is left
+  const Expected<int> none = FindScalarOutput(bare, "");
+  REQUIRE_FALSE(none);
+  CHECK(none.error() == "the mechanism declares no scalar output (outputs: an angle or a distance, see README)");
+}
+
+}  // namespace koppel::mechanism_test

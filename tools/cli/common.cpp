@@ -166,15 +166,9 @@ PointRef ResolvePoint(const Mechanism& m, const std::string& text, const std::st
 }
 
 int ResolveScalarOutput(const Mechanism& m, const std::string& name, const std::string& flag, const std::string& path) {
-  std::string scalars;
-  for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
-    if (m.outputs[o].Components() != 1) continue;
-    if (name.empty() || m.outputs[o].name == name) return o;
-    scalars += (scalars.empty() ? "" : ", ") + m.outputs[o].name;
-  }
-  Complain(name.empty() ? path + ": the mechanism declares no scalar output (outputs: an angle or a distance, see README)"
-                        : flag + " " + name + ": " + path + " has no scalar output '" + name + "'" +
-                              (scalars.empty() ? "" : " (its scalar outputs: " + scalars + ")"));
+  const Expected<int> output = FindScalarOutput(m, name);  // the rule: koppel/core/mechanism.hpp
+  if (output) return *output;
+  Complain(name.empty() ? path + ": " + output.error() : flag + " " + name + ": " + path + " " + output.error());
   throw Exit{kExitBadInput};
 }
 

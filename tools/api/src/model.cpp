@@ -74,8 +74,7 @@ Model::Model(const Model& other) : impl_(std::make_unique<Impl>()) { *this = oth
 Model& Model::operator=(const Model& other) {
   if (this == &other) return *this;
   auto copy = std::make_unique<Impl>();
-  copy->source = other.impl_->source;
-  copy->text = other.impl_->text;
+  copy->source = other.impl_->source;  // immutable: shared
   copy->overrides = other.impl_->overrides;
   copy->file = other.impl_->file;  // the pose is not copied: the copy assembles anew
   copy->notes = other.impl_->notes;
@@ -83,24 +82,19 @@ Model& Model::operator=(const Model& other) {
   return *this;
 }
 
-Model Model::Load(const std::string& path, const ParameterValues& set) {
+Model Model::FromSource(MechanismSource source, const ParameterValues& set) {
   auto impl = std::make_unique<Impl>();
-  impl->source = Impl::Source::kFile;
+  impl->source = std::make_shared<const MechanismSource>(std::move(source));
   impl->overrides = set;
-  AdmittedFile admitted = ReadAdmittedMechanism(path, set);
-  impl->file = std::move(admitted.file);
-  impl->notes = std::move(admitted.notes);
+  impl->file = impl->source->Evaluate(set);
+  impl->notes = AdmitMechanism(impl->file);  // as ReadAdmittedMechanism
   return Model(std::move(impl));
 }
 
+Model Model::Load(const std::string& path, const ParameterValues& set) { return FromSource(MechanismSource::Read(path), set); }
+
 Model Model::Parse(const std::string& yaml, const std::string& name, const ParameterValues& set) {
-  auto impl = std::make_unique<Impl>();
-  impl->source = Impl::Source::kText;
-  impl->text = yaml;
-  impl->overrides = set;
-  impl->file = ParseMechanismText(yaml, name, set);
-  impl->notes = AdmitMechanism(impl->file);
-  return Model(std::move(impl));
+  return FromSource(MechanismSource::Parse(yaml, name), set);
 }
 
 Model Model::FromMechanism(const Mechanism& mechanism) {
@@ -147,13 +141,13 @@ bool Model::output_is_angle(const std::string& output) const {
 std::vector<std::pair<std::string, double>> Model::parameters() const { return impl_->file.parameters.Values(); }
 
 void Model::Set(const std::string& name, const std::string& formula) {
-  if (impl_->source == Impl::Source::kMechanism)
+  if (!impl_->source)
     BadInput(path(), "parameters." + name, "a mechanism built in code has no parameters to set");
   Overrides with = impl_->overrides;
   const auto same = [&](const auto& o) { return o.first == name; };
   with.erase(std::remove_if(with.begin(), with.end(), same), with.end());
   with.emplace_back(name, formula);
-  MechanismFile file = impl_->Read(with);  // throws InputError: nothing changed yet
+  MechanismFile file = impl_->source->Evaluate(with);  // throws InputError: nothing changed yet
   std::vector<std::string> notes = AdmitMechanism(file);
   impl_->Forget();
   impl_->file = std::move(file);

@@ -3,6 +3,7 @@
 
 #include "koppel/api/model.hpp"
 #include "koppel/catalog/mechanism_file.hpp"
+#include "koppel/catalog/mechanism_source.hpp"
 #include "koppel/solver/assembly.hpp"
 #include "koppel/solver/continuation.hpp"
 #include "koppel/solver/position.hpp"
@@ -12,13 +13,12 @@
 
 namespace koppel {
 
-// The file (or text) the model came from, so that Set can read it anew with every override, and
+// The parsed file (or text) the model came from, so that Set evaluates it anew with every
+// override without reading it again (null for a mechanism built in code; copies share it), and
 // the current pose: a solver and a walk on the mechanism, which both hold references into
 // `file`, so they are made again whenever the mechanism changes (and never copied).
 struct Model::Impl {
-  enum class Source { kFile, kText, kMechanism };
-  Source source = Source::kMechanism;
-  std::string text;  // kText
+  std::shared_ptr<const MechanismSource> source;
   Overrides overrides;
   MechanismFile file;
   std::vector<std::string> notes;  // AdmitMechanism's, for `file`
@@ -30,9 +30,6 @@ struct Model::Impl {
   void Forget() {
     walk.reset();
     solver.reset();
-  }
-  MechanismFile Read(const Overrides& with) const {
-    return source == Source::kFile ? ReadMechanismFile(file.path, with) : ParseMechanismText(text, file.path, with);
   }
   PoseResult Pose(int order);
   void StartWalk(const Assembly& assembly, AtBranchPoint action);

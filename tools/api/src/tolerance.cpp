@@ -155,15 +155,14 @@ ToleranceRowReport ToleranceRowShown(const ToleranceRow& row, double k, double i
 
 ToleranceResult Model::Tolerances(const ToleranceRequest& request) const {
   const Mechanism& m = mechanism();
-  if (impl_->source == Impl::Source::kMechanism) BadInput(path(), "tol", "a mechanism built in code has no parameters to tolerance");
+  if (!impl_->source) BadInput(path(), "tol", "a mechanism built in code has no parameters to tolerance");
   std::vector<std::string> names;
   std::vector<double> nominal;
   const ToleranceOptions o = CheckedToleranceOptions(*this, request, names, nominal);
   const int output = o.output;
 
-  // every sample reads the file's text again, without the catalog card (it does not make the mechanism)
-  const std::string text = MechanismTextWithoutCard(impl_->source == Impl::Source::kFile ? MechanismFileText(path()) : impl_->text, path());
-  const MechanismBuilder builder = ParameterBuilder(text, path(), impl_->overrides, names);
+  // every sample evaluates the parsed file anew, without the catalog card (it does not make the mechanism)
+  const MechanismBuilder builder = ParameterBuilder(impl_->source->WithoutCard(), impl_->overrides, names);
   const ToleranceReport report = AnalyseTolerances(builder, nominal, o);
 
   ToleranceResult out;

@@ -4,6 +4,7 @@
 
 #include "koppel/analysis/sensitivity.hpp"
 #include "koppel/catalog/mechanism_file.hpp"
+#include "koppel/catalog/mechanism_source.hpp"
 
 #include <string>
 #include <vector>
@@ -14,19 +15,14 @@ namespace koppel {
 // is a third to two thirds of a catalog entry). `text` must read without problems.
 std::string MechanismTextWithoutCard(const std::string& text, const std::string& file_name);
 
-// Reads `text` (a mechanism file named `file_name` in messages) again for every call, with
-// `overrides` and then `names[j]` set to values[j]; a parameter whose formula uses a changed one
-// follows it. The text is parsed once; every call reads its own deep copy, so the builder may run
-// on several threads at once. An InputError of the reader becomes the Expected's error.
+// Evaluates `source` for every call, with `overrides` and then `names[j]` set to values[j]; a
+// parameter whose formula uses a changed one follows it. The text is parsed once; every call
+// reads its own deep copy of the tree (which keeps no line numbers: errors are text here), so the
+// builder may run on several threads at once. An InputError of the reader becomes the Expected's
+// error.
+MechanismBuilder ParameterBuilder(const MechanismSource& source, const Overrides& overrides, const std::vector<std::string>& names);
+// The same for `text`, a mechanism file named `file_name` in messages.
 MechanismBuilder ParameterBuilder(const std::string& text, const std::string& file_name, const Overrides& overrides,
                                   const std::vector<std::string>& names);
-
-}  // namespace koppel
-
-namespace koppel {
-
-// The text of a mechanism file as the readers read it (the input limits apply); InputError when
-// it cannot be read.
-std::string MechanismFileText(const std::string& path);
 
 }  // namespace koppel

@@ -151,4 +151,9 @@ double LengthScale(const Mechanism& mechanism);
 // exactly one link. The error says which of these failed (or which links share the name).
 Expected<PointRef> FindPointByText(const Mechanism& mechanism, const std::string& text);
 
+// A scalar output (an angle or a distance: one component) by name; an empty name is the first
+// scalar output, the default of every command that reads one output. The error names the
+// mechanism's scalar outputs.
+Expected<int> FindScalarOutput(const Mechanism& mechanism, const std::string& name);
+
 }  // namespace koppel

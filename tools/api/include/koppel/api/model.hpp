@@ -166,6 +166,8 @@ using AtBranchPoint = BranchPointAction;
 // module's at_branch_point= both read it here.
 AtBranchPoint ParseAtBranchPoint(const std::string& word);
 
+class MechanismSource;  // koppel/catalog/mechanism_source.hpp: the parsed file, private to the API
+
 class Model {
  public:
   // Reads a mechanism file, or the catalog entry when `path` is no file but a catalog id
@@ -255,6 +257,7 @@ class Model {
 
  private:
   struct Impl;
+  static Model FromSource(MechanismSource source, const ParameterValues& set);
   friend struct ModelAccess;  // the API's own sources reach the file read (model_impl.hpp)
   explicit Model(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;

@@ -1,0 +1,37 @@
+// A mechanism file read once, evaluated with any parameter overrides without reading the file
+// again: what a koppel::Model keeps to re-evaluate its parameters (Model::Set, a tolerance's
+// samples) and shares between its copies. Each evaluation parses the kept text anew, so every
+// problem keeps its line and column (a copied YAML tree loses them).
+#pragma once
+
+#include "koppel/catalog/mechanism_file.hpp"
+
+#include <memory>
+#include <string>
+
+namespace koppel {
+
+class MechanismSource {
+ public:
+  // The file `name`, or the catalog entry when it is no file but a catalog id (as
+  // ReadMechanismFile). InputError when it does not read or is not YAML.
+  static MechanismSource Read(const std::string& name);
+  // The text of a mechanism file; `file_name` stands for the file in messages.
+  static MechanismSource Parse(const std::string& text, const std::string& file_name);
+
+  // The mechanism with `overrides` (NAME -> formula) in place of the parameters' formulas: the
+  // same as ReadMechanismFile(path(), overrides). InputError for what does not evaluate or check.
+  MechanismFile Evaluate(const Overrides& overrides = {}) const;
+  const std::string& path() const { return path_; }
+  const std::string& text() const { return *text_; }
+  // The same without the file's `catalog` card (the card does not make the mechanism and is a
+  // third to two thirds of a catalog entry: a tolerance analysis evaluates thousands of times).
+  MechanismSource WithoutCard() const;
+
+ private:
+  MechanismSource(std::shared_ptr<const std::string> text, std::string path);
+  std::shared_ptr<const std::string> text_;  // never changed once read: copies share it
+  std::string path_;
+};
+
+}  // namespace koppel

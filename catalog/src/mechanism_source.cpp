@@ -1,0 +1,32 @@
+#include "koppel/catalog/mechanism_source.hpp"
+
+#include "koppel/catalog/parameter_builder.hpp"  // MechanismTextWithoutCard
+
+#include "mechanism_node.hpp"
+#include "yaml_reader.hpp"
+
+#include <utility>
+
+namespace koppel {
+
+MechanismSource::MechanismSource(std::shared_ptr<const std::string> text, std::string path)
+    : text_(std::move(text)), path_(std::move(path)) {}
+
+MechanismSource MechanismSource::Read(const std::string& name) {
+  std::string path;
+  std::string text = ReadMechanismFileText(name, &path);
+  return Parse(text, path);
+}
+
+MechanismSource MechanismSource::Parse(const std::string& text, const std::string& file_name) {
+  ParseYamlText(text, file_name);  // text that is no YAML is refused here, not at every evaluation
+  return MechanismSource(std::make_shared<const std::string>(text), file_name);
+}
+
+MechanismFile MechanismSource::Evaluate(const Overrides& overrides) const { return ParseMechanismText(*text_, path_, overrides); }
+
+MechanismSource MechanismSource::WithoutCard() const {
+  return MechanismSource(std::make_shared<const std::string>(MechanismTextWithoutCard(*text_, path_)), path_);
+}
+
+}  // namespace koppel

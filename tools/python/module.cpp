@@ -279,13 +279,27 @@ void BindResults(py::module_& m) {
   BindRanges(m);
 }
 
+// The Python Mechanism: an immutable koppel::Model with the Workspace of its pose beside it (the
+// workspace keeps the model); set() takes the model with the new value and forgets the pose.
+struct PyMechanism {
+  explicit PyMechanism(Model model) : pose(std::move(model)) {}
+  const Model& model() const { return pose.model(); }
+  Workspace pose;
+};
+
+// A Model's method as a method of the Python Mechanism.
+template <class R>
+auto Of(R (Model::*method)() const) {
+  return [method](const PyMechanism& self) { return (self.model().*method)(); };
+}
+
 py::object Designed(const Design& d) {
   py::dict r;
   r["status"] = ToString(d.status);
   r["ok"] = d.ok();
   r["message"] = d.message;
   r["figures"] = Figures(d);
-  r["mechanism"] = d.model ? py::cast(*d.model) : py::none();
+  r["mechanism"] = d.model ? py::cast(PyMechanism(*d.model)) : py::none();
   return r;
 }
 
@@ -302,49 +316,50 @@ py::dict DesignList(const Designs& r) {
 }
 
 // Mechanism: reading it, its names and parameters.
-void BindModelFile(py::class_<Model>& c) {
-  c.def_static("load", [](const std::string& path, std::optional<py::dict> set) { return Model::Load(path, Overrides(set)); },
+void BindModelFile(py::class_<PyMechanism>& c) {
+  c.def_static("load", [](const std::string& path, std::optional<py::dict> set) { return PyMechanism(Model::Load(path, Overrides(set))); },
                   py::arg("path"), py::kw_only(), py::arg("set") = py::none(),
                   "Reads a mechanism file, or the catalog's entry when path is no file but a catalog id ('crank-rocker');\n"
                   "set={'e': 0.8} overrides parameters (numbers or formulas). Raises koppel.InputError, also for a\n"
                   "mechanism whose mobility is not 1 (one drive), as every koppel command refuses it.")
       .def_static("parse",
                   [](const std::string& text, const std::string& name, std::optional<py::dict> set) {
-                    return Model::Parse(text, name, Overrides(set));
+                    return PyMechanism(Model::Parse(text, name, Overrides(set)));
                   },
                   py::arg("text"), py::arg("name") = "<string>", py::kw_only(), py::arg("set") = py::none(),
                   "The same from the text of a mechanism file; name stands for the file in messages.")
-      .def_property_readonly("name", &Model::name)
-      .def_property_readonly("title", &Model::title)
-      .def_property_readonly("path", &Model::path)
-      .def_property_readonly("notes", &Model::notes, "What admitting the mechanism noted (an overconstrained linkage that moves).")
-      .def_property_readonly("input_name", &Model::input_name)
-      .def_property_readonly("input_is_angle", &Model::input_is_angle)
-      .def_property_readonly("outputs", &Model::output_names)
-      .def_property_readonly("parameters", [](const Model& model) {
+      .def_property_readonly("name", Of(&Model::name))
+      .def_property_readonly("title", Of(&Model::title))
+      .def_property_readonly("path", Of(&Model::path))
+      .def_property_readonly("notes", Of(&Model::notes), "What admitting the mechanism noted (an overconstrained linkage that moves).")
+      .def_property_readonly("input_name", Of(&Model::input_name))
+      .def_property_readonly("input_is_angle", Of(&Model::input_is_angle))
+      .def_property_readonly("outputs", Of(&Model::output_names))
+      .def_property_readonly("parameters", [](const PyMechanism& self) {
         py::dict d;
-        for (const auto& [name, value] : model.parameters()) d[py::str(name)] = value;
+        for (const auto& [name, value] : self.model().parameters()) d[py::str(name)] = value;
         return d;
       }, "{name: value} after evaluation, in file order")
-      .def("set", [](Model& model, const std::string& name, const py::object& value) {
-        if (py::isinstance<py::str>(value)) model.Set(name, value.cast<std::string>());
-        else model.Set(name, value.cast<double>());
+      .def("set", [](PyMechanism& self, const std::string& name, const py::object& value) {
+        // the model is immutable: this Mechanism takes the model with the new value (Model::With)
+        self.pose = Workspace(py::isinstance<py::str>(value) ? self.model().With(name, value.cast<std::string>())
+                                                           : self.model().With(name, value.cast<double>()));
       }, py::arg("name"), py::arg("value"), "Overrides one parameter (number or formula); the pose is forgotten.");
 }
 
 // Mechanism: its pose and the sweep of the drive.
-void BindModelMotion(py::class_<Model>& c) {
-  c.def("assemble", &Model::Assemble, py::arg("order") = 2, "Assembles at the file's hint: the current pose (a Pose).")
+void BindModelMotion(py::class_<PyMechanism>& c) {
+  c.def("assemble", [](PyMechanism& self, int order) { return self.pose.Assemble(order); }, py::arg("order") = 2, "Assembles at the file's hint: the current pose (a Pose).")
       .def("move_to",
-           [](Model& model, double input, int order, const std::string& at) { return model.MoveTo(input, order, ParseAtBranchPoint(at)); },
+           [](PyMechanism& self, double input, int order, const std::string& at) { return self.pose.MoveTo(input, order, ParseAtBranchPoint(at)); },
            py::arg("input"), py::arg("order") = 2, py::arg("at_branch_point") = "continue",
            "Drives along the branch to `input`; a failed Pose when a limit point lies between (it stays there).")
-      .def_property_readonly("assembled", &Model::assembled)
+      .def_property_readonly("assembled", [](const PyMechanism& self) { return self.pose.assembled(); })
       .def("sweep",
-           [](const Model& model, std::optional<double> start, std::optional<double> stop, std::optional<double> step, int order,
+           [](const PyMechanism& self, std::optional<double> start, std::optional<double> stop, std::optional<double> step, int order,
               const std::string& at) {
-             return model.Sweep(start.value_or(model.sweep_from()), stop.value_or(model.sweep_to()),
-                                step.value_or(model.sweep_step()), order, ParseAtBranchPoint(at));
+             const SweepSpan span = self.model().Span(start, stop, step);  // the file's sweep for what is not given
+             return self.model().Sweep(span.from, span.to, span.step, order, ParseAtBranchPoint(at));
            },
            py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(), py::kw_only(),
            py::arg("order") = 2, py::arg("at_branch_point") = "continue",
@@ -353,28 +368,29 @@ void BindModelMotion(py::class_<Model>& c) {
 }
 
 // Mechanism: what is read off it (dead centres, ranges, singular positions, curvature, poles, centrodes).
-void BindModelAnalyses(py::class_<Model>& c) {
+void BindModelAnalyses(py::class_<PyMechanism>& c) {
   c.def("dead_centres",
-           [](const Model& model, const std::string& output, std::optional<double> start, std::optional<double> stop,
-              std::optional<double> step) { return model.FindDeadCentres(output, start, stop, step); },
+           [](const PyMechanism& self, const std::string& output, std::optional<double> start, std::optional<double> stop,
+              std::optional<double> step) { return self.model().FindDeadCentres(output, start, stop, step); },
            py::arg("output") = "", py::arg("start") = py::none(), py::arg("stop") = py::none(), py::arg("step") = py::none(),
            "Dead centres of a scalar output (default: the first) over the file's sweep, searched in steps of 1.")
       .def("range",
-           [](const Model& model, bool all_branches, const std::string& at) { return model.DrivableRanges(all_branches, ParseAtBranchPoint(at)); },
+           [](const PyMechanism& self, bool all_branches, const std::string& at) { return self.model().DrivableRanges(all_branches, ParseAtBranchPoint(at)); },
            py::kw_only(), py::arg("all_branches") = false, py::arg("at_branch_point") = "continue",
            "Drivable ranges of the hint's branch (or of every branch koppel finds).")
-      .def("singular_positions", [](const Model& model) { return SingularList(model.SingularPositions()); },
+      .def("singular_positions", [](const PyMechanism& self) { return SingularList(self.model().SingularPositions()); },
            "Singular positions a sweep over the file's range meets.")
-      .def("curvature", [](const Model& model, const std::string& point, double at) { return CurvatureDict(model.Curvature(point, at)); },
+      .def("curvature", [](const PyMechanism& self, const std::string& point, double at) { return CurvatureDict(self.model().Curvature(point, at)); },
            py::arg("point"), py::kw_only(), py::arg("at"),
            "koppel curvature: pole, pole_direction, inflection circle, Ball point, and the point's curvature, rho and centre "
            "at input `at`, as a dict of the CLI's names (None where a quantity does not exist here).")
-      .def("poles", [](const Model& model, double at) { return PolesDict(model.Poles(at)); }, py::kw_only(), py::arg("at"),
+      .def("poles", [](const PyMechanism& self, double at) { return PolesDict(self.model().Poles(at)); }, py::kw_only(), py::arg("at"),
            "koppel poles: the instant centres of every pair of links at input `at`.")
       .def("centrodes",
-           [](const Model& model, const std::string& link, const std::string& reference, std::optional<double> start,
+           [](const PyMechanism& self, const std::string& link, const std::string& reference, std::optional<double> start,
               std::optional<double> stop, double step, double at) {
-             const CentrodesReport r = model.Centrodes(link, reference, start.value_or(model.sweep_from()), stop.value_or(model.sweep_to()), step, at);
+             const SweepSpan span = self.model().Span(start, stop, step);
+             const CentrodesReport r = self.model().Centrodes(link, reference, span.from, span.to, span.step, at);
              py::dict d;
              d["status"] = ToString(r.status);
              d["message"] = r.message;
@@ -391,9 +407,9 @@ void BindModelAnalyses(py::class_<Model>& c) {
 }
 
 // Mechanism: tolerances, cognates, its file text.
-void BindModelTolerances(py::class_<Model>& c) {
+void BindModelTolerances(py::class_<PyMechanism>& c) {
   c.def("tolerance",
-           [](const Model& model, const std::string& output, const std::vector<double>& inputs, const std::map<std::string, double>& tol,
+           [](const PyMechanism& self, const std::string& output, const std::vector<double>& inputs, const std::map<std::string, double>& tol,
               const std::map<std::string, double>& clearance, long samples, std::uint64_t seed, const std::string& distribution, int threads) {
              ToleranceRequest request;
              request.output = output;
@@ -407,7 +423,7 @@ void BindModelTolerances(py::class_<Model>& c) {
              ToleranceResult r;
              {
                py::gil_scoped_release release;
-               r = model.Tolerances(request);
+               r = self.model().Tolerances(request);
              }
              return ToleranceDict(r);
            },
@@ -416,13 +432,13 @@ void BindModelTolerances(py::class_<Model>& c) {
            py::arg("distribution") = "uniform", py::arg("threads") = 0,
            "koppel tolerance: exact sensitivities, worst case, rss, shares, clearance and a seeded Monte Carlo run of `output` "
            "at each input; rows are dicts with the CLI's column names.")
-      .def("_cognates", [](const Model& model, const std::string& point) { return DesignList(FindCognates(model, point)); })
-      .def("to_yaml", &Model::ToYaml, "The mechanism as a mechanism file.")
-      .def("__repr__", [](const Model& model) { return "<koppel.Mechanism '" + model.name() + "' from " + model.path() + ">"; });
+      .def("_cognates", [](const PyMechanism& self, const std::string& point) { return DesignList(FindCognates(self.model(), point)); })
+      .def("to_yaml", Of(&Model::ToYaml), "The mechanism as a mechanism file.")
+      .def("__repr__", [](const PyMechanism& self) { return "<koppel.Mechanism '" + self.model().name() + "' from " + self.model().path() + ">"; });
 }
 
 void BindModel(py::module_& m) {
-  py::class_<Model> c(m, "Mechanism",
+  py::class_<PyMechanism> c(m, "Mechanism",
                       "A mechanism from a mechanism file, with its parameters and a current pose. Inputs in degrees (R drive) "
                       "or length (P drive); angle outputs in degrees; transfer functions per radian of the input.");
   BindModelFile(c);
@@ -443,7 +459,7 @@ void BindCatalog(py::module_& m) {
       .def_readonly("joints", &CatalogHit::joints)
       .def_readonly("revolute", &CatalogHit::revolute)
       .def_readonly("prismatic", &CatalogHit::prismatic)
-      .def("load", [](const CatalogHit& h, std::optional<py::dict> set) { return h.Load(Overrides(set)); }, py::kw_only(),
+      .def("load", [](const CatalogHit& h, std::optional<py::dict> set) { return PyMechanism(h.Load(Overrides(set))); }, py::kw_only(),
            py::arg("set") = py::none())
       .def("__repr__", [](const CatalogHit& h) { return "<koppel.CatalogEntry '" + h.id + "'>"; });
   m.def("_catalog_find", [](const py::dict& counts, const std::string& kind, const std::string& klass, const std::string& motion,

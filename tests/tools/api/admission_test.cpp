@@ -62,21 +62,21 @@ TEST_CASE("an overconstrained linkage that moves is admitted with a note; a four
   CHECK(Model::Load(test::CatalogEntryPath("crank-rocker")).notes().empty());
 }
 
-TEST_CASE("Model::Set admits the mechanism anew and leaves the model as it was when refused", "[api][admission]") {
+TEST_CASE("Model::With admits the mechanism anew; a refused value leaves the model as it was", "[api][admission]") {
   // the redundant parallelogram with its third crank's length as a parameter: at e = 1 (the
   // crank's length) it moves; at e = 1.2 the coupler point E, which circles E0 at radius 1 while
   // the coupler translates, can never be 1.2 from E0, and the count of 0 stands
   std::string text = Text(test::TestDataPath("redundant-parallelogram.yaml"));
   text.replace(text.find("links:"), 6, "parameters: {e: 1}\nlinks:");
   text.replace(text.find("E: [1, 0]"), 9, "E: [e, 0]");
-  Model m = Model::Parse(text, "third-crank.yaml");
+  const Model m = Model::Parse(text, "third-crank.yaml");
   REQUIRE(m.notes().size() == 1);
-  const Diagnostic d = Refusal([&] { m.Set("e", "1.2"); });
+  const Diagnostic d = Refusal([&] { (void)m.With("e", "1.2"); });
   CHECK(d.path == "drive");
   CHECK_THAT(d.message, Catch::Contains("mobility 0"));
   CHECK(m.parameters() == std::vector<std::pair<std::string, double>>{{"e", 1.0}});
   CHECK(m.notes().size() == 1);
-  REQUIRE_NOTHROW(m.Set("e", "2/2"));
+  REQUIRE_NOTHROW(m.With("e", "2/2"));
 }
 
 }  // namespace admission_test

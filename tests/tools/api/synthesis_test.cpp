@@ -2,6 +2,7 @@
 // through the API itself (its model's dead centres give back the request), a malformed request
 // throws InputError, an impossible one is a status.
 #include "koppel/api/synthesis.hpp"
+#include "koppel/api/workspace.hpp"
 #include "koppel/core/angles.hpp"
 #include "support/temp_file.hpp"
 
@@ -96,7 +97,7 @@ TEST_CASE("SynthesiseMzc: six-point contact of K's path, and a model that assemb
   CHECK(d.Get("contact_points") >= 6);
   // sin^2 phi0 = (1 + 2 lambda)/4 (seed 003)
   CHECK_THAT(std::pow(std::sin(DegToRad(d.Get("phi0"))), 2), WithinAbs((1 + 2 * 5.0 / 6.0) / 4, kSeedRoundoff));
-  Model m = *d.model;
+  Workspace m(*d.model);
   CHECK(m.Assemble().status == AnalysisStatus::kComplete);
 }
 
@@ -115,7 +116,7 @@ TEST_CASE("SynthesiseFunction: the classic log10 four-bar meets the function at 
   CHECK(d.Get("error_at_precision") < 1e-7);  // exact through 3 points, measured by the solver
   // Chebyshev points of [1, 10]: at the middle one, x = 5.5, the crank stands at 45 deg and the
   // rocker must read 105 + 90 log10(5.5) deg
-  Model m = *d.model;
+  Workspace m(*d.model);
   const PoseResult p = m.MoveTo(45);
   REQUIRE(p.status == AnalysisStatus::kComplete);
   CHECK_THAT(std::remainder(p.Get("psi") - (105 + 90 * std::log10(5.5)), 360.0), WithinAbs(0, kReanalysedDeg));
@@ -136,7 +137,7 @@ TEST_CASE("SynthesiseFit: the fitted model reads the targets back; a fit that mi
   REQUIRE(d.model);
   // the re-analysis: the model (the problem's mechanism file with the fitted values) driven to
   // each target's input shows the target's direction
-  Model m = *d.model;
+  Workspace m(*d.model);
   for (const auto& [input, direction] : {std::pair{100.0, 153.0}, {225.0, 202.0}, {270.0, 223.0}}) {
     const PoseResult p = m.MoveTo(input);
     REQUIRE(p.status == AnalysisStatus::kComplete);
@@ -171,7 +172,7 @@ TEST_CASE("SynthesiseMotion: five poses of a known crank-rocker give it back, an
     // a branch defect (reported, never hidden) means driving does not reach every pose on one branch
     if (d.Get("branch_defect") != 0) continue;
     // the re-analysis through the API: driven to each pose's crank angle, the model's P and theta are the pose
-    Model m = *d.model;
+    Workspace m(*d.model);
     for (size_t i = 0; i < spec.poses.size(); ++i) {
       const PoseResult p = m.MoveTo(d.Get("pose" + std::to_string(i + 1) + "_input"));
       REQUIRE(p.status == AnalysisStatus::kComplete);

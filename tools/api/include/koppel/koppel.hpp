@@ -10,6 +10,7 @@
 #include "koppel/api/model.hpp"
 #include "koppel/api/sweep_layout.hpp"
 #include "koppel/api/synthesis.hpp"
+#include "koppel/api/workspace.hpp"
 #include "koppel/core/version.hpp"
 
 namespace koppel {

@@ -14,7 +14,9 @@
 // (AnalysisStatus: not run, complete, partial, failed), a message and Brief(). A value that
 // cannot be computed (a transfer function above the order a singular pose allows) is NaN, and
 // the row's valid_order says so; no other NaN is ever returned.
-// A Model is not safe for concurrent use; copies are independent.
+// A Model is immutable: no method changes it (With gives a new one), so it may be shared between
+// threads, and copies share its file. A pose and the walk that moves it live beside it, in a
+// Workspace (koppel/api/workspace.hpp).
 #pragma once
 
 #include "koppel/analysis/status.hpp"
@@ -181,10 +183,10 @@ class Model {
   // Throws InputError when the mechanism is not consistent (CheckConsistency).
   static Model FromMechanism(const Mechanism& mechanism);
 
-  Model(const Model& other);
-  Model& operator=(const Model& other);
-  Model(Model&&) noexcept;
-  Model& operator=(Model&&) noexcept;
+  Model(const Model&) = default;
+  Model& operator=(const Model&) = default;
+  Model(Model&&) noexcept = default;
+  Model& operator=(Model&&) noexcept = default;
   ~Model();
 
   const std::string& name() const;    // the file's `name`
@@ -210,20 +212,11 @@ class Model {
 
   // Every parameter after evaluation, in file order.
   std::vector<std::pair<std::string, double>> parameters() const;
-  // Overrides one parameter (a formula over the others) and rebuilds the mechanism from the
-  // file's text with every override so far; the pose is forgotten. InputError (model unchanged)
-  // for an unknown name, a mechanism that no longer reads or that is no longer admitted.
-  void Set(const std::string& name, const std::string& formula);
-  void Set(const std::string& name, double value);
-
-  // Assembles at the file's assembly hint and makes that the current pose; transfer functions up
-  // to `order` (0..8).
-  PoseResult Assemble(int order = 2);
-  // Drives from the current pose (assembling first if there is none) along its branch to `input`
-  // [deg | length]: through branch points as `at_branch_point` says, never past a limit point.
-  // On failure the pose stays where the walk ended and the status is failed.
-  PoseResult MoveTo(double input, int order = 2, AtBranchPoint at_branch_point = AtBranchPoint::kContinue);
-  bool assembled() const;
+  // The model with one parameter overridden (a formula over the others) on top of every override
+  // so far: the file read once is evaluated anew (not read again). InputError for an unknown
+  // name, a mechanism that no longer reads or that is no longer admitted.
+  Model With(const std::string& name, const std::string& formula) const;
+  Model With(const std::string& name, double value) const;
 
   // The sweep of `koppel analyze`: from the assembly outward along the hint's branch.
   SweepTable Sweep(double from, double to, double step, int order = 2, AtBranchPoint at_branch_point = AtBranchPoint::kContinue) const;
@@ -259,8 +252,8 @@ class Model {
   struct Impl;
   static Model FromSource(MechanismSource source, const ParameterValues& set);
   friend struct ModelAccess;  // the API's own sources reach the file read (model_impl.hpp)
-  explicit Model(std::unique_ptr<Impl> impl);
-  std::unique_ptr<Impl> impl_;
+  explicit Model(std::shared_ptr<const Impl> impl);
+  std::shared_ptr<const Impl> impl_;  // never changed once made: copies share it
 };
 
 }  // namespace koppel

@@ -9,6 +9,7 @@
 #include "koppel/api/catalog.hpp"
 #include "koppel/api/model.hpp"
 #include "koppel/api/proportionality.hpp"
+#include "koppel/api/simulation.hpp"
 #include "koppel/api/sweep_layout.hpp"
 #include "koppel/api/synthesis.hpp"
 #include "koppel/core/version.hpp"

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "koppel/api/catalog.hpp"
+#include "koppel/api/fit.hpp"
 #include "koppel/api/model.hpp"
 #include "koppel/api/proportionality.hpp"
 #include "koppel/api/simulation.hpp"

@@ -7,10 +7,9 @@
 
 #include "koppel/api/simulation.hpp"
 
-#include <fmt/core.h>
-
 #include <filesystem>
 #include <sstream>
+#include <tuple>
 
 namespace koppel::cli {
 namespace simulate_command {  // this file's own names, apart from the other commands' in a unity build

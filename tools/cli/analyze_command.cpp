@@ -1,13 +1,14 @@
 // koppel analyze: a sweep of the drive with every declared output and its transfer functions.
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 #include "sweep_report.hpp"
 
-#include "koppel/api/sweep_layout.hpp"
-#include "koppel/core/angles.hpp"
-#include "koppel/solver/sweep.hpp"
+#include "koppel/api/model.hpp"
 
 #include <fmt/core.h>
+
+#include <cmath>
 
 namespace koppel::cli {
 namespace analyze_command {  // this file's own names, apart from the other commands' in a unity build
@@ -22,94 +23,96 @@ struct AnalyzeArgs {
   int order = 2;
 };
 
-// The table of a sweep (koppel/api/sweep_layout.hpp): the input, every output's derivatives
-// 0..order, and the singular flag. A transfer function that cannot be computed at a row (above
-// the row's valid order, or not defined there: an output that is not differentiable) is empty in
-// CSV and null in JSON, never a number.
-std::string ToCsv(const Mechanism& m, const SweepColumns& t, const SweepResult& r) {
-  std::string out;
-  out.reserve(r.inputs.size() * (r.outputs.cols() + 2) * 16);  // about 16 characters a number
-  for (size_t c = 0; c < t.names.size(); ++c) out += (c ? "," : "") + t.names[c];
+// The table of a sweep (koppel/api/model.hpp, SweepTable), written row by row as the API makes
+// the rows: the input, every output's derivatives 0..order, and the singular flag. A transfer
+// function that cannot be computed at a row (above the row's valid order, or not defined there:
+// an output that is not differentiable) is NaN in the table: empty in CSV, null in JSON, never a number.
+void AppendCsvHeader(std::string& out, const SweepTable& t) {
+  const size_t width = t.columns.size();
+  out.reserve(static_cast<size_t>(t.rows) * (width + 1) * 16);  // about 16 characters a number
+  for (size_t c = 0; c < width; ++c) out += (c ? "," : "") + t.columns[c];
   out += "\n";
-  for (size_t i = 0; i < r.inputs.size(); ++i) {
-    AppendNumber(out, m.InputIsAngle() ? RadToDeg(r.inputs[i]) : r.inputs[i]);
-    for (int c = 0; c < r.outputs.cols(); ++c) {
-      const double v = r.outputs(i, c);
-      out += ',';
-      if (t.order_of_column[c + 1] <= r.valid_order[i] && r.Defined(static_cast<int>(i), c))
-        AppendNumber(out, t.angle_value[c + 1] ? RadToDeg(v) : v);
-    }
-    out += r.singular[i] ? ",1\n" : ",0\n";
-  }
-  return out;
 }
 
-nlohmann::json ToJson(const Mechanism& m, const SweepColumns& t, const SweepResult& r) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (size_t i = 0; i < r.inputs.size(); ++i) {
-    nlohmann::json row = nlohmann::json::array();
-    row.push_back(m.InputIsAngle() ? RadToDeg(r.inputs[i]) : r.inputs[i]);
-    for (int c = 0; c < r.outputs.cols(); ++c) {
-      const double v = t.angle_value[c + 1] ? RadToDeg(r.outputs(i, c)) : r.outputs(i, c);
-      FormatNumber(v);  // the same refusal of non-finite numbers as CSV
-      if (t.order_of_column[c + 1] <= r.valid_order[i] && r.Defined(static_cast<int>(i), c)) {
-        row.push_back(v);
-      } else {
-        row.push_back(nullptr);
-      }
-    }
-    row.push_back(static_cast<int>(r.singular[i]));
-    rows.push_back(row);
+void AppendCsvRow(std::string& out, const SweepTable& t, const double* row) {
+  const size_t width = t.columns.size();
+  AppendNumber(out, row[0]);
+  for (size_t c = 1; c + 1 < width; ++c) {
+    out += ',';
+    if (!std::isnan(row[c])) AppendNumber(out, row[c]);
   }
-  return {{"columns", t.names}, {"units", t.units}, {"rows", rows}};
+  out += row[width - 1] != 0 ? ",1\n" : ",0\n";
+}
+
+nlohmann::json JsonRow(const SweepTable& t, const double* values) {
+  const size_t width = t.columns.size();
+  nlohmann::json row = nlohmann::json::array();
+  row.push_back(values[0]);
+  for (size_t c = 1; c + 1 < width; ++c) {
+    if (std::isnan(values[c])) {
+      row.push_back(nullptr);
+    } else {
+      FormatNumber(values[c]);  // the same refusal of non-finite numbers as CSV
+      row.push_back(values[c]);
+    }
+  }
+  row.push_back(values[width - 1] != 0 ? 1 : 0);
+  return row;
+}
+
+// The range from the flags, the file's sweep for what is not given (Model::Span), checked with
+// the flags' names before anything is allocated.
+SweepSpan SpanOf(const AnalyzeArgs& args, const Model& model) {
+  auto flag = [](const char* name, const std::string& text) {
+    return text.empty() ? std::optional<double>{} : ParseNumberFlag(name, text);
+  };
+  const SweepSpan span = model.Span(flag("--from", args.from), flag("--to", args.to), flag("--step", args.step));
+  CheckSampleCount(span.from, span.to, span.step, "--from/--to/--step");
+  if (args.order < 0 || args.order > kMaxTransferOrder) {
+    Complain("--from/--to/--step/--order: the order must lie between 0 and " + std::to_string(kMaxTransferOrder));
+    throw Exit{kExitBadInput};
+  }
+  return span;
 }
 
 void RunAnalyze(const AnalyzeArgs& args) {
   CheckFormat(args.format);
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const Mechanism& m = file.mechanism;
-  const bool angle_input = m.InputIsAngle();
-  // The YAML and the command line give the input in degrees (R drive) or lengths (P drive).
-  auto to_internal = [&](double v) { return angle_input ? DegToRad(v) : v; };
-  const double from = args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from);
-  const double to = args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to);
-  const double step = args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step);
-  CheckSampleCount(from, to, step, "--from/--to/--step");
-
-  SweepOptions options;
-  options.from = to_internal(from);
-  options.to = to_internal(to);
-  options.step = to_internal(step);
-  options.order = args.order;
-  options.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
-  std::string why;
-  if (!options.IsValid(&why)) {
-    Complain("--from/--to/--step/--order: " + why);
-    throw Exit{kExitBadInput};
-  }
-  const SweepResult result = Sweep(m, options);
-  const SweepColumns table = SweepLayout(m, options.order, file.loads.LengthUnit());
-
+  const Model model = LoadModel(args.file, args.sets);
+  const SweepSpan span = SpanOf(args, model);
+  const AtBranchPoint action = ParseBranchPointFlag(args.at_branch_point);
+  std::string csv;
+  nlohmann::json rows = nlohmann::json::array();
+  const SweepTable table = Checked([&] {
+    return model.Sweep(span.from, span.to, span.step, args.order, action, [&](const SweepTable& t, int i, const double* row) {
+      if (args.format == "csv") {
+        if (i == 0) AppendCsvHeader(csv, t);
+        AppendCsvRow(csv, t, row);
+      } else {
+        rows.push_back(JsonRow(t, row));
+      }
+    });
+  });
   if (args.format == "csv") {
-    WriteOutput(args.out, ToCsv(m, table, result));
+    if (table.rows == 0) AppendCsvHeader(csv, table);  // no row reached: the header alone
+    WriteOutput(args.out, csv);
   } else {
-    nlohmann::json j = ToJson(m, table, result);
-    j["mechanism"] = m.name;
-    j["file"] = file.path;
-    j["input"] = {{"name", m.drive.input_name}, {"unit", angle_input ? "deg" : file.loads.LengthUnit()},
-                  {"from", from}, {"to", to}, {"step", step}};
-    j["order"] = options.order;
-    j["complete"] = result.complete() && result.undefined.empty();
-    j["status"] = ToString(result.status);
-    j.update(SweepEventsJson(m, EventsOf(result)));
-    if (!result.message.empty()) j["message"] = result.message;
+    nlohmann::json j = {{"columns", table.columns}, {"units", table.units}, {"rows", rows}};
+    j["mechanism"] = model.mechanism().name;
+    j["file"] = model.path();
+    j["input"] = {{"name", model.input_name()}, {"unit", model.input_is_angle() ? "deg" : model.length_unit()},
+                  {"from", span.from}, {"to", span.to}, {"step", span.step}};
+    j["order"] = args.order;
+    j["complete"] = table.status == AnalysisStatus::kComplete;
+    j["status"] = table.sweep_status;
+    j.update(SweepEventsJson(table.record));
+    if (!table.message.empty()) j["message"] = table.message;
     WriteOutput(args.out, JsonText(j));
   }
-  ReportSweep(args.file, m, EventsOf(result));
-  if (!result.complete()) throw Exit{kExitFailed};
+  ReportSweep(args.file, model, table.record);
+  if (!table.record.complete()) throw Exit{kExitFailed};
   // every sample there, but an output has no number in some cells (not differentiable there)
-  if (!result.undefined.empty()) {
-    Complain(args.file + ": " + result.message);
+  if (table.status != AnalysisStatus::kComplete) {
+    Complain(args.file + ": " + table.message);
     throw Exit{kExitFailed};
   }
 }
@@ -141,7 +144,7 @@ void AddAnalyzeCommand(CLI::App& app) {
   cmd->add_option("--to", args->to, "Last input value [deg or length] (default: the file's sweep.to, else 360)");
   cmd->add_option("--step", args->step, "Input step [deg or length] (default: the file's sweep.step, else 1)");
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE (a formula; repeatable)");
-  cmd->add_option("--order", args->order, fmt::format("Highest transfer-function order in the table, 0..{} (default 2)", kMaxOrder));
+  cmd->add_option("--order", args->order, fmt::format("Highest transfer-function order in the table, 0..{} (default 2)", kMaxTransferOrder));
   AddBranchPointOption(cmd, args->at_branch_point);
   cmd->add_option("--format", args->format, "csv (default) or json");
   OutputFile(cmd->add_option("-o,--output-file", args->out, "Write to this file instead of stdout"));

@@ -2,10 +2,10 @@
 // transmission angle its extremes mu_min and mu_max.
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 #include "sweep_report.hpp"
 
-#include "koppel/core/angles.hpp"
-#include "koppel/analysis/dead_centres.hpp"
+#include "koppel/api/model.hpp"
 
 namespace koppel::cli {
 namespace deadcentres_command {  // this file's own names, apart from the other commands' in a unity build
@@ -18,94 +18,86 @@ struct Args {
   bool summary = false;
 };
 
-// Degrees for angles, lengths as they are.
+// The units of the input and of the output searched, as the tables name them.
 struct Units {
-  bool angle_in = false, angle_out = false;
-  std::string length = "length";  // the file's length unit (Loads::LengthUnit)
-  double In(double v) const { return angle_in ? RadToDeg(v) : v; }
-  double Out(double v) const { return angle_out ? RadToDeg(v) : v; }
-  std::string in_unit() const { return angle_in ? "deg" : length; }
-  std::string out_unit() const { return angle_out ? "deg" : length; }
+  std::string in, out;
 };
 
-// A transmission angle: mu_min, phi_mu_min, mu_max, phi_mu_max (extremes.hpp); the stroke of a
-// transmission angle means nothing. Any other output: the stroke between its dead centres.
-Summary SummaryOf(const Mechanism& m, int output, const DeadCentreReport& r, const Units& u) {
-  const std::string name = m.outputs[output].name, input = m.drive.input_name;
+// A transmission angle: mu_min, phi_mu_min, mu_max, phi_mu_max; the stroke of a transmission
+// angle means nothing. Any other output: the stroke between its dead centres.
+Summary SummaryOf(const Model& model, const DeadCentres& d, const Units& u) {
+  const std::string& name = d.output;
+  const std::string input = model.input_name();
   Summary summary;
-  if (m.outputs[output].kind == OutputKind::kTransmissionAngle) {
-    if (!Usable(r.extremes.status)) return summary;
-    summary.Add(name + "_min", u.Out(r.extremes.minimum.value), u.out_unit());
-    summary.Add(input + "_" + name + "_min", u.In(r.extremes.minimum.input), u.in_unit());
-    summary.Add(name + "_max", u.Out(r.extremes.maximum.value), u.out_unit());
-    summary.Add(input + "_" + name + "_max", u.In(r.extremes.maximum.input), u.in_unit());
+  if (d.transmission_angle) {
+    if (!d.has_extremes) return summary;
+    summary.Add(name + "_min", d.minimum.value, u.out);
+    summary.Add(input + "_" + name + "_min", d.minimum.input, u.in);
+    summary.Add(name + "_max", d.maximum.value, u.out);
+    summary.Add(input + "_" + name + "_max", d.maximum.input, u.in);
     return summary;
   }
-  if (!r.has_stroke) return summary;
-  summary.Add(input + "_a", u.In(r.phi_a), u.in_unit());
-  summary.Add(input + "_i", u.In(r.phi_i), u.in_unit());
-  summary.Add(name + "_a", u.Out(r.s_a), u.out_unit());
-  summary.Add(name + "_i", u.Out(r.s_i), u.out_unit());
-  summary.Add(name + "_H", u.Out(r.stroke), u.out_unit());
-  if (u.angle_in) {
-    summary.Add(input + "_H", RadToDeg(r.phi_h), "deg");
-    summary.Add("phase_ratio", r.phase_ratio, "1");
+  if (!d.has_stroke) return summary;
+  summary.Add(input + "_a", d.input_a, u.in);
+  summary.Add(input + "_i", d.input_i, u.in);
+  summary.Add(name + "_a", d.value_a, u.out);
+  summary.Add(name + "_i", d.value_i, u.out);
+  summary.Add(name + "_H", d.stroke, u.out);
+  if (model.input_is_angle()) {
+    summary.Add(input + "_H", d.forward_angle, "deg");
+    summary.Add("phase_ratio", d.phase_ratio, "1");
   }
   return summary;
 }
 
-nlohmann::json ExtremesJson(const OutputExtremes& e, const Units& u) {
-  if (!Usable(e.status)) return {{"status", ToString(e.status)}, {"message", e.message}};
-  auto one = [&](const OutputExtreme& x) {
-    FormatNumber(u.In(x.input));  // the CSV's refusal of non-finite numbers
-    FormatNumber(u.Out(x.value));
-    return nlohmann::json{{"input", u.In(x.input)}, {"value", u.Out(x.value)}, {"at", ToString(x.kind)}};
+nlohmann::json ExtremesJson(const DeadCentres& d) {
+  if (!d.has_extremes) return {{"status", ToString(d.extremes_status)}, {"message", d.extremes_message}};
+  auto one = [&](const OutputExtremePoint& x) {
+    FormatNumber(x.input);  // the CSV's refusal of non-finite numbers
+    FormatNumber(x.value);
+    return nlohmann::json{{"input", x.input}, {"value", x.value}, {"at", x.at}};
   };
-  return {{"min", one(e.minimum)}, {"max", one(e.maximum)}};
+  return {{"min", one(d.minimum)}, {"max", one(d.maximum)}};
 }
 
-std::string Json(const Mechanism& m, int output, const DeadCentreReport& r, const Summary& summary, const Units& u) {
+std::string Json(const Model& model, const DeadCentres& d, const Summary& summary, const Units& u) {
   nlohmann::json points = nlohmann::json::array();
-  for (const DeadCentre& d : r.points) {
-    const std::vector<double> row = {u.In(d.input), u.Out(d.value), d.second};
-    for (double v : row) FormatNumber(v);
-    points.push_back({{"input", row[0]}, {"value", row[1]}, {"d2", row[2]}, {"kind", ToString(d.kind)}});
+  for (const DeadCentrePoint& p : d.points) {
+    for (double v : {p.input, p.value, p.second}) FormatNumber(v);
+    points.push_back({{"input", p.input}, {"value", p.value}, {"d2", p.second}, {"kind", p.kind}});
   }
-  nlohmann::json j = {{"mechanism", m.name}, {"output", m.outputs[output].name}, {"input_unit", u.in_unit()},
-                      {"output_unit", u.out_unit()}, {"dead_centres", points}, {"classified", r.classified},
-                      {"summary", summary.ToJson()}, {"extremes", ExtremesJson(r.extremes, u)}, {"complete", r.sweep.complete()}};
-  j.update(SweepEventsJson(m, r.sweep));
-  if (!r.message.empty()) j["message"] = r.message;
+  nlohmann::json j = {{"mechanism", model.mechanism().name}, {"output", d.output}, {"input_unit", u.in},
+                      {"output_unit", u.out}, {"dead_centres", points}, {"classified", d.classified},
+                      {"summary", summary.ToJson()}, {"extremes", ExtremesJson(d)}, {"complete", d.sweep.complete()}};
+  j.update(SweepEventsJson(d.sweep));
+  if (!d.search_message.empty()) j["message"] = d.search_message;
   return JsonText(j);
 }
 
-std::string Csv(const Mechanism& m, int output, const DeadCentreReport& r, const Units& u) {
-  const std::string name = m.outputs[output].name;
-  std::string csv = "kind," + m.drive.input_name + "," + name + "," + name + "_d2\n";
-  for (const DeadCentre& d : r.points)
-    csv += std::string(ToString(d.kind)) + "," + FormatNumber(u.In(d.input)) + "," + FormatNumber(u.Out(d.value)) + "," +
-           FormatNumber(d.second) + "\n";
+std::string Csv(const Model& model, const DeadCentres& d) {
+  std::string csv = "kind," + model.input_name() + "," + d.output + "," + d.output + "_d2\n";
+  for (const DeadCentrePoint& p : d.points)
+    csv += p.kind + "," + FormatNumber(p.input) + "," + FormatNumber(p.value) + "," + FormatNumber(p.second) + "\n";
   return csv;
 }
 
 // What could not be had, on stderr: a gap in the range, a sign change not refined, a summary
 // without its numbers. True when there was something.
-bool ReportProblems(const Args& args, const Mechanism& m, int output, const DeadCentreReport& r, const Summary& summary) {
+bool ReportProblems(const Args& args, const DeadCentres& d, const Summary& summary) {
   bool problem = false;
-  if (!r.sweep.complete()) {
+  if (!d.sweep.complete()) {
     Complain(args.file + ": the dead centres over the drivable part are listed");
     problem = true;
   }
-  if (!r.unresolved.empty()) {
-    Complain(args.file + ": " + r.message);
+  if (!d.unresolved.empty()) {
+    Complain(args.file + ": " + d.search_message);
     problem = true;
   }
   if (args.summary && summary.quantity.empty()) {
-    const bool transmission = m.outputs[output].kind == OutputKind::kTransmissionAngle;
     Complain(args.file + ": no summary: " +
-             (transmission ? "the extremes of '" + m.outputs[output].name + "' were not found: " + r.extremes.message
-                           : std::to_string(r.points.size()) + " dead centre" + (r.points.size() == 1 ? "" : "s") +
-                                 " found, a stroke needs two"));
+             (d.transmission_angle ? "the extremes of '" + d.output + "' were not found: " + d.extremes_message
+                                   : std::to_string(d.points.size()) + " dead centre" + (d.points.size() == 1 ? "" : "s") +
+                                         " found, a stroke needs two"));
     problem = true;
   }
   return problem;
@@ -113,31 +105,25 @@ bool ReportProblems(const Args& args, const Mechanism& m, int output, const Dead
 
 void Run(const Args& args) {
   CheckFormat(args.format);
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const Mechanism& m = file.mechanism;
-  const int output = ResolveScalarOutput(m, args.output, "--output", args.file);
-  const Units units{m.InputIsAngle(), m.OutputIsAngle(output), file.loads.LengthUnit()};
-  auto in = [&](double v) { return units.angle_in ? DegToRad(v) : v; };
-  SweepOptions range;
-  range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
-  range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
-  range.step = in(ParseNumberFlag("--step", args.step));
-  range.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
-  std::string why;
-  CheckSampleCount(range.from, range.to, range.step, "--from/--to/--step");
-  if (!range.IsValid(&why)) {
-    Complain("--from/--to/--step: " + why);
-    throw Exit{kExitBadInput};
-  }
-  const DeadCentreReport r = FindDeadCentres(m, output, 0, range);
-  const Summary summary = SummaryOf(m, output, r, units);
+  const Model model = LoadModel(args.file, args.sets);
+  const int output = ResolveScalarOutput(model.mechanism(), args.output, "--output", args.file);
+  const std::string output_name = model.mechanism().outputs[output].name;
+  auto flag = [](const char* name, const std::string& text) {
+    return text.empty() ? std::optional<double>{} : ParseNumberFlag(name, text);
+  };
+  const SweepSpan span = model.Span(flag("--from", args.from), flag("--to", args.to), ParseNumberFlag("--step", args.step));
+  const AtBranchPoint action = ParseBranchPointFlag(args.at_branch_point);
+  CheckSampleCount(span.from, span.to, span.step, "--from/--to/--step");
+  const DeadCentres d = Checked([&] { return model.FindDeadCentres(output_name, span.from, span.to, span.step, action); });
+  const Units units{model.input_is_angle() ? "deg" : model.length_unit(), model.output_is_angle(output_name) ? "deg" : model.length_unit()};
+  const Summary summary = SummaryOf(model, d, units);
   if (args.format == "json") {
-    WriteOutput(args.out, Json(m, output, r, summary, units));
+    WriteOutput(args.out, Json(model, d, summary, units));
   } else {
-    WriteOutput(args.out, args.summary ? summary.ToCsv() : Csv(m, output, r, units));
+    WriteOutput(args.out, args.summary ? summary.ToCsv() : Csv(model, d));
   }
-  ReportSweep(args.file, m, r.sweep);
-  if (ReportProblems(args, m, output, r, summary)) throw Exit{kExitFailed};
+  ReportSweep(args.file, model, d.sweep);
+  if (ReportProblems(args, d, summary)) throw Exit{kExitFailed};
 }
 
 }  // namespace

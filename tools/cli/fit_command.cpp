@@ -3,10 +3,7 @@
 #include "common.hpp"
 #include "model_loading.hpp"
 
-#include "koppel/catalog/fit_problem.hpp"
-#include "koppel/catalog/mechanism_writer.hpp"
-#include "koppel/core/angles.hpp"
-#include "koppel/solver/sweep.hpp"
+#include "koppel/api/fit.hpp"
 
 #include <fmt/core.h>
 
@@ -21,93 +18,28 @@ struct Args {
   bool quiet = false;
 };
 
-// A value in the unit a user reads: degrees for angles.
-double InUnit(FitUnit unit, double v) { return unit == FitUnit::kAngle ? RadToDeg(v) : v; }
-const char* UnitName(FitUnit unit) { return unit == FitUnit::kAngle ? "deg" : "length"; }
-
-// The report's quantity,value,unit rows: the fitted parameters, each target's residual against
-// its tolerance, the starts, and what the fitted mechanism does over a turn of its drive.
-Summary FitSummary(const FitProblem& problem, const FitReport& r, const Mechanism& fitted) {
-  const bool angle = fitted.InputIsAngle();
-  const FitUnit input_unit = angle ? FitUnit::kAngle : FitUnit::kLength;
-  // a crank: the drive turns through a full revolution; mu_min over that turn if there is a mu output
-  SweepOptions turn;
-  turn.from = fitted.hint.input;
-  turn.to = fitted.hint.input + 2 * kPi;
-  turn.step = DegToRad(1);
-  turn.order = 0;
-  const SweepResult sweep = angle ? Sweep(fitted, turn) : SweepResult{};
-  const bool crank = angle && sweep.complete();
-  Summary s;
-  for (size_t j = 0; j < r.values.size(); ++j) s.Add(problem.parameters[j].name, r.values[j], "parameter");
-  for (size_t i = 0; i < r.targets.size(); ++i) {
-    const FitTargetResult& t = r.targets[i];
-    const std::string key = fmt::format("target{}_{}", i + 1, t.name);
-    s.Add(key + "_residual", InUnit(t.unit, t.residual), UnitName(t.unit));
-    s.Add(key + "_tolerance", InUnit(t.unit, t.tolerance), UnitName(t.unit));
-    s.Add(key + "_met", t.met ? 1 : 0, "bool");
-    if (problem.targets[i].input_free) s.Add(fmt::format("target{}_input", i + 1), InUnit(input_unit, t.input), UnitName(input_unit));
-  }
-  s.Add("cost", r.cost, "1");
-  s.Add("start", r.best_start + 1, "1");
-  s.Add("starts", static_cast<double>(r.starts.size()), "1");
-  s.Add("starts_at_best", r.starts_at_best, "1");
-  s.Add("full_rotation", crank ? 1 : 0, "bool");
-  s.Add("assembles_over_required_range", r.assembles_over_range ? 1 : 0, "bool");
-  if (!r.assembles_over_range) {
-    // what the drive does reach, from the assembly position
-    s.Add("drivable_from", InUnit(input_unit, r.drivable_from), UnitName(input_unit));
-    s.Add("drivable_to", InUnit(input_unit, r.drivable_to), UnitName(input_unit));
-  }
-  for (int o = 0; o < static_cast<int>(fitted.outputs.size()); ++o) {
-    if (fitted.outputs[o].kind != OutputKind::kTransmissionAngle || !crank) continue;
-    int column = 0;
-    for (int k = 0; k < o; ++k) column += fitted.outputs[k].Components();
-    s.Add("mu_min_" + fitted.outputs[o].name, RadToDeg(sweep.outputs.col(column).minCoeff()), "deg");
-  }
-  return s;
-}
-
-// --yaml: the original file's structure with the fitted parameter values.
-void WriteFittedFile(const Args& args, const FitProblem& problem, const FitReport& r, const Mechanism& fitted) {
-  Overrides fitted_values;
-  for (size_t j = 0; j < r.values.size(); ++j) fitted_values.emplace_back(problem.parameters[j].name, fmt::format("{:.17g}", r.values[j]));
-  const MechanismFile fitted_file = ReadMechanismFile(problem.mechanism_path, fitted_values);
-  const auto& values = fitted_file.parameters.Values();
-  WriteOutput(args.yaml, WriteMechanismYaml(fitted, fmt::format("Fitted by koppel synth fit from {}; cost {:.3g}{}", args.problem, r.cost,
-                                                                r.ok() ? "" : " (" + std::string(ToString(r.status)) + ")"),
-                                            problem.base.sweep, values));
-}
-
 void Run(const Args& args) {
   CheckFormat(args.format);
-  FitProblem problem = Checked([&] { return ReadFitProblem(args.problem); });  // bad input: its diagnostics, exit 2
-  if (!args.threads.empty()) problem.options.threads = static_cast<int>(ParseNumberFlag("--threads", args.threads));
-  std::string why;
-  if (!problem.options.IsValid(&why)) {
-    Complain(args.problem + ": " + why);
-    throw Exit{kExitBadInput};
-  }
-  const FitReport r = Fit(problem.builder, problem.parameters, problem.targets, problem.options);
+  FitRequest request;
+  request.problem = args.problem;
+  if (!args.threads.empty()) request.threads = static_cast<int>(ParseNumberFlag("--threads", args.threads));
+  request.yaml = !args.yaml.empty();
+  const FitOutcome r = Checked([&] { return FitMechanism(request); });  // a problem file that does not read: exit 2
   if (!args.quiet) {
-    for (const FitStart& s : r.starts) std::cerr << fmt::format("koppel synth fit: start {}: {}\n", s.index + 1, s.brief);
+    for (size_t i = 0; i < r.starts.size(); ++i) std::cerr << fmt::format("koppel synth fit: start {}: {}\n", i + 1, r.starts[i]);
   }
-  if (r.values.empty()) {
+  if (!r.fitted) {
     Complain(args.problem + ": " + r.message);
-    throw Exit{r.status == FitStatus::kInvalidOptions ? kExitBadInput : kExitFailed};
+    throw Exit{r.bad_input ? kExitBadInput : kExitFailed};
   }
-  const Expected<Mechanism> built = problem.builder(r.values);
-  if (!built) {
-    Complain(args.problem + ": the fitted values do not build the mechanism: " + built.error());
-    throw Exit{kExitFailed};
-  }
-  const Mechanism& fitted = *built;
-  const Summary s = FitSummary(problem, r, fitted);
-  if (!args.yaml.empty()) WriteFittedFile(args, problem, r, fitted);
+  Summary s;
+  for (const FitQuantity& q : r.report) s.Add(q.quantity, q.value, q.unit);
+  if (!args.yaml.empty()) WriteOutput(args.yaml, r.yaml);
   WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv());
-  if (!args.quiet) std::cerr << fmt::format("koppel synth fit: cost {:.3g} after {} iterations (start {}; {} of {} starts reached it)\n", r.cost, r.iterations,
-                           r.best_start + 1, r.starts_at_best, r.starts.size());
-  if (!r.ok()) {
+  if (!args.quiet)
+    std::cerr << fmt::format("koppel synth fit: cost {:.3g} after {} iterations (start {}; {} of {} starts reached it)\n", r.cost,
+                             r.iterations, r.best_start, r.starts_at_best, r.starts.size());
+  if (!r.ok) {
     Complain(args.problem + ": " + r.message);
     throw Exit{kExitFailed};
   }

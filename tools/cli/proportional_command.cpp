@@ -1,12 +1,10 @@
 // koppel proportional: proportionality deviation of an output over an input range (seed 001).
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 #include "sweep_report.hpp"
 
-#include "koppel/core/structure.hpp"
-
-#include "koppel/core/angles.hpp"
-#include "koppel/analysis/proportionality.hpp"
+#include "koppel/api/proportionality.hpp"
 
 namespace koppel::cli {
 namespace proportional_command {  // this file's own names, apart from the other commands' in a unity build
@@ -18,61 +16,61 @@ struct Args {
   std::string format = "csv", out;
 };
 
-void Run(const Args& args) {
-  CheckFormat(args.format);
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const Mechanism& m = file.mechanism;
-  const int output = ResolveScalarOutput(m, args.output, "--output", args.file);
-  const bool angle = m.InputIsAngle();
-  auto in = [&](double v) { return angle ? DegToRad(v) : v; };
-  const double from = in(ParseNumberFlag("--from", args.from)), to = in(ParseNumberFlag("--to", args.to));
-  const double length = args.length.empty() ? CrankLength(m) : ParseNumberFlag("--length", args.length);
-  if (length <= 0 || from == to) {
+// The flags as a request, refused with the flags' names (exit 2).
+ProportionalityRequest RequestOf(const Args& args, const Model& model) {
+  ProportionalityRequest request;
+  request.output = model.mechanism().outputs[ResolveScalarOutput(model.mechanism(), args.output, "--output", args.file)].name;
+  request.from = ParseNumberFlag("--from", args.from);
+  request.to = ParseNumberFlag("--to", args.to);
+  const double length = args.length.empty() ? ReferenceLength(model) : ParseNumberFlag("--length", args.length);
+  if (length <= 0 || request.from == request.to) {
     Complain(length <= 0 ? "no reference length: give --length" : "--from and --to must differ");
     throw Exit{kExitBadInput};
   }
-  std::optional<double> at;
-  if (!args.at.empty()) at = in(ParseNumberFlag("--at", args.at));
-  ContinuationOptions continuation;
-  continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
-  const double resolution = in(ParseNumberFlag("--resolution", args.resolution));
-  CheckSampleCount(from, to, resolution, "--from/--to/--resolution");
-  SweepOptions check;
-  check.from = from;
-  check.to = to;
-  check.step = resolution;
-  std::string why;
-  if (!check.IsValid(&why)) {
-    Complain("--from/--to/--resolution: " + why);
-    throw Exit{kExitBadInput};
-  }
-  const Proportionality p = ProportionalityDeviation(m, output, from, to, length, at, resolution, continuation);
+  request.length = length;
+  if (!args.at.empty()) request.at = ParseNumberFlag("--at", args.at);
+  request.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
+  request.resolution = ParseNumberFlag("--resolution", args.resolution);
+  CheckSampleCount(request.from, request.to, request.resolution, "--from/--to/--resolution");
+  return request;
+}
+
+Summary SummaryOf(const Model& model, const ProportionalityReport& p) {
+  const bool angle = model.input_is_angle();
+  const std::string unit = angle ? "deg" : model.length_unit(), length = model.length_unit();
+  Summary s;
+  s.Add("from", p.from, unit);
+  s.Add("to", p.to, unit);
+  s.Add("phi_P", p.range, unit);
+  s.Add("reference", p.reference, unit);
+  s.Add("slope", p.slope, angle ? length + "/rad" : "1");
+  s.Add("delta_s", p.delta_s, length);
+  s.Add("reference_length", p.reference_length, length);
+  s.Add("Q_P", p.qp, angle ? "1/rad" : "1/length");
+  s.Add("chord_deviation", p.chord_deviation, length);
+  return s;
+}
+
+void Run(const Args& args) {
+  CheckFormat(args.format);
+  const Model model = LoadModel(args.file, args.sets);
+  const ProportionalityRequest request = RequestOf(args, model);
+  const ProportionalityReport p = Checked([&] { return FindProportionality(model, request); });
   if (!Usable(p.status)) {
-    ReportSweep(args.file, m, p.sweep);
+    ReportSweep(args.file, model, p.sweep);
     Complain(args.file + ": " + p.message);
     throw Exit{kExitFailed};
   }
-  const std::string unit = angle ? "deg" : file.loads.LengthUnit();
-  auto shown = [&](double v) { return angle ? RadToDeg(v) : v; };
-  Summary s;
-  s.Add("from", shown(from), unit);
-  s.Add("to", shown(to), unit);
-  s.Add("phi_P", shown(p.phi_p), unit);
-  s.Add("reference", shown(p.reference), unit);
-  s.Add("slope", p.slope, angle ? file.loads.LengthUnit() + "/rad" : "1");
-  s.Add("delta_s", p.delta_s, file.loads.LengthUnit());
-  s.Add("reference_length", length, file.loads.LengthUnit());
-  s.Add("Q_P", p.qp, angle ? "1/rad" : "1/length");
-  s.Add("chord_deviation", p.chord_deviation, file.loads.LengthUnit());
+  const Summary s = SummaryOf(model, p);
   if (args.format == "json") {
     nlohmann::json j = s.ToJson();
     j["complete"] = p.sweep.complete();
-    j.update(SweepEventsJson(m, p.sweep));
+    j.update(SweepEventsJson(p.sweep));
     WriteOutput(args.out, JsonText(j));
   } else {
     WriteOutput(args.out, s.ToCsv());
   }
-  ReportSweep(args.file, m, p.sweep);
+  ReportSweep(args.file, model, p.sweep);
   if (!p.sweep.complete()) {
     Complain(args.file + ": the figures above hold for the drivable part of the range only");
     throw Exit{kExitFailed};

@@ -1,10 +1,10 @@
 // koppel range: the intervals of the drive input over which the mechanism assembles, per branch.
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 #include "sweep_report.hpp"
 
-#include "koppel/analysis/ranges.hpp"
-#include "koppel/core/angles.hpp"
+#include "koppel/api/model.hpp"
 
 namespace koppel::cli {
 namespace range_command {  // this file's own names, apart from the other commands' in a unity build
@@ -16,46 +16,45 @@ struct Args {
   bool all_branches = false;
 };
 
+std::string Json(const Model& model, const Ranges& ranges) {
+  nlohmann::json branches = nlohmann::json::array();
+  for (const BranchInterval& b : ranges.branches) {
+    nlohmann::json entry = {{"branch", b.branch},       {"from", b.from},       {"to", b.to},
+                            {"from_kind", b.from_kind}, {"to_kind", b.to_kind}, {"singular_points", SingularPointsJson(b.singular_points)}};
+    if (b.period > 0) entry["period"] = b.period;
+    if (!b.message.empty()) entry["message"] = b.message;
+    branches.push_back(entry);
+  }
+  const nlohmann::json j = {{"mechanism", model.mechanism().name}, {"input", model.input_name()},
+                            {"unit", model.input_is_angle() ? "deg" : model.length_unit()}, {"branches", branches},
+                            {"notes", ranges.notes}};
+  return JsonText(j);
+}
+
+std::string Csv(const Ranges& ranges) {
+  std::string csv = "branch,from,to,from_kind,to_kind\n";
+  for (const BranchInterval& b : ranges.branches) {
+    csv += std::to_string(b.branch) + "," + FormatNumber(b.from) + "," + FormatNumber(b.to) + "," + b.from_kind + "," + b.to_kind + "\n";
+  }
+  return csv;
+}
+
 void Run(const Args& args) {
   CheckFormat(args.format);
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const Mechanism& m = file.mechanism;
-  RangeOptions options;
-  options.all_branches = args.all_branches;
-  options.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
-  const RangeReport report = DrivableRanges(m, options);
-  for (const std::string& note : report.notes) Complain(args.file + ": " + note);
-  if (report.status != RangeStatus::kDone) {
-    Complain(args.file + ": " + report.message);
+  const Model model = LoadModel(args.file, args.sets);
+  const AtBranchPoint action = ParseBranchPointFlag(args.at_branch_point);
+  const Ranges ranges = Checked([&] { return model.DrivableRanges(args.all_branches, action); });
+  for (const std::string& note : ranges.notes) Complain(args.file + ": " + note);
+  if (!ranges.walked) {
+    Complain(args.file + ": " + ranges.message);
     throw Exit{kExitFailed};
   }
-  auto shown = [&](double v) { return m.InputIsAngle() ? RadToDeg(v) : v; };
-  if (args.format == "json") {
-    nlohmann::json branches = nlohmann::json::array();
-    for (const BranchRange& b : report.branches) {
-      nlohmann::json entry = {{"branch", b.branch},         {"from", shown(b.from)},         {"to", shown(b.to)},
-                              {"from_kind", ToString(b.from_kind)}, {"to_kind", ToString(b.to_kind)},
-                              {"singular_points", SingularPointsJson(m, b.singular_points)}};
-      if (b.period > 0) entry["period"] = shown(b.period);
-      if (!b.message.empty()) entry["message"] = b.message;
-      branches.push_back(entry);
-    }
-    const nlohmann::json j = {{"mechanism", m.name}, {"input", m.drive.input_name}, {"unit", m.InputIsAngle() ? "deg" : file.loads.LengthUnit()},
-                              {"branches", branches}, {"notes", report.notes}};
-    WriteOutput(args.out, JsonText(j));
-  } else {
-    std::string csv = "branch,from,to,from_kind,to_kind\n";
-    for (const BranchRange& b : report.branches) {
-      csv += std::to_string(b.branch) + "," + FormatNumber(shown(b.from)) + "," + FormatNumber(shown(b.to)) + "," +
-             ToString(b.from_kind) + "," + ToString(b.to_kind) + "\n";
-    }
-    WriteOutput(args.out, csv);
-  }
-  for (const BranchRange& b : report.branches) {
-    ReportSingularPoints(args.file + " (branch " + std::to_string(b.branch) + ")", m, b.singular_points);
+  WriteOutput(args.out, args.format == "json" ? Json(model, ranges) : Csv(ranges));
+  for (const BranchInterval& b : ranges.branches) {
+    ReportSingularPoints(args.file + " (branch " + std::to_string(b.branch) + ")", model, b.singular_points);
     if (!b.message.empty()) Complain(args.file + " (branch " + std::to_string(b.branch) + "): " + b.message);
   }
-  if (report.HasFailure()) throw Exit{kExitFailed};
+  if (ranges.status != AnalysisStatus::kComplete) throw Exit{kExitFailed};
 }
 
 }  // namespace

@@ -2,17 +2,14 @@
 // curve) and its loads, from the equation of motion of the drive.
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 #include "sweep_report.hpp"
 
-#include "koppel/analysis/simulation.hpp"
-#include "koppel/catalog/motor_curve.hpp"
-#include "koppel/core/angles.hpp"
-
-#include <fmt/core.h>
+#include "koppel/api/simulation.hpp"
 
 #include <filesystem>
-#include <iostream>
 #include <sstream>
+#include <tuple>
 
 namespace koppel::cli {
 namespace simulate_command {  // this file's own names, apart from the other commands' in a unity build
@@ -27,8 +24,6 @@ struct SimulateArgs {
   std::string out;
 };
 
-constexpr double kRpm = 2.0 * kPi / 60.0;  // rad/s per rpm
-
 [[noreturn]] void BadInput(const std::string& message) {
   Complain(message);
   throw Exit{kExitBadInput};
@@ -41,141 +36,78 @@ std::pair<double, double> ParseTimeSpan(const std::string& text) {
   return {ParseNumberFlag("--t", text.substr(0, colon)), ParseNumberFlag("--t", text.substr(colon + 1))};
 }
 
-// "a,b" -> {a, b}
-std::pair<double, double> ParsePair(const std::string& flag, const std::string& text) {
-  const std::vector<double> values = ParseNumberListFlag(flag, text, 2, "input,speed");
-  return {values[0], values[1]};
-}
-
-// A motor curve: "speed:torque,speed:torque,..." or a file of "speed,torque" lines
-// (koppel/catalog/motor_curve.hpp). Speeds in rpm (length units/s for a P drive).
-DriveLaw ParseMotor(const std::string& text, bool angle) {
-  DriveLaw law;
-  law.kind = DriveLaw::Kind::kMotor;
-  std::vector<std::pair<std::string, std::string>> points;
+// --motor: a file of "speed,torque" lines (read by the API), or "speed:torque,speed:torque,...".
+void ParseMotor(const std::string& text, MotionRequest& request) {
   if (std::filesystem::exists(text)) {
-    // a file (koppel/catalog/motor_curve.hpp), read within the input limit whatever it is
-    try {
-      const MotorCurveFile curve = ReadMotorCurve(text);
-      for (size_t i = 0; i < curve.speeds.size(); ++i) {
-        law.speeds.push_back(curve.speeds[i] * (angle ? kRpm : 1.0));
-        law.torques.push_back(curve.torques[i]);
-      }
-      return law;
-    } catch (const InputError& e) {
-      for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
-      throw Exit{kExitBadInput};
-    }
+    request.motor_file = text;
+    return;
+  }
+  std::stringstream list(text);
+  std::vector<std::pair<std::string, std::string>> points;
+  for (std::string item; std::getline(list, item, ',');) {
+    const auto colon = item.find(':');
+    // "1500:2,5" splits into "1500:2" and "5": a decimal comma, most likely
+    if (colon == std::string::npos)
+      BadInput("--motor: expected 'speed:torque,...' or a file, found '" + item + "' in '" + text +
+               "' (a decimal comma? write a decimal point: 2.5, not 2,5)");
+    points.emplace_back(item.substr(0, colon), item.substr(colon + 1));
+  }
+  for (const auto& [speed, torque] : points) request.motor.emplace_back(ParseNumberFlag("--motor", speed), ParseNumberFlag("--motor", torque));
+}
+
+// The flags as a request (refused with exit 2 where a flag does not read).
+MotionRequest RequestOf(const SimulateArgs& args) {
+  MotionRequest request;
+  if (!args.torque.empty()) {
+    request.torque = args.torque;
   } else {
-    std::stringstream list(text);
-    for (std::string item; std::getline(list, item, ',');) {
-      const auto colon = item.find(':');
-      // "1500:2,5" splits into "1500:2" and "5": a decimal comma, most likely
-      if (colon == std::string::npos)
-        BadInput("--motor: expected 'speed:torque,...' or a file, found '" + item + "' in '" + text +
-                 "' (a decimal comma? write a decimal point: 2.5, not 2,5)");
-      points.emplace_back(item.substr(0, colon), item.substr(colon + 1));
-    }
+    ParseMotor(args.motor, request);
   }
-  for (const auto& [speed, torque] : points) {
-    law.speeds.push_back(ParseNumberFlag("--motor", speed) * (angle ? kRpm : 1.0));
-    law.torques.push_back(ParseNumberFlag("--motor", torque));
-  }
-  return law;
-}
-
-// --t, --initial, --dt and --tolerance as the integrator's options (refused with exit 2).
-SimulationOptions OptionsOf(const SimulateArgs& args, const Mechanism& m) {
-  const bool angle = m.InputIsAngle();
-  SimulationOptions options;
-  std::tie(options.t_start, options.t_end) = ParseTimeSpan(args.time);
-  options.initial_input = m.hint.input;
+  std::tie(request.t_start, request.t_end) = ParseTimeSpan(args.time);
   if (!args.initial.empty()) {
-    const auto [input, speed] = ParsePair("--initial", args.initial);
-    options.initial_input = angle ? DegToRad(input) : input;
-    options.initial_speed = speed * (angle ? kRpm : 1.0);
+    const std::vector<double> values = ParseNumberListFlag("--initial", args.initial, 2, "input,speed");
+    request.initial_input = values[0];
+    request.initial_speed = values[1];
   }
-  options.output_step = args.dt.empty() ? (options.t_end - options.t_start) / 200.0 : ParseNumberFlag("--dt", args.dt);
-  if (!args.tolerance.empty()) options.relative_tolerance = options.absolute_tolerance = ParseNumberFlag("--tolerance", args.tolerance);
-  std::string why;
-  if (!options.IsValid(&why)) BadInput("--t/--initial/--dt/--tolerance: " + why);
-  return options;
+  if (!args.dt.empty()) request.dt = ParseNumberFlag("--dt", args.dt);
+  if (!args.tolerance.empty()) request.tolerance = ParseNumberFlag("--tolerance", args.tolerance);
+  return request;
 }
 
-// The rows as they are printed: t, the input, its speed, every output, the drive's torque (or
-// force) and the energies; `units` receives each column's unit (lengths in the file's unit).
-Table SimulationTable(const MechanismFile& file, const SimulationResult& result, std::vector<std::string>& units) {
-  const Mechanism& m = file.mechanism;
-  const bool angle = m.InputIsAngle();
-  const double speed_unit = angle ? kRpm : 1.0;
-  const std::string length = file.loads.LengthUnit();
-  Table table;
-  units = {"s", angle ? "deg" : length, angle ? "rpm" : length + "/s"};
-  table.columns = {"t", m.drive.input_name, "speed"};
-  for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
-    const Output& out = m.outputs[o];
-    for (int c = 0; c < out.Components(); ++c) {
-      table.columns.push_back(out.Components() == 2 ? out.name + (c == 0 ? "_x" : "_y") : out.name);
-      units.push_back(m.OutputIsAngle(o) ? "deg" : length);
-    }
-  }
-  for (const char* name : {angle ? "torque" : "force", "E_kin", "E_pot"}) table.columns.push_back(name);
-  for (const char* unit : {angle ? "N m" : "N", "J", "J"}) units.push_back(unit);
-  for (const SimulationRow& r : result.rows) {
-    std::vector<double> row = {r.time, angle ? RadToDeg(r.input) : r.input, r.speed / speed_unit};
-    int column = 0;
-    for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
-      for (int c = 0; c < m.outputs[o].Components(); ++c, ++column) {
-        row.push_back(m.OutputIsAngle(o) ? RadToDeg(r.outputs[column]) : r.outputs[column]);
-      }
-    }
-    row.insert(row.end(), {r.drive, r.kinetic_energy, r.potential_energy});
-    table.rows.push_back(std::move(row));
-  }
-  return table;
+// A refused run: the message goes to the input it is about, the file (loads), the drive flag or the options.
+void ReportRefusal(const SimulateArgs& args, const Motion& motion) {
+  if (motion.bad_input == "loads") BadInput(args.file + ": " + motion.message);
+  if (motion.bad_input == "drive")
+    BadInput((args.torque.empty() ? "--motor " : "--torque ") + (args.torque.empty() ? args.motor : args.torque) + ": " + motion.message);
+  if (motion.bad_input == "options") BadInput("--t/--initial/--dt/--tolerance: " + motion.message);
 }
 
 void RunSimulate(const SimulateArgs& args) {
   CheckFormat(args.format);
   if (args.torque.empty() == args.motor.empty()) BadInput("give the drive torque: either --torque FORMULA or --motor CURVE");
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const Mechanism& m = file.mechanism;
-  DriveLaw law;
-  if (!args.torque.empty()) {
-    law.kind = DriveLaw::Kind::kFormula;
-    law.formula = args.torque;
-  } else {
-    law = ParseMotor(args.motor, m.InputIsAngle());
-  }
-  const SimulationOptions options = OptionsOf(args, m);
-  const SimulationResult result = Simulate(m, file.loads, law, options);
-  // the message goes to the input it is about: the file (loads), the drive flag or the options
-  switch (result.bad_part) {
-    case SimulationResult::BadPart::kNone: break;
-    case SimulationResult::BadPart::kLoads: BadInput(args.file + ": " + result.message);
-    case SimulationResult::BadPart::kDrive: BadInput((args.torque.empty() ? "--motor " : "--torque ") + (args.torque.empty() ? args.motor : args.torque) + ": " + result.message);
-    case SimulationResult::BadPart::kOptions: BadInput("--t/--initial/--dt/--tolerance: " + result.message);
-  }
+  const Model model = LoadModel(args.file, args.sets);
+  const MotionRequest request = RequestOf(args);
+  const Motion motion = Checked([&] { return SimulateMotion(model, request); });
+  ReportRefusal(args, motion);
 
-  std::vector<std::string> units;
-  const Table table = SimulationTable(file, result, units);
+  const Table table{motion.columns, motion.rows};
   if (args.format == "csv") {
     WriteOutput(args.out, table.ToCsv());
   } else {
     nlohmann::json j = table.ToJson();
-    j["units"] = units;
-    j["mechanism"] = m.name;
-    j["file"] = file.path;
-    j["status"] = ToString(result.status);
-    j["steps"] = result.steps;
-    j["evaluations"] = result.evaluations;
-    j["singular_points"] = SingularPointsJson(m, result.singular_points);
-    if (!result.complete()) j["message"] = result.message;
+    j["units"] = motion.units;
+    j["mechanism"] = model.mechanism().name;
+    j["file"] = model.path();
+    j["status"] = ToString(motion.status);
+    j["steps"] = motion.steps;
+    j["evaluations"] = motion.evaluations;
+    j["singular_points"] = SingularPointsJson(motion.singular_points);
+    if (!motion.complete()) j["message"] = motion.message;
     WriteOutput(args.out, JsonText(j));
   }
-  ReportSingularPoints(args.file, m, result.singular_points);
-  if (!result.complete()) {
-    Complain(args.file + ": " + result.message);
+  ReportSingularPoints(args.file, model, motion.singular_points);
+  if (!motion.complete()) {
+    Complain(args.file + ": " + motion.message);
     throw Exit{kExitFailed};
   }
 }

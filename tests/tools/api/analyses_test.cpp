@@ -133,4 +133,75 @@ TEST_CASE("Model::DrivableRanges: the triple rocker swings between its two limit
   CHECK(crank.SingularPositions().empty());
 }
 
+// issue 24: koppel analyze writes its rows as the API makes them (Model::Sweep with a row sink):
+// the rows handed over are the table's rows, value for value, and nothing is kept twice.
+TEST_CASE("Model::Sweep with a row sink: the same rows in order, no values kept; the record of the walk", "[api]") {
+  const Model m = Model::Load(test::CatalogEntryPath("slider-crank-offset"));
+  const SweepTable kept = m.Sweep(0, 360, 7, 3);
+  std::vector<double> handed;
+  int next = 0;
+  const SweepTable streamed = m.Sweep(0, 360, 7, 3, AtBranchPoint::kContinue, [&](const SweepTable& t, int row, const double* values) {
+    CHECK(row == next++);
+    CHECK(t.rows == kept.rows);  // known before the first row: a writer can reserve
+    handed.insert(handed.end(), values, values + t.columns.size());
+  });
+  CHECK(streamed.values.empty());
+  CHECK(streamed.columns == kept.columns);
+  REQUIRE(handed.size() == kept.values.size());
+  for (size_t i = 0; i < handed.size(); ++i) CHECK(handed[i] == kept.values[i]);
+  // the record: the walk reached the whole requested range (beyond the last sample, 357 deg)
+  CHECK(kept.sweep_status == "complete");
+  CHECK(kept.record.complete());
+  CHECK_THAT(kept.record.reached.from, WithinAbs(0, kRangeEnd));
+  CHECK_THAT(kept.record.reached.to, WithinAbs(360, kRangeEnd));
+  CHECK(kept.record.singular_inputs.empty());
+}
+
+TEST_CASE("Model::Sweep's record beyond a limit point: partial, the flagged rows and the gap as the table has them", "[api]") {
+  const Model m = Model::Load(test::TestDataPath("triple-rocker.yaml"));
+  const SweepTable t = m.Sweep(0, 180, 1, 1);
+  CHECK(t.sweep_status == "partial");
+  CHECK(t.record.status == AnalysisStatus::kPartial);
+  CHECK(t.record.gaps.size() == t.gaps.size());
+  CHECK(t.record.singular_points.size() == t.singular_points.size());
+  std::vector<double> flagged;
+  for (int r = 0; r < t.rows; ++r) {
+    if (t.At(r, t.ColumnIndex("singular")) == 1) flagged.push_back(t.At(r, 0));
+  }
+  CHECK(t.record.singular_inputs == flagged);
+  // the walk reached up to the limit (law of cosines), beyond the last sample before it
+  CHECK_THAT(t.record.reached.to, WithinAbs(RadToDeg(test::FourBarLimits(2, 3, 2.5, 4)[0]), kLimitDeg));
+  CHECK(t.record.reached.to >= t.At(t.rows - 1, 0));
+}
+
+TEST_CASE("Model::FindDeadCentres: the output searched, its kind, the line-up classification, the sweep's record", "[api]") {
+  const Model m = Model::Load(test::CatalogEntryPath("slider-crank-offset"));
+  const DeadCentres s = m.FindDeadCentres();  // the first scalar output: s
+  CHECK(s.output == "s");
+  CHECK_FALSE(s.transmission_angle);
+  CHECK(s.classified);  // crank and coupler line up at both dead centres of a slider-crank
+  CHECK(s.search_message.empty());
+  CHECK(s.sweep.complete());
+  CHECK(s.sweep.singular_points.empty());
+  const DeadCentres mu = m.FindDeadCentres("mu");
+  CHECK(mu.output == "mu");
+  CHECK(mu.transmission_angle);
+  CHECK(mu.extremes_status == AnalysisStatus::kComplete);
+  // the triple rocker cannot be driven over a whole turn: partial, the gap in the record
+  const Model rocker = Model::Load(test::TestDataPath("triple-rocker.yaml"));
+  const DeadCentres part = rocker.FindDeadCentres("", 0, 180, 1);
+  CHECK_FALSE(part.sweep.complete());
+  CHECK_FALSE(part.sweep.gaps.empty());
+}
+
+TEST_CASE("Model::DrivableRanges: walked, or not when the mechanism does not assemble", "[api]") {
+  CHECK(Model::Load(test::TestDataPath("triple-rocker.yaml")).DrivableRanges().walked);
+  // an offset beyond l1 + l2: the slider's coupler cannot reach its guide at any input
+  const Model apart = Model::Load(test::CatalogEntryPath("slider-crank-offset"), {{"e", "5"}});
+  const Ranges r = apart.DrivableRanges();
+  CHECK_FALSE(r.walked);
+  CHECK(r.status == AnalysisStatus::kFailed);
+  CHECK(!r.message.empty());
+}
+
 }  // namespace analyses_test

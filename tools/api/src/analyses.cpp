@@ -2,6 +2,7 @@
 #include "koppel/api/model.hpp"
 
 #include "display.hpp"
+#include "scalar_output.hpp"
 
 #include "koppel/analysis/dead_centres.hpp"
 #include "koppel/analysis/ranges.hpp"
@@ -14,6 +15,8 @@
 namespace koppel {
 
 using namespace api_detail;
+
+static_assert(kMaxTransferOrder == kMaxOrder, "the API's order limit is the solver's");
 
 namespace {
 
@@ -37,6 +40,17 @@ SweepOptions Options(const Model& model, double from, double to, double step, in
 std::string Plural(size_t n, const std::string& word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
 
 }  // namespace
+
+int api_detail::ScalarOutput(const Model& model, const std::string& output) {
+  const Mechanism& m = model.mechanism();
+  int index = -1;
+  for (int o = 0; o < static_cast<int>(m.outputs.size()) && index < 0; ++o) {
+    if (output.empty() ? m.outputs[o].Components() == 1 : m.outputs[o].name == output) index = o;
+  }
+  if (index < 0 || m.outputs[index].Components() != 1)
+    BadInput(model.path(), "output", output.empty() ? "the mechanism has no scalar output" : "'" + output + "' is not a scalar output");
+  return index;
+}
 
 int SweepTable::ColumnIndex(const std::string& name) const {
   for (size_t c = 0; c < columns.size(); ++c) {
@@ -79,11 +93,16 @@ std::string Ranges::Brief() const {
   return std::string(ToString(status)) + ": " + Plural(branches.size(), "branch") + (message.empty() ? "" : "; " + message);
 }
 
-SweepTable Model::Sweep(double from, double to, double step, int order, AtBranchPoint action) const {
-  const Mechanism& m = mechanism();
-  const SweepOptions options = Options(*this, from, to, step, order, action);
-  const SweepResult result = koppel::Sweep(m, options);
-  const SweepColumns layout = SweepLayout(m, order, length_unit());
+namespace {
+
+// A sweep's table without its rows, then every row in the API's units handed to `emit` (one
+// buffer, reused): cells above a row's valid order, and cells an output has no number for (not
+// differentiable there), are NaN.
+template <class Emit>
+SweepTable SweepRows(const Model& model, double from, double to, double step, int order, AtBranchPoint action, Emit&& emit) {
+  const Mechanism& m = model.mechanism();
+  const SweepResult result = koppel::Sweep(m, Options(model, from, to, step, order, action));
+  const SweepColumns layout = SweepLayout(m, order, model.length_unit());
   SweepTable t;
   t.status = FromSweep(result.status);
   t.message = result.message;
@@ -93,33 +112,45 @@ SweepTable Model::Sweep(double from, double to, double step, int order, AtBranch
   t.columns = layout.names;
   t.units = layout.units;
   t.rows = static_cast<int>(result.inputs.size());
-  t.values.resize(static_cast<size_t>(t.rows) * t.columns.size());
-  for (int i = 0; i < t.rows; ++i) {
-    t.valid_order.push_back(result.valid_order[i]);
-    DisplayRow(m, layout, result.inputs[i], result.outputs.row(i).data(), result.valid_order[i], result.singular[i] != 0,
-               t.values.data() + static_cast<size_t>(i) * t.columns.size());
-  }
-  // cells an output has no number for (not differentiable there) are NaN, as those above a row's valid order
-  for (const SweepResult::Cell& c : result.undefined)
-    t.values[static_cast<size_t>(c.row) * t.columns.size() + c.column + 1] = std::numeric_limits<double>::quiet_NaN();
+  t.valid_order.assign(result.valid_order.begin(), result.valid_order.end());
   t.singular_points = Shown(m, result.singular_points);
   t.gaps = Shown(m, result.gaps);
+  t.record = Shown(m, EventsOf(result));
+  t.sweep_status = ToString(result.status);
+  std::vector<double> row(t.columns.size());
+  auto undefined = result.undefined.begin();  // ascending by row
+  for (int i = 0; i < t.rows; ++i) {
+    DisplayRow(m, layout, result.inputs[i], result.outputs.row(i).data(), result.valid_order[i], result.singular[i] != 0, row.data());
+    for (; undefined != result.undefined.end() && undefined->row == i; ++undefined)
+      row[undefined->column + 1] = std::numeric_limits<double>::quiet_NaN();
+    emit(t, i, row.data());
+  }
   return t;
+}
+
+}  // namespace
+
+SweepTable Model::Sweep(double from, double to, double step, int order, AtBranchPoint action) const {
+  std::vector<double> values;
+  SweepTable t = SweepRows(*this, from, to, step, order, action, [&](const SweepTable& table, int i, const double* row) {
+    if (i == 0) values.reserve(static_cast<size_t>(table.rows) * table.columns.size());
+    values.insert(values.end(), row, row + table.columns.size());
+  });
+  t.values = std::move(values);
+  return t;
+}
+
+SweepTable Model::Sweep(double from, double to, double step, int order, AtBranchPoint action, const SweepRowSink& each_row) const {
+  return SweepRows(*this, from, to, step, order, action, each_row);
 }
 
 SweepTable Model::Sweep(int order) const { return Sweep(sweep_from(), sweep_to(), sweep_step(), order); }
 
 DeadCentres Model::FindDeadCentres(const std::string& output, std::optional<double> from, std::optional<double> to,
-                                   std::optional<double> step) const {
+                                   std::optional<double> step, AtBranchPoint action) const {
   const Mechanism& m = mechanism();
-  int index = -1;
-  for (int o = 0; o < static_cast<int>(m.outputs.size()) && index < 0; ++o) {
-    if (output.empty() ? m.outputs[o].Components() == 1 : m.outputs[o].name == output) index = o;
-  }
-  if (index < 0 || m.outputs[index].Components() != 1)
-    BadInput(path(), "output", output.empty() ? "the mechanism has no scalar output" : "'" + output + "' is not a scalar output");
-  const SweepOptions range = Options(*this, from.value_or(sweep_from()), to.value_or(sweep_to()), step.value_or(1.0), 2,
-                                     AtBranchPoint::kContinue);
+  const int index = ScalarOutput(*this, output);
+  const SweepOptions range = Options(*this, from.value_or(sweep_from()), to.value_or(sweep_to()), step.value_or(1.0), 2, action);
   const DeadCentreReport r = koppel::FindDeadCentres(m, index, 0, range);
   const bool angle_out = m.OutputIsAngle(index);
   auto value = [&](double v) { return angle_out ? RadToDeg(v) : v; };
@@ -146,6 +177,12 @@ DeadCentres Model::FindDeadCentres(const std::string& output, std::optional<doub
   for (double input : r.unresolved) d.unresolved.push_back(InputShown(m, input));
   d.singular_points = Shown(m, r.sweep.singular_points);
   d.gaps = Shown(m, r.sweep.gaps);
+  d.output = m.outputs[index].name;
+  d.transmission_angle = m.outputs[index].kind == OutputKind::kTransmissionAngle;
+  d.classified = r.classified;
+  d.search_message = r.message;
+  d.extremes_status = r.extremes.status;
+  d.sweep = Shown(m, r.sweep);
   return d;
 }
 
@@ -158,6 +195,7 @@ Ranges Model::DrivableRanges(bool all_branches, AtBranchPoint action) const {
   Ranges r;
   r.message = report.message;
   r.notes = report.notes;
+  r.walked = report.status == RangeStatus::kDone;
   r.status = report.status == RangeStatus::kDone && !report.HasFailure() ? AnalysisStatus::kComplete : AnalysisStatus::kFailed;
   if (report.status == RangeStatus::kDone && report.HasFailure() && r.message.empty()) r.message = "a walk failed: see the branches' messages";
   for (const BranchRange& b : report.branches) {

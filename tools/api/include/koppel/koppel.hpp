@@ -7,7 +7,10 @@
 #pragma once
 
 #include "koppel/api/catalog.hpp"
+#include "koppel/api/fit.hpp"
 #include "koppel/api/model.hpp"
+#include "koppel/api/proportionality.hpp"
+#include "koppel/api/simulation.hpp"
 #include "koppel/api/sweep_layout.hpp"
 #include "koppel/api/synthesis.hpp"
 #include "koppel/api/workspace.hpp"

@@ -26,6 +26,7 @@
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/singular.hpp"  // BranchPointAction
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -33,6 +34,9 @@
 #include <vector>
 
 namespace koppel {
+
+// The highest transfer-function order a sweep or pose computes (the solver's kMaxOrder).
+inline constexpr int kMaxTransferOrder = 8;
 
 // Parameter overrides: name -> formula over the file's parameters ("0.8", "l1/2").
 using ParameterValues = std::vector<std::pair<std::string, std::string>>;
@@ -84,6 +88,11 @@ struct SweepTable {
   std::vector<int> valid_order;             // per row: orders above this are NaN there
   std::vector<SingularPosition> singular_points;
   std::vector<InputGap> gaps;
+  // What the walk met (for koppel analyze's report and JSON), and its own outcome word:
+  // "complete", "partial", "not assemblable", ... (record.status is complete when every sample
+  // was reached, while `status` is partial also when an output has no number in some cells).
+  SweepRecord record;
+  std::string sweep_status;
 
   int ColumnIndex(const std::string& name) const;  // -1 when there is none
   // The column called `name`; InputError for a name the table does not have.
@@ -139,6 +148,16 @@ struct DeadCentres {
   std::vector<double> unresolved;  // [deg | length]: sign changes of y' not refined (a dead centre may be missing)
   std::vector<SingularPosition> singular_points;
   std::vector<InputGap> gaps;
+  // What koppel deadcentres prints besides: the output searched and whether it is a transmission
+  // angle (its summary is then its extremes, not a stroke); whether input_a / input_i come from
+  // the crank-coupler line-up (else from the maximum and minimum); the search's own message
+  // (unresolved sign changes; empty when it has none); the extremes' status; what the sweep met.
+  std::string output;
+  bool transmission_angle = false;
+  bool classified = false;
+  std::string search_message;
+  AnalysisStatus extremes_status = AnalysisStatus::kNotRun;
+  SweepRecord sweep;
   std::string Brief() const;
 };
 
@@ -155,6 +174,7 @@ struct BranchInterval {
 struct Ranges {
   AnalysisStatus status = AnalysisStatus::kNotRun;  // failed: not assemblable, or a walk failed
   std::string message;
+  bool walked = false;  // false: no branch could be walked (not assemblable); `message` says why
   std::vector<std::string> notes;
   std::vector<BranchInterval> branches;
   std::string Brief() const;
@@ -221,11 +241,17 @@ class Model {
   // The sweep of `koppel analyze`: from the assembly outward along the hint's branch.
   SweepTable Sweep(double from, double to, double step, int order = 2, AtBranchPoint at_branch_point = AtBranchPoint::kContinue) const;
   SweepTable Sweep(int order = 2) const;  // over the file's default sweep
+  // The same, each row handed to `each_row` (the table so far, without values; the row's index;
+  // its columns.size() values) as it is made instead of kept: `values` stays empty. For a table
+  // too long to hold twice (koppel analyze writes 360 001 rows as text).
+  using SweepRowSink = std::function<void(const SweepTable& table, int row, const double* values)>;
+  SweepTable Sweep(double from, double to, double step, int order, AtBranchPoint at_branch_point, const SweepRowSink& each_row) const;
 
   // The dead centres of scalar output `output` (empty: the first) over from..to by step, the
   // search resolution [deg | length]; unset: the file's sweep range, step 1 (as the CLI).
+  // The search follows the hint's branch as Sweep does, through branch points as `at_branch_point` says.
   DeadCentres FindDeadCentres(const std::string& output = "", std::optional<double> from = {}, std::optional<double> to = {},
-                              std::optional<double> step = {}) const;
+                              std::optional<double> step = {}, AtBranchPoint at_branch_point = AtBranchPoint::kContinue) const;
   // The drivable interval of the hint's branch, or of every branch koppel finds.
   Ranges DrivableRanges(bool all_branches = false, AtBranchPoint at_branch_point = AtBranchPoint::kContinue) const;
   // The singular positions a sweep over the file's range meets.

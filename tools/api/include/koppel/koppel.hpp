@@ -7,7 +7,9 @@
 #pragma once
 
 #include "koppel/api/catalog.hpp"
+#include "koppel/api/design_chart.hpp"
 #include "koppel/api/model.hpp"
+#include "koppel/api/motion_synthesis.hpp"
 #include "koppel/api/sweep_layout.hpp"
 #include "koppel/api/synthesis.hpp"
 #include "koppel/core/version.hpp"

@@ -1,10 +1,9 @@
 // koppel cognates: the two Roberts–Chebyshev cognates of a four-bar, as mechanism files.
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 
-#include "koppel/catalog/mechanism_writer.hpp"
-#include "koppel/core/angles.hpp"
-#include "koppel/synthesis/cognates.hpp"
+#include "koppel/api/synthesis.hpp"
 
 #include <filesystem>
 
@@ -20,46 +19,21 @@ struct Args {
 
 void Run(const Args& args) {
   CheckFormat(args.format);
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const PointRef point = ResolvePoint(file.mechanism, args.point, "--point");
-  const Cognates c = RobertsCognates(file.mechanism, point);
+  const Model model = LoadModel(args.file, args.sets);
+  ResolvePoint(model.mechanism(), args.point, "--point");  // a point not there: named with its flag, exit 2
+  const Designs c = Checked([&] { return FindCognates(model, args.point); });
   if (!c.ok()) {
     Complain(args.file + ": " + c.message);
     throw Exit{c.status == DesignStatus::kReanalysisFailed ? kExitFailed : kExitBadInput};
   }
+  for (const std::string& note : c.notes) Complain(args.file + ": note: " + note);
   MakeOutputDirectory(args.dir);
-  const std::string note = "Roberts–Chebyshev cognate of " + file.path + " (koppel cognates): traces the same curve of K.\n";
-  const SweepDefaults sweep = file.sweep;
-  // cognate 1 is driven by a link that follows the original coupler: sweep its own input range,
-  // a hundredth of a degree inside the dead centres at its ends
-  double lo = RadToDeg(c.first_input_min) + 0.01, hi = RadToDeg(c.first_input_max) - 0.01;
-  if (!(hi > lo)) {
-    // a coupler that only translates (a parallelogram): cognate 1's crank stands still while K
-    // moves, so its own input cannot drive it along the curve
-    Complain(args.file + ": note: cognate 1's crank follows the original coupler, which does not turn here: cognate 1 "
-             "cannot be driven by its crank (its file's sweep is its one pose)");
-    lo = hi = RadToDeg(0.5 * (c.first_input_min + c.first_input_max));
-  }
-  const SweepDefaults sweep_first{lo, hi, hi > lo ? (hi - lo) / 180 : 1.0};
-  const std::string first = (std::filesystem::path(args.dir) / (c.first.name + ".yaml")).string();
-  const std::string second = (std::filesystem::path(args.dir) / (c.second.name + ".yaml")).string();
-  WriteOutput(first, WriteMechanismYaml(c.first, note + "Pivots A0 and C0; its crank A0A1 turns with the original coupler.", sweep_first));
-  WriteOutput(second, WriteMechanismYaml(c.second, note + "Pivots C0 and B0; its crank C0C2 turns with the original crank: same input.", sweep));
   Summary s;
-  s.Add("cognate1_A0C0", c.frame_first, file.loads.LengthUnit());
-  s.Add("cognate1_A0A1", c.crank_first, file.loads.LengthUnit());
-  s.Add("cognate1_A1C1", c.coupler_first, file.loads.LengthUnit());
-  s.Add("cognate1_C0C1", c.rocker_first, file.loads.LengthUnit());
-  s.Add("cognate1_A1K", c.k_first, file.loads.LengthUnit());
-  s.Add("cognate1_C1K", c.l_first, file.loads.LengthUnit());
-  s.Add("cognate1_input_min", RadToDeg(c.first_input_min), "deg");
-  s.Add("cognate1_input_max", RadToDeg(c.first_input_max), "deg");
-  s.Add("cognate2_C0B0", c.frame_second, file.loads.LengthUnit());
-  s.Add("cognate2_C0C2", c.crank_second, file.loads.LengthUnit());
-  s.Add("cognate2_C2B2", c.coupler_second, file.loads.LengthUnit());
-  s.Add("cognate2_B0B2", c.rocker_second, file.loads.LengthUnit());
-  s.Add("cognate2_B2K", c.k_second, file.loads.LengthUnit());
-  s.Add("cognate2_C2K", c.l_second, file.loads.LengthUnit());
+  for (size_t i = 0; i < c.designs.size(); ++i) {
+    const Design& d = c.designs[i];
+    WriteOutput((std::filesystem::path(args.dir) / (d.model->name() + ".yaml")).string(), d.yaml);
+    for (const DesignFigure& f : d.figures) s.Add("cognate" + std::to_string(i + 1) + "_" + f.name, f.value, f.unit);
+  }
   WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv());
 }
 

@@ -2,21 +2,15 @@
 // and least-squares fitting (synth fit, in fit_command.cpp).
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 
-#include "koppel/catalog/mechanism_writer.hpp"
-#include "koppel/core/angles.hpp"
-#include "koppel/synthesis/cognates.hpp"
-#include "koppel/synthesis/deadcentre_synthesis.hpp"
-#include "koppel/synthesis/mzc_synthesis.hpp"
-#include "koppel/solver/sweep.hpp"
+#include "koppel/api/design_chart.hpp"
+#include "koppel/api/synthesis.hpp"
 
 #include <fmt/core.h>
 
-#include <atomic>
-#include <functional>
 #include <iostream>
 #include <optional>
-#include <thread>
 
 namespace koppel::cli {
 namespace synth_command {  // this file's own names, apart from the other commands' in a unity build
@@ -33,8 +27,9 @@ struct Args {
   bool quiet = false;
 };
 
-// "a:b:d" -> values a, a + d, ..., <= b (degrees)
-std::vector<double> Range(const std::string& flag, const std::string& text) {
+// "a:b:d" [deg] -> the chart's range; empty: `fallback` (the chart's default)
+ChartRange Range(const std::string& flag, const std::string& text, const ChartRange& fallback) {
+  if (text.empty()) return fallback;
   const auto c1 = text.find(':'), c2 = text.rfind(':');
   if (c1 == std::string::npos || c1 == c2) {
     Complain(flag + ": expected FROM:TO:STEP, found '" + text + "'");
@@ -47,9 +42,7 @@ std::vector<double> Range(const std::string& flag, const std::string& text) {
     throw Exit{kExitBadInput};
   }
   CheckSampleCount(a, b, d, flag + " FROM:TO:STEP", kChartCells);
-  std::vector<double> values;
-  for (int i = 0; a + i * d <= b + 1e-9 * d; ++i) values.push_back(a + i * d);
-  return values;
+  return {a, b, d};
 }
 
 double Required(const std::string& flag, const std::string& text) {
@@ -60,117 +53,73 @@ double Required(const std::string& flag, const std::string& text) {
   return ParseNumberFlag(flag, text);
 }
 
+std::optional<double> Optional(const std::string& flag, const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  return ParseNumberFlag(flag, text);
+}
+
 // --rocker-sense: same | opposite (| both for the chart)
-std::vector<RockerSense> RockerSenses(const std::string& text, bool allow_both) {
-  if (text == "same") return {RockerSense::kSame};
-  if (text == "opposite") return {RockerSense::kOpposite};
-  if (allow_both && text == "both") return {RockerSense::kSame, RockerSense::kOpposite};
+void CheckRockerSense(const std::string& text, bool allow_both) {
+  if (text == "same" || text == "opposite" || (allow_both && text == "both")) return;
   Complain(std::string("--rocker-sense must be same") + (allow_both ? ", opposite or both" : " or opposite") + ", not '" + text + "'");
   throw Exit{kExitBadInput};
 }
 
-void Emit(const Args& args, const Summary& s) { WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv()); }
+// A design's figures as the summary table; its mechanism file with -o.
+void Emit(const Args& args, const Design& d) {
+  if (!args.yaml.empty()) WriteOutput(args.yaml, d.yaml);
+  Summary s;
+  for (const DesignFigure& f : d.figures) s.Add(f.name, f.value, f.unit);
+  WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv());
+}
 
-// A refused design: the reason on stderr, exit 2 for a malformed request, else 1.
-void Refuse(DesignStatus status, const std::string& message) {
-  Complain(message);
-  throw Exit{status == DesignStatus::kInvalidRequest ? kExitBadInput : kExitFailed};
+// A refused design: the reason on stderr, exit 1 (a malformed request is InputError: exit 2).
+void Refuse(const Design& d) {
+  Complain(d.message);
+  throw Exit{kExitFailed};
 }
 
 void RunCrankRocker(const Args& args, double phi0) {
-  CrankRockerRequest request;
-  request.phi0 = phi0;
-  request.psi0 = DegToRad(Required("--psi0", args.psi0));
-  request.rocker_sense = RockerSenses(args.rocker_sense, false).front();
-  request.frame_length = ParseNumberFlag("--frame", args.frame);
+  CrankRockerSpec spec;
+  spec.phi0 = phi0;
+  spec.psi0 = Required("--psi0", args.psi0);
+  CheckRockerSense(args.rocker_sense, false);
+  spec.same_sense = args.rocker_sense == "same";
+  spec.frame = ParseNumberFlag("--frame", args.frame);
   if (args.sense != "ccw" && args.sense != "cw") {
     Complain("--sense must be ccw or cw");
     throw Exit{kExitBadInput};
   }
+  spec.clockwise = args.sense == "cw";  // the written mechanism is the mirror image
   if (!args.beta.empty() && !args.lambda_cr.empty()) {
     Complain("give --beta or --lambda, not both");
     throw Exit{kExitBadInput};
   }
-  const CrankRockerDesign d = !args.beta.empty()        ? CrankRockerFromBeta(request, DegToRad(ParseNumberFlag("--beta", args.beta)))
-                              : !args.lambda_cr.empty() ? CrankRockerFromLambda(request, ParseNumberFlag("--lambda", args.lambda_cr))
-                                                        : BestCrankRocker(request);
-  if (!d.ok()) Refuse(d.status, d.message);
-  // the written mechanism turns its crank in --sense: clockwise is the mirror image
-  const double turn = args.sense == "cw" ? -1 : 1;
-  Summary s;
-  s.Add("phi0", RadToDeg(request.phi0), "deg");
-  s.Add("psi0", RadToDeg(request.psi0), "deg");
-  s.Add("rocker_sense", request.rocker_sense == RockerSense::kSame ? 1 : -1, "same=1");
-  s.Add("beta", RadToDeg(d.beta), "deg");
-  s.Add("lambda", d.lambda, "1");
-  s.Add("l1", d.l1, "length");
-  s.Add("l2", d.l2, "length");
-  s.Add("l3", d.l3, "length");
-  s.Add("l4", d.l4, "length");
-  s.Add("mu_min", RadToDeg(d.mu_min), "deg");
-  s.Add("mu_min_at", RadToDeg(turn * d.mu_min_at), "deg");
-  s.Add("phi_a", RadToDeg(turn * d.phi_a), "deg");
-  s.Add("phi_i", RadToDeg(turn * d.phi_i), "deg");
-  s.Add("beta_L", RadToDeg(d.beta_l), "deg");
-  s.Add("beta_E", RadToDeg(d.beta_e), "deg");
-  s.Add("reanalysed_phi0", RadToDeg(d.reanalysed_phi0), "deg");
-  s.Add("reanalysed_psi0", RadToDeg(std::abs(d.reanalysed_psi)), "deg");
-  s.Add("sense", turn, "ccw=1");
-  if (!args.yaml.empty()) {
-    const Mechanism designed = args.sense == "cw" ? MirrorMechanism(CrankRockerMechanism(d)) : CrankRockerMechanism(d);
-    WriteOutput(args.yaml,
-                WriteMechanismYaml(designed,
-                                   fmt::format("Crank-rocker from dead-centre synthesis (koppel synth): phi0 = {:.10g} deg, psi0 = {:.10g} deg, beta = {:.10g} deg,\n"
-                                               "rocker sense {}. Input phi: crank angle against A0B0, counter-clockwise; the crank runs {}.\n"
-                                               "From the folded dead centre (phi = {:.10g} deg) to the extended one (phi = {:.10g} deg) the crank turns\n"
-                                               "by phi0 and the rocker by psi0, {}.",
-                                               RadToDeg(request.phi0), RadToDeg(request.psi0), RadToDeg(d.beta), ToString(request.rocker_sense),
-                                               args.sense == "cw" ? "clockwise" : "counter-clockwise", RadToDeg(turn * d.phi_i),
-                                               RadToDeg(turn * d.phi_a),
-                                               request.rocker_sense == RockerSense::kSame ? "both the same way" : "in opposite senses"),
-                                   {0, 360, 1}));
-  }
-  Emit(args, s);
+  spec.beta = Optional("--beta", args.beta);
+  spec.lambda = Optional("--lambda", args.lambda_cr);
+  const Design d = Checked([&] { return SynthesiseCrankRocker(spec); });
+  if (!d.ok()) Refuse(d);
+  Emit(args, d);
 }
 
 void RunSliderCrank(const Args& args, double phi0) {
-  SliderCrankRequest request;
-  request.phi0 = phi0;
-  request.stroke = Required("--stroke", args.stroke);
+  SliderCrankSpec spec;
+  spec.phi0 = phi0;
+  spec.stroke = Required("--stroke", args.stroke);
   if (!args.offset.empty() && !args.beta.empty()) {
     Complain("give --offset or --beta, not both");
     throw Exit{kExitBadInput};
   }
-  const SliderCrankDesign d = !args.offset.empty() ? SliderCrankFromOffset(request, ParseNumberFlag("--offset", args.offset))
-                              : !args.beta.empty() ? SliderCrankFromBeta(request, DegToRad(ParseNumberFlag("--beta", args.beta)))
-                                                   : BestSliderCrank(request);
-  if (!d.ok()) Refuse(d.status, d.message);
-  Summary s;
-  s.Add("phi0", RadToDeg(request.phi0), "deg");
-  s.Add("stroke", request.stroke, "length");
-  s.Add("e", d.e, "length");
-  s.Add("l1", d.l1, "length");
-  s.Add("l2", d.l2, "length");
-  s.Add("e_s0", d.e / request.stroke, "1");
-  s.Add("beta", RadToDeg(d.beta), "deg");
-  s.Add("mu_min", RadToDeg(d.mu_min), "deg");
-  s.Add("mu_min_at", RadToDeg(d.mu_min_at), "deg");
-  s.Add("offset_max", d.offset_max, "length");
-  s.Add("beta_max", RadToDeg(d.beta_max), "deg");
-  s.Add("reanalysed_phi0", RadToDeg(d.reanalysed_phi0), "deg");
-  s.Add("reanalysed_stroke", d.reanalysed_stroke, "length");
-  if (!args.yaml.empty())
-    WriteOutput(args.yaml, WriteMechanismYaml(SliderCrankMechanism(d),
-                                              fmt::format("Slider-crank from dead-centre synthesis (koppel synth): phi0 = {:.10g} deg, stroke = {:.10g}, e = {:.10g}.\n"
-                                                          "Conventions of seed 000: A0 = (0, -e), phi from -y counter-clockwise, s from the foot point.",
-                                                          RadToDeg(request.phi0), request.stroke, d.e),
-                                              {0, 360, 1}));
-  Emit(args, s);
+  spec.offset = Optional("--offset", args.offset);
+  spec.beta = Optional("--beta", args.beta);
+  const Design d = Checked([&] { return SynthesiseSliderCrank(spec); });
+  if (!d.ok()) Refuse(d);
+  Emit(args, d);
 }
 
 void RunDeadCentre(const Args& args) {
   CheckFormat(args.format);
-  const double phi0 = DegToRad(Required("--phi0", args.phi0));
+  const double phi0 = Required("--phi0", args.phi0);
   if (args.type == "crank-rocker") {
     RunCrankRocker(args, phi0);
   } else if (args.type == "slider-crank") {
@@ -181,180 +130,70 @@ void RunDeadCentre(const Args& args) {
   }
 }
 
-// A chart: numbers, words (sense, status) and empty cells where no design exists.
-struct Chart {
-  struct Cell {
-    std::optional<double> number;
-    std::string word;
-  };
-  std::vector<std::string> columns;
-  std::vector<std::vector<Cell>> rows;
-
-  std::string ToCsv() const {
-    std::string out;
-    for (size_t i = 0; i < columns.size(); ++i) out += (i ? "," : "") + columns[i];
+std::string ChartCsv(const DesignChart& chart) {
+  std::string out;
+  for (size_t i = 0; i < chart.columns.size(); ++i) out += (i ? "," : "") + chart.columns[i];
+  out += "\n";
+  for (const auto& row : chart.rows) {
+    for (size_t i = 0; i < row.size(); ++i) out += (i ? "," : "") + (row[i].number ? FormatNumber(*row[i].number) : row[i].word);
     out += "\n";
-    for (const auto& row : rows) {
-      for (size_t i = 0; i < row.size(); ++i) out += (i ? "," : "") + (row[i].number ? FormatNumber(*row[i].number) : row[i].word);
-      out += "\n";
-    }
-    return out;
   }
-  nlohmann::json ToJson() const {
-    nlohmann::json rows_json = nlohmann::json::array();
-    for (const auto& row : rows) {
-      nlohmann::json r = nlohmann::json::array();
-      for (const Cell& c : row) {
-        if (c.number) r.push_back(std::stod(FormatNumber(*c.number)));
-        else if (!c.word.empty()) r.push_back(c.word);
-        else r.push_back(nullptr);
-      }
-      rows_json.push_back(r);
-    }
-    return {{"columns", columns}, {"rows", rows_json}};
-  }
-};
-
-// ok; none: no design exists; boundary: the best design degenerates; failed: re-analysis refused it
-std::string ChartStatus(DesignStatus status) {
-  switch (status) {
-    case DesignStatus::kOk: return "ok";
-    case DesignStatus::kBoundaryOptimum: return "boundary";
-    case DesignStatus::kReanalysisFailed: return "failed";
-    default: return "none";
-  }
+  return out;
 }
 
-std::vector<Chart::Cell> ChartRow(std::vector<Chart::Cell> keys, DesignStatus status, const std::vector<double>& values) {
-  keys.push_back({std::nullopt, ChartStatus(status)});
-  for (double v : values) keys.push_back(status == DesignStatus::kOk ? Chart::Cell{v, ""} : Chart::Cell{});
-  return keys;
-}
-
-// Runs design(i) for i < n on every core (each design is independent and proved by its own
-// re-analysis), with progress on stderr unless quiet.
-template <class Design>
-std::vector<Design> DesignAll(size_t n, const std::function<Design(size_t)>& design, bool quiet) {
-  std::vector<Design> designs(n);
-  std::atomic<size_t> next{0}, done{0};
-  auto work = [&] {
-    for (size_t i = next++; i < n; i = next++) {
-      designs[i] = design(i);
-      ++done;
+// {"columns", "rows"}: a number, a word, or null where no design exists
+nlohmann::json ChartJson(const DesignChart& chart) {
+  nlohmann::json rows_json = nlohmann::json::array();
+  for (const auto& row : chart.rows) {
+    nlohmann::json r = nlohmann::json::array();
+    for (const ChartCell& c : row) {
+      if (c.number) r.push_back(std::stod(FormatNumber(*c.number)));
+      else if (!c.word.empty()) r.push_back(c.word);
+      else r.push_back(nullptr);
     }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
-  if (!quiet) std::cerr << fmt::format("koppel synth chart: {} designs\n", done.load());
-  return designs;
+    rows_json.push_back(r);
+  }
+  return {{"columns", chart.columns}, {"rows", rows_json}};
 }
 
 void RunChart(const Args& args) {
   CheckFormat(args.format);
-  Chart chart;
-  if (args.type == "crank-rocker") {
-    const auto phis = Range("--phi0", args.phi0.empty() ? "150:210:2" : args.phi0);
-    const auto psis = Range("--psi0", args.psi0.empty() ? "20:100:2" : args.psi0);
-    CheckCount(static_cast<double>(phis.size()) * static_cast<double>(psis.size()), "--phi0/--psi0 steps", kChartCells);
-    const auto senses = RockerSenses(args.rocker_sense, true);
-    chart.columns = {"phi0", "psi0", "rocker_sense", "status", "beta", "mu_min", "l1", "l2", "l3", "l4", "beta_L", "beta_E"};
-    std::vector<CrankRockerRequest> requests;
-    for (double phi : phis) {
-      for (RockerSense sense : senses) {
-        for (double psi : psis) {
-          CrankRockerRequest request;
-          request.phi0 = DegToRad(phi);
-          request.psi0 = DegToRad(psi);
-          request.rocker_sense = sense;
-          if (std::string why; !request.IsValid(&why)) Refuse(DesignStatus::kInvalidRequest, why);
-          requests.push_back(request);
-        }
-      }
-    }
-    const auto designs = DesignAll<CrankRockerDesign>(requests.size(), [&](size_t i) { return BestCrankRocker(requests[i]); }, args.quiet);
-    for (const CrankRockerDesign& d : designs) {
-      const CrankRockerRequest& r = d.request;
-      chart.rows.push_back(ChartRow({{RadToDeg(r.phi0), ""}, {RadToDeg(r.psi0), ""}, {std::nullopt, ToString(r.rocker_sense)}}, d.status,
-                                    {RadToDeg(d.beta), RadToDeg(d.mu_min), d.l1, d.l2, d.l3, d.l4, RadToDeg(d.beta_l), RadToDeg(d.beta_e)}));
-    }
-  } else if (args.type == "slider-crank") {
-    const auto phis = Range("--phi0", args.phi0.empty() ? "90:180:2" : args.phi0);
-    chart.columns = {"phi0", "status", "e_s0", "l1_s0", "l2_s0", "mu_min", "beta"};
-    std::vector<SliderCrankRequest> requests;
-    for (double phi : phis) {
-      SliderCrankRequest request;
-      request.phi0 = DegToRad(phi);
-      request.stroke = 1.0;
-      if (std::string why; !request.IsValid(&why)) Refuse(DesignStatus::kInvalidRequest, why);
-      requests.push_back(request);
-    }
-    const auto designs = DesignAll<SliderCrankDesign>(requests.size(), [&](size_t i) { return BestSliderCrank(requests[i]); }, args.quiet);
-    for (const SliderCrankDesign& d : designs)
-      chart.rows.push_back(ChartRow({{RadToDeg(d.request.phi0), ""}}, d.status, {d.e, d.l1, d.l2, RadToDeg(d.mu_min), RadToDeg(d.beta)}));
-  } else {
+  if (args.type != "crank-rocker" && args.type != "slider-crank") {
     Complain("synth chart: TYPE must be crank-rocker or slider-crank");
     throw Exit{kExitBadInput};
   }
-  WriteOutput(args.out, args.format == "json" ? JsonText(chart.ToJson()) : chart.ToCsv());
+  ChartSpec spec = Checked([&] { return DefaultChart(args.type); });
+  spec.phi0 = Range("--phi0", args.phi0, spec.phi0);
+  if (args.type == "crank-rocker") {
+    spec.psi0 = Range("--psi0", args.psi0, spec.psi0);
+    CheckCount(Checked([&] { return spec.phi0.Count("phi0") * spec.psi0.Count("psi0"); }), "--phi0/--psi0 steps", kChartCells);
+    CheckRockerSense(args.rocker_sense, true);
+    spec.rocker_sense = args.rocker_sense;
+  }
+  const DesignChart chart = Checked([&] { return SynthesiseChart(spec); });
+  if (!args.quiet) std::cerr << fmt::format("koppel synth chart: {} designs\n", chart.designs);
+  WriteOutput(args.out, args.format == "json" ? JsonText(ChartJson(chart)) : ChartCsv(chart));
 }
 
 void RunMzc(const Args& args) {
   CheckFormat(args.format);
-  double lambda = 0;
-  if (!args.kappa.empty()) {
-    const Expected<double> from_kappa = LambdaFromKappa(DegToRad(ParseNumberFlag("--kappa", args.kappa)));
-    if (!from_kappa) {
-      Complain("--kappa: " + from_kappa.error());
-      throw Exit{kExitBadInput};
-    }
-    lambda = *from_kappa;
-  } else {
-    lambda = Required("--lambda", args.lambda);
-  }
-  const MzcDesign d = MzcFromLambda(lambda, ParseNumberFlag("--D", args.diameter));
+  MzcSpec spec;
+  if (!args.kappa.empty()) spec.kappa = ParseNumberFlag("--kappa", args.kappa);
+  else spec.lambda = Required("--lambda", args.lambda);
+  spec.diameter = ParseNumberFlag("--D", args.diameter);
+  const Design d = Checked([&] { return SynthesiseMzc(spec); });
   if (!d.ok()) {
     Complain(d.message);
     throw Exit{kExitBadInput};
   }
-  const Mechanism m = MzcMechanism(d);
-  const int contact = TangentContactOrder(m, {2, 2}, m.hint.input, 1e-9);
-  Summary s;
-  s.Add("lambda", d.lambda, "1");
-  s.Add("D", d.D, "length");
-  s.Add("phi0", RadToDeg(d.phi0), "deg");
-  s.Add("kappa", RadToDeg(d.kappa), "deg");
-  s.Add("l1", d.l1, "length");
-  s.Add("l2", d.l2, "length");
-  s.Add("l3", d.l3, "length");
-  s.Add("l4", d.l4, "length");
-  s.Add("k", d.k, "length");
-  s.Add("contact_points", contact, "1");
-  const Cognates c = RobertsCognates(m, {2, 2});
-  if (c.ok()) {
-    // the cognate whose crank turns with the double rocker's coupler is the crank-rocker
-    s.Add("crank_rocker_l1", c.crank_first, "length");
-    s.Add("crank_rocker_l2", c.coupler_first, "length");
-    s.Add("crank_rocker_l3", c.rocker_first, "length");
-    s.Add("crank_rocker_l4", c.frame_first, "length");
-    s.Add("crank_rocker_AK", c.k_first, "length");
+  if (!args.cognates_dir.empty()) {
+    const Design crank_rocker = MzcCrankRocker(d);
+    if (crank_rocker.ok()) {
+      MakeOutputDirectory(args.cognates_dir);
+      WriteOutput(args.cognates_dir + "/" + crank_rocker.model->name() + ".yaml", crank_rocker.yaml);
+    }
   }
-  if (!args.yaml.empty()) {
-    // the double rocker's own input range, a hundredth of a degree inside its limit positions
-    const InputRange range = DrivableRange(m, kPi, DegToRad(1));
-    const double lo = RadToDeg(range.low) + 0.01, hi = RadToDeg(range.high) - 0.01;
-    WriteOutput(args.yaml, WriteMechanismYaml(m, fmt::format("Meyer zur Capellen straight-line linkage (koppel synth mzc): lambda = {}, D = {}.\n"
-                                                             "Assembled in the crossed symmetric position; K is the inflection pole there.",
-                                                             d.lambda, d.D),
-                                              {lo, hi, (hi - lo) / 200}));
-  }
-  if (!args.cognates_dir.empty() && c.ok()) {
-    MakeOutputDirectory(args.cognates_dir);
-    WriteOutput(args.cognates_dir + "/" + c.first.name + ".yaml",
-                WriteMechanismYaml(c.first, "Crank-rocker cognate of a Meyer zur Capellen linkage (koppel synth mzc).", {0, 360, 1}));
-  }
-  Emit(args, s);
+  Emit(args, d);
 }
 
 }  // namespace

@@ -3,14 +3,11 @@
 #include "common.hpp"
 #include "model_loading.hpp"
 
-#include "koppel/catalog/mechanism_writer.hpp"
-#include "koppel/catalog/synthesis_spec.hpp"
-#include "koppel/core/angles.hpp"
-#include "koppel/synthesis/motion_dyads.hpp"
-#include "koppel/synthesis/motion_synthesis.hpp"
+#include "koppel/api/motion_synthesis.hpp"
 
 #include <fmt/core.h>
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
@@ -23,11 +20,6 @@ struct Args {
   std::vector<std::string> circle_points;
 };
 
-Eigen::Vector2d ParsePoint(const std::string& flag, const std::string& text) {
-  const std::vector<double> xy = ParseNumberListFlag(flag, text, 2, "X,Y");
-  return {xy[0], xy[1]};
-}
-
 int Whole(const std::string& flag, const std::string& text, int lo, int hi) {
   const double v = ParseNumberFlag(flag, text);
   if (v != std::floor(v) || v < lo || v > hi) {
@@ -37,137 +29,85 @@ int Whole(const std::string& flag, const std::string& text, int lo, int hi) {
   return static_cast<int>(v);
 }
 
-// Circle points on an n x n grid over the poses' box, enlarged by their size each way.
-std::vector<Eigen::Vector2d> Grid(const std::vector<Pose>& poses, int n) {
-  Eigen::Vector2d lo = poses[0].point, hi = poses[0].point;
-  for (const Pose& p : poses) {
-    lo = lo.cwiseMin(p.point);
-    hi = hi.cwiseMax(p.point);
-  }
-  const double margin = PoseScale(poses);
-  lo.array() -= margin;
-  hi.array() += margin;
-  std::vector<Eigen::Vector2d> points;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) points.push_back(lo + Eigen::Vector2d((hi.x() - lo.x()) * (i + 0.5) / n, (hi.y() - lo.y()) * (j + 0.5) / n));
-  return points;
+[[noreturn]] void BadFlags(const std::string& message) {
+  Complain(message);
+  throw Exit{kExitBadInput};
 }
 
-// The dyads the request asks for, by the number of poses (motion_dyads.hpp).
-std::vector<Dyad> Dyads(const Args& args, const std::vector<Pose>& poses) {
-  const int n = static_cast<int>(poses.size());
-  DyadRequest request;
-  for (const std::string& c : args.circle_points) request.circle_points.push_back(ParsePoint("--circle-point", c));
+// The request from the flags; which flags belong to how many poses (motion_dyads.hpp).
+MotionSpec Spec(const Args& args, std::vector<MotionPose> poses) {
+  const size_t n = poses.size();
+  MotionSpec spec;
+  spec.poses = std::move(poses);
+  for (const std::string& c : args.circle_points) {
+    const std::vector<double> xy = ParseNumberListFlag("--circle-point", c, 2, "X,Y");
+    spec.circle_points.emplace_back(xy[0], xy[1]);
+  }
   if (!args.grid.empty()) {
-    if (n != 3) {
-      Complain("--grid is for three poses (a family of dyads from a grid of circle points)");
-      throw Exit{kExitBadInput};
-    }
-    for (const Eigen::Vector2d& p : Grid(poses, Whole("--grid", args.grid, 1, 100))) request.circle_points.push_back(p);
-    request.skip_unsolvable = true;
+    if (n != 3) BadFlags("--grid is for three poses (a family of dyads from a grid of circle points)");
+    spec.grid = Whole("--grid", args.grid, 1, 100);
   }
-  if (n == 5 && !request.circle_points.empty()) {
-    Complain("five poses fix the dyads (the Ball-Burmester points): no --circle-point");
-    throw Exit{kExitBadInput};
-  }
-  if ((n == 2 || n == 3) && request.circle_points.empty()) {
-    Complain(n == 2 ? "two poses: give the circle points (--circle-point X,Y, twice for a four-bar)"
+  if (n == 5 && !spec.circle_points.empty()) BadFlags("five poses fix the dyads (the Ball-Burmester points): no --circle-point");
+  if ((n == 2 || n == 3) && spec.circle_points.empty() && spec.grid == 0)
+    BadFlags(n == 2 ? "two poses: give the circle points (--circle-point X,Y, twice for a four-bar)"
                     : "three poses: give --circle-point X,Y (twice for a four-bar) or --grid N");
-    throw Exit{kExitBadInput};
-  }
-  if (n == 4) request.curve_samples = Whole("--samples", args.samples, 1, 1000);
-  if (n == 2) request.crank_turn = DegToRad(ParseNumberFlag("--crank-turn", args.crank_turn));
-  const DyadChoice choice = DyadsForPoses(poses, request);
-  if (!choice.message.empty()) Complain(args.poses + ": " + choice.message);
-  if (choice.status == BurmesterStatus::kInvalidRequest) throw Exit{kExitBadInput};
-  // five poses without a real Ball-Burmester point: no dyad, reported below
-  if (!choice.ok() && n != 5) throw Exit{kExitFailed};
-  return choice.dyads;
+  if (n == 4) spec.curve_samples = Whole("--samples", args.samples, 1, 1000);
+  if (n == 2) spec.crank_turn = ParseNumberFlag("--crank-turn", args.crank_turn);
+  if (!args.require.empty() && args.require != "crank") BadFlags("--require: only 'crank' (the input turns fully)");
+  spec.require_crank = args.require == "crank";
+  if (!args.threads.empty()) spec.threads = Whole("--threads", args.threads, 0, kMaxThreads);
+  return spec;
 }
 
 // The four-poses curves as a CSV: one row per sample.
-void WriteCurves(const Args& args, const std::vector<Pose>& poses) {
-  if (poses.size() != 4) {
-    Complain("--curves is for four poses (the centre-point and circle-point curves)");
-    throw Exit{kExitBadInput};
-  }
-  const BurmesterCurves curves = CentrePointCurve(poses, 360);
-  if (!curves.ok()) {
+void WriteCurves(const Args& args, const std::vector<MotionPose>& poses) {
+  if (poses.size() != 4) BadFlags("--curves is for four poses (the centre-point and circle-point curves)");
+  const BurmesterCurveTable curves = Checked([&] { return MotionCurves(poses); });
+  if (curves.status != DesignStatus::kOk) {
     Complain(args.poses + ": " + curves.message);
     throw Exit{kExitFailed};
   }
-  Table t;
-  t.columns = {"direction", "centre_x", "centre_y", "circle_x", "circle_y"};
-  for (const BurmesterCurveSample& s : curves.samples)
-    t.rows.push_back({RadToDeg(s.direction), s.dyad.centre.x(), s.dyad.centre.y(), s.dyad.circle.x(), s.dyad.circle.y()});
-  WriteOutput(args.curves, t.ToCsv());
+  WriteOutput(args.curves, Table{curves.table.columns, curves.table.rows}.ToCsv());
 }
 
-std::string Comment(const MotionFourBar& f, int rank, const std::string& poses) {
-  const bool full = f.crank_turns_fully;
-  return fmt::format("Four-bar {} of koppel synth motion {} (Burmester). The coupler is the moving plane: its point P and\n"
-                     "its angle theta pass through every pose (re-analysis error {:.3g}). Grashof type {}; branch defect {}; order\n"
-                     "defect {}; the input phi (crank angle against +x) {}; mu_min over the poses' travel {:.6g} deg.\n"
-                     "Crank angles of the poses: {} deg.",
-                     rank, poses, f.pose_error, ToString(f.grashof), f.branch_defect ? "yes" : "no", f.order_defect ? "yes" : "no",
-                     full ? "turns fully" : fmt::format("reaches {:.6g} .. {:.6g} deg on this branch", RadToDeg(f.drive_from), RadToDeg(f.drive_to)),
-                     RadToDeg(f.mu_min), [&] {
-                       std::string s;
-                       for (double v : f.pose_inputs) s += fmt::format("{}{:.6g}", s.empty() ? "" : ", ", RadToDeg(v));
-                       return s;
-                     }());
+// One row per four-bar (the best `shown`), each also a mechanism file with -o DIR.
+void WriteDesigns(const Args& args, const MotionReport& report, size_t shown) {
+  MixedTable table;
+  table.columns = {"A0_x", "A0_y", "A_x", "A_y", "B_x", "B_y", "B0_x", "B0_y", "grashof", "branch_defect", "order_defect", "mu_min"};
+  if (!args.dir.empty()) MakeOutputDirectory(args.dir);
+  for (size_t i = 0; i < shown; ++i) {
+    const Design& d = report.designs[i];
+    std::vector<MixedTable::Cell> row;
+    for (const char* name : {"A0_x", "A0_y", "A_x", "A_y", "B_x", "B_y", "B0_x", "B0_y"}) row.emplace_back(d.Get(name));
+    row.emplace_back(d.message);  // the Grashof type
+    for (const char* name : {"branch_defect", "order_defect", "mu_min"}) row.emplace_back(d.Get(name));
+    table.rows.push_back(std::move(row));
+    if (!args.dir.empty()) WriteOutput((std::filesystem::path(args.dir) / (d.model->name() + ".yaml")).string(), d.yaml);
+  }
+  WriteOutput(args.out, table.Text(args.format));
 }
 
 void Run(const Args& args) {
   CheckFormat(args.format);
-  MotionSpecFile spec = Checked([&] { return ReadMotionSpec(args.poses); });  // bad input: its diagnostics, exit 2
-  MotionOptions options;
-  if (!args.require.empty()) {
-    if (args.require != "crank") {
-      Complain("--require: only 'crank' (the input turns fully)");
-      throw Exit{kExitBadInput};
-    }
-    options.require_crank = true;
-  }
-  if (!args.threads.empty()) options.threads = Whole("--threads", args.threads, 0, kMaxThreads);
+  std::vector<MotionPose> poses = Checked([&] { return ReadMotionPoses(args.poses); });  // bad input: its diagnostics, exit 2
+  const size_t n = poses.size();
+  const MotionSpec spec = Spec(args, std::move(poses));
   const int top = args.top.empty() ? 0 : Whole("--top", args.top, 1, 1'000'000);
   if (!args.curves.empty()) WriteCurves(args, spec.poses);
-  const std::vector<Dyad> dyads = Dyads(args, spec.poses);
-  // the work, estimated before it starts: every ordered pair of dyads is re-analysed
-  if (const double four_bars = static_cast<double>(MotionFourBarCount(dyads.size(), options)); four_bars > kMotionFourBars.value) {
-    Complain(fmt::format("{}: {} dyads make {:.3g} four-bars to re-analyse, more than the limit of {:.0f} ({}, about 2.5 ms each; see "
+  const MotionReport report = Checked([&] { return SynthesiseMotionReport(spec, args.poses); });
+  for (const std::string& note : report.notes) Complain(args.poses + ": " + note);
+  if (report.status == DesignStatus::kInvalidRequest)  // the work, estimated before it starts
+    BadFlags(fmt::format("{}: {} dyads make {:.3g} four-bars to re-analyse, more than the limit of {:.0f} ({}, about 2.5 ms each; see "
                          "README 'Limits'): fewer dyads",
-                         spec.poses.size() == 3 ? "--grid/--circle-point" : "--samples", dyads.size(), four_bars, kMotionFourBars.value,
-                         kMotionFourBars.name));
-    throw Exit{kExitBadInput};
-  }
-
-  const MotionResult result = FourBarsFromDyads(spec.poses, dyads, options);
-  std::cerr << fmt::format("koppel synth motion: {} poses, {} dyads, {} four-bars re-analysed through every pose{}\n", spec.poses.size(),
-                           dyads.size(), result.four_bars.size(),
-                           options.require_crank ? fmt::format(", {} without a crank left out", result.rejected) : "");
-  MixedTable table;
-  table.columns = {"A0_x", "A0_y", "A_x", "A_y", "B_x", "B_y", "B0_x", "B0_y", "grashof", "branch_defect", "order_defect", "mu_min"};
-  const size_t shown = top > 0 ? std::min<size_t>(top, result.four_bars.size()) : result.four_bars.size();
-  if (!args.dir.empty()) MakeOutputDirectory(args.dir);
-  for (size_t i = 0; i < shown; ++i) {
-    const MotionFourBar& f = result.four_bars[i];
-    table.rows.push_back({f.crank.centre.x(), f.crank.centre.y(), f.crank.circle.x(), f.crank.circle.y(), f.rocker.circle.x(),
-                          f.rocker.circle.y(), f.rocker.centre.x(), f.rocker.centre.y(), std::string(ToString(f.grashof)),
-                          f.branch_defect ? 1.0 : 0.0, f.order_defect ? 1.0 : 0.0, RadToDeg(f.mu_min)});
-    if (!args.dir.empty()) {
-      const SweepDefaults sweep = f.crank_turns_fully ? SweepDefaults{RadToDeg(f.drive_from), RadToDeg(f.drive_from) + 360, 1}
-                                                      : SweepDefaults{RadToDeg(f.drive_from), RadToDeg(f.drive_to), (RadToDeg(f.drive_to) - RadToDeg(f.drive_from)) / 360};
-      Mechanism m = f.mechanism;
-      m.name = fmt::format("four-bar-{}", i + 1);
-      WriteOutput((std::filesystem::path(args.dir) / (m.name + ".yaml")).string(), WriteMechanismYaml(m, Comment(f, static_cast<int>(i + 1), args.poses), sweep));
-    }
-  }
-  WriteOutput(args.out, table.Text(args.format));
-  for (const std::string& failure : result.failures) Complain("a four-bar failed its re-analysis: " + failure);
-  if (result.failed > 0) throw Exit{kExitFailed};
-  if (result.four_bars.empty()) {
-    Complain(dyads.empty() ? "no dyad meets the poses" : "no four-bar meets the request");
+                         n == 3 ? "--grid/--circle-point" : "--samples", report.dyads, report.four_bars, kMotionFourBars.value, kMotionFourBars.name));
+  if (!report.paired) throw Exit{kExitFailed};  // no dyad: the note said why
+  std::cerr << fmt::format("koppel synth motion: {} poses, {} dyads, {} four-bars re-analysed through every pose{}\n", n, report.dyads,
+                           report.designs.size(), spec.require_crank ? fmt::format(", {} without a crank left out", report.rejected) : "");
+  WriteDesigns(args, report, top > 0 ? std::min<size_t>(top, report.designs.size()) : report.designs.size());
+  for (const std::string& failure : report.failures) Complain("a four-bar failed its re-analysis: " + failure);
+  if (report.failed > 0) throw Exit{kExitFailed};
+  if (report.designs.empty()) {
+    Complain(report.message);
     throw Exit{kExitFailed};
   }
 }

@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace koppel;
@@ -209,6 +210,104 @@ TEST_CASE("FindCognates: seed 003's cognate frame, and cognate 2 traces the orig
   }
   CHECK_THROWS_AS(FindCognates(original, "nowhere"), InputError);
   CHECK_THROWS_AS(FindCognates(Model::Load(test::CatalogEntryPath("slider-crank-offset")), "B"), InputError);  // not a four-bar of R joints
+}
+
+TEST_CASE("Design::yaml: the designed mechanism file reads back and gives the request again", "[api]") {
+  CrankRockerSpec spec;
+  spec.phi0 = 164;
+  spec.psi0 = 60;
+  const Design d = SynthesiseCrankRocker(spec);
+  REQUIRE(d.ok());
+  CHECK(d.Get("phi0") == 164);  // the request is among the rows, as `koppel synth deadcentre` prints it
+  CHECK(d.Get("sense") == 1);
+  // the reference: the file read back by the mechanism reader, its dead centres by the analysis
+  const Model back = Model::Parse(d.yaml, "designed.yaml");
+  CHECK(back.sweep_from() == 0);
+  CHECK(back.sweep_to() == 360);
+  const DeadCentres c = back.FindDeadCentres("psi");
+  REQUIRE(c.has_stroke);
+  CHECK_THAT(c.stroke, WithinAbs(60, kReanalysis));
+  CHECK_THAT(d.yaml, Catch::Matchers::Contains("phi0 = 164 deg"));
+}
+
+TEST_CASE("MzcCrankRocker: seed 003's crank-rocker, the cognate SynthesiseMzc's figures name", "[api]") {
+  MzcSpec spec;
+  spec.lambda = 5.0 / 6.0;
+  const Design d = SynthesiseMzc(spec);
+  REQUIRE(d.ok());
+  const Design c = MzcCrankRocker(d);
+  REQUIRE(c.ok());
+  // seed 003: frame = 4 cranks
+  CHECK_THAT(c.Get("l4") / c.Get("l1"), WithinAbs(4, kDesignClosedForm));
+  for (const char* name : {"l1", "l2", "l3", "l4", "AK"}) CHECK(c.Get(name) == d.Get(std::string("crank_rocker_") + name));
+  // a crank-rocker: its file sweeps a full turn, and the model assembles on it
+  const Model back = Model::Parse(c.yaml, "cognate.yaml");
+  CHECK(back.sweep_to() - back.sweep_from() == 360);
+  CHECK(back.Sweep(0, 360, 30, 0).status == AnalysisStatus::kComplete);
+  // the double rocker's file sweeps its own range, inside its limit positions
+  const Model rocker = Model::Parse(d.yaml, "mzc.yaml");
+  CHECK(rocker.Sweep(0).status == AnalysisStatus::kComplete);
+  CHECK_THROWS_AS(MzcCrankRocker(Design{}), InputError);
+}
+
+TEST_CASE("SynthesiseFunctionFile: the spec file gives the design SynthesiseFunction gives for the same function", "[api]") {
+  const Design file = SynthesiseFunctionFile(test::TestDataPath("function-log10.yaml"));
+  REQUIRE(file.ok());
+  // the reference: the same request written in code (tests/data/function-log10.yaml's numbers)
+  FunctionSpec spec;
+  spec.f = [](double x) { return std::log10(x); };
+  spec.x_from = 1;
+  spec.x_to = 10;
+  spec.input_from = 15;
+  spec.input_to = 75;
+  spec.output_from = 105;
+  spec.output_to = 195;
+  const Design code = SynthesiseFunction(spec);
+  REQUIRE(code.ok());
+  for (const char* name : {"crank", "coupler", "rocker", "frame", "error_max"}) CHECK_THAT(file.Get(name), WithinAbs(code.Get(name), 1e-9));
+  // the error curve: error_max is its maximum refined between samples, so at least its largest |error|
+  REQUIRE(file.curve.columns == std::vector<std::string>{"x", "crank", "desired", "generated", "error"});
+  double largest = 0;
+  for (const std::vector<double>& row : file.curve.rows) largest = std::max(largest, std::abs(row[4]));
+  CHECK(file.Get("error_max") >= largest - 1e-12);
+  const Model back = Model::Parse(file.yaml, "generator.yaml");
+  CHECK_THAT(back.sweep_from(), WithinAbs(15, 1e-12));
+  CHECK_THAT(back.sweep_to(), WithinAbs(75, 1e-12));
+  CHECK_THROWS_AS(SynthesiseFunctionFile(test::TestDataPath("no-such-function.yaml")), InputError);
+}
+
+TEST_CASE("SynthesiseFunction: a design on two branches keeps its lengths, not an error of the other branch", "[api]") {
+  // README "synth function": x^2 over 0..1, input 30..120 deg, output 60..120 deg: the exact
+  // three-point design's precision points lie on different assembly branches
+  FunctionSpec spec;
+  spec.f = [](double x) { return x * x; };
+  spec.input_from = 30;
+  spec.input_to = 120;
+  spec.output_from = 60;
+  spec.output_to = 120;
+  const Design d = SynthesiseFunction(spec);
+  INFO(d.message);
+  CHECK(d.status == DesignStatus::kNoDesign);
+  CHECK(d.Get("crank") > 0);
+  CHECK_THROWS_AS(d.Get("error_max"), InputError);
+  CHECK(d.curve.rows.empty());
+  CHECK_FALSE(d.model);
+  CHECK(d.yaml.empty());
+}
+
+TEST_CASE("FindCognates: a parallelogram's cognate 1 cannot be driven, and the note says so", "[api]") {
+  const Model original = Model::Load(test::CatalogEntryPath("parallel-crank"));
+  const Designs c = FindCognates(original, "K");
+  REQUIRE(c.ok());
+  REQUIRE(c.notes.size() == 1);
+  CHECK_THAT(c.notes[0], Catch::Matchers::Contains("cognate 1 cannot be driven"));
+  // the coupler only translates: the crank that follows it stands (to the rounding of two solver sweeps)
+  CHECK_THAT(c.designs[0].Get("input_min"), WithinAbs(c.designs[0].Get("input_max"), 1e-9));
+  CHECK(c.designs[0].figures.front().unit == original.length_unit());
+  // cognate 2 runs with the original's input: its file keeps the original's sweep
+  const Model second = Model::Parse(c.designs[1].yaml, "cognate-2.yaml");
+  CHECK(second.sweep_from() == original.sweep_from());
+  CHECK(second.sweep_to() == original.sweep_to());
 }
 
 }  // namespace synthesis_test

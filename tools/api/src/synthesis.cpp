@@ -2,16 +2,18 @@
 #include "koppel/api/synthesis.hpp"
 
 #include "display.hpp"
+#include "model_impl.hpp"
 
 #include "koppel/catalog/fit_problem.hpp"
+#include "koppel/catalog/mechanism_writer.hpp"
+#include "koppel/catalog/synthesis_spec.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/core/limits.hpp"
 #include "koppel/synthesis/cognates.hpp"
 #include "koppel/synthesis/deadcentre_synthesis.hpp"
 #include "koppel/synthesis/function_synthesis.hpp"
-#include "koppel/synthesis/motion_dyads.hpp"
-#include "koppel/synthesis/motion_synthesis.hpp"
 #include "koppel/synthesis/mzc_synthesis.hpp"
+#include "koppel/solver/sweep.hpp"
 
 #include <fmt/core.h>
 
@@ -64,6 +66,44 @@ std::string Design::Brief() const {
   return s + (message.empty() ? "" : "; " + message);
 }
 
+namespace {
+
+std::string CrankRockerComment(const CrankRockerRequest& r, const CrankRockerDesign& d, bool clockwise) {
+  const double turn = clockwise ? -1 : 1;
+  return fmt::format("Crank-rocker from dead-centre synthesis (koppel synth): phi0 = {:.10g} deg, psi0 = {:.10g} deg, beta = {:.10g} deg,\n"
+                     "rocker sense {}. Input phi: crank angle against A0B0, counter-clockwise; the crank runs {}.\n"
+                     "From the folded dead centre (phi = {:.10g} deg) to the extended one (phi = {:.10g} deg) the crank turns\n"
+                     "by phi0 and the rocker by psi0, {}.",
+                     RadToDeg(r.phi0), RadToDeg(r.psi0), RadToDeg(d.beta), ToString(r.rocker_sense), clockwise ? "clockwise" : "counter-clockwise",
+                     RadToDeg(turn * d.phi_i), RadToDeg(turn * d.phi_a), r.rocker_sense == RockerSense::kSame ? "both the same way" : "in opposite senses");
+}
+
+Figures CrankRockerFigures(const CrankRockerRequest& r, const CrankRockerDesign& d, bool clockwise) {
+  const double turn = clockwise ? -1 : 1;  // the CLI's --sense cw: the mirror image
+  Figures f;
+  f.Angle("phi0", r.phi0);
+  f.Angle("psi0", r.psi0);
+  f.Add("rocker_sense", r.rocker_sense == RockerSense::kSame ? 1 : -1, "same=1");
+  f.Angle("beta", d.beta);
+  f.Add("lambda", d.lambda, "1");
+  f.Add("l1", d.l1, "length");
+  f.Add("l2", d.l2, "length");
+  f.Add("l3", d.l3, "length");
+  f.Add("l4", d.l4, "length");
+  f.Angle("mu_min", d.mu_min);
+  f.Angle("mu_min_at", turn * d.mu_min_at);
+  f.Angle("phi_a", turn * d.phi_a);
+  f.Angle("phi_i", turn * d.phi_i);
+  f.Angle("beta_L", d.beta_l);
+  f.Angle("beta_E", d.beta_e);
+  f.Angle("reanalysed_phi0", d.reanalysed_phi0);
+  f.Angle("reanalysed_psi0", std::abs(d.reanalysed_psi));
+  f.Add("sense", turn, "ccw=1");
+  return f;
+}
+
+}  // namespace
+
 Design SynthesiseCrankRocker(const CrankRockerSpec& spec) {
   Require(!(spec.beta && spec.lambda), "beta/lambda", "give beta or lambda, not both");
   CrankRockerRequest request;
@@ -77,26 +117,11 @@ Design SynthesiseCrankRocker(const CrankRockerSpec& spec) {
                               : spec.lambda ? CrankRockerFromLambda(request, *spec.lambda)
                                             : BestCrankRocker(request);
   if (d.status == DesignStatus::kInvalidRequest) BadInput("synthesis request", "beta/lambda", d.message);
-  Figures f;
-  if (d.ok()) {
-    const double turn = spec.clockwise ? -1 : 1;  // the CLI's --sense cw: the mirror image
-    f.Angle("beta", d.beta);
-    f.Add("lambda", d.lambda, "1");
-    f.Add("l1", d.l1, "length");
-    f.Add("l2", d.l2, "length");
-    f.Add("l3", d.l3, "length");
-    f.Add("l4", d.l4, "length");
-    f.Angle("mu_min", d.mu_min);
-    f.Angle("mu_min_at", turn * d.mu_min_at);
-    f.Angle("phi_a", turn * d.phi_a);
-    f.Angle("phi_i", turn * d.phi_i);
-    f.Angle("beta_L", d.beta_l);
-    f.Angle("beta_E", d.beta_e);
-    f.Angle("reanalysed_phi0", d.reanalysed_phi0);
-    f.Angle("reanalysed_psi0", std::abs(d.reanalysed_psi));
-  }
-  if (!d.ok()) return Finished(d, f, Mechanism{});
-  return Finished(d, f, spec.clockwise ? MirrorMechanism(CrankRockerMechanism(d)) : CrankRockerMechanism(d));
+  if (!d.ok()) return Finished(d, Figures{}, Mechanism{});
+  const Mechanism m = spec.clockwise ? MirrorMechanism(CrankRockerMechanism(d)) : CrankRockerMechanism(d);
+  Design design = Finished(d, CrankRockerFigures(request, d, spec.clockwise), m);
+  design.yaml = WriteMechanismYaml(m, CrankRockerComment(request, d, spec.clockwise), {0, 360, 1});
+  return design;
 }
 
 Design SynthesiseSliderCrank(const SliderCrankSpec& spec) {
@@ -110,22 +135,46 @@ Design SynthesiseSliderCrank(const SliderCrankSpec& spec) {
                               : spec.beta ? SliderCrankFromBeta(request, DegToRad(*spec.beta))
                                           : BestSliderCrank(request);
   if (d.status == DesignStatus::kInvalidRequest) BadInput("synthesis request", "offset/beta", d.message);
+  if (!d.ok()) return Finished(d, Figures{}, Mechanism{});
   Figures f;
-  if (d.ok()) {
-    f.Add("e", d.e, "length");
-    f.Add("l1", d.l1, "length");
-    f.Add("l2", d.l2, "length");
-    f.Angle("beta", d.beta);
-    f.Angle("mu_min", d.mu_min);
-    f.Angle("mu_min_at", d.mu_min_at);
-    f.Add("offset_max", d.offset_max, "length");
-    f.Angle("beta_max", d.beta_max);
-    f.Angle("reanalysed_phi0", d.reanalysed_phi0);
-    f.Add("reanalysed_stroke", d.reanalysed_stroke, "length");
-    return Finished(d, f, SliderCrankMechanism(d));
-  }
-  return Finished(d, f, Mechanism{});
+  f.Angle("phi0", request.phi0);
+  f.Add("stroke", request.stroke, "length");
+  f.Add("e", d.e, "length");
+  f.Add("l1", d.l1, "length");
+  f.Add("l2", d.l2, "length");
+  f.Add("e_s0", d.e / request.stroke, "1");
+  f.Angle("beta", d.beta);
+  f.Angle("mu_min", d.mu_min);
+  f.Angle("mu_min_at", d.mu_min_at);
+  f.Add("offset_max", d.offset_max, "length");
+  f.Angle("beta_max", d.beta_max);
+  f.Angle("reanalysed_phi0", d.reanalysed_phi0);
+  f.Add("reanalysed_stroke", d.reanalysed_stroke, "length");
+  const Mechanism m = SliderCrankMechanism(d);
+  Design design = Finished(d, f, m);
+  design.yaml = WriteMechanismYaml(m,
+                                   fmt::format("Slider-crank from dead-centre synthesis (koppel synth): phi0 = {:.10g} deg, stroke = {:.10g}, e = {:.10g}.\n"
+                                               "Conventions of seed 000: A0 = (0, -e), phi from -y counter-clockwise, s from the foot point.",
+                                               RadToDeg(request.phi0), request.stroke, d.e),
+                                   {0, 360, 1});
+  return design;
 }
+
+namespace {
+
+// The double rocker's cognate whose crank turns with its coupler, about K (point 2 of link 2,
+// MzcMechanism): the crank-rocker (seed 003).
+Cognates MzcCognates(const Mechanism& double_rocker) { return RobertsCognates(double_rocker, {2, 2}); }
+
+void AddCrankRocker(const Cognates& c, Figures& f) {
+  f.Add("crank_rocker_l1", c.crank_first, "length");
+  f.Add("crank_rocker_l2", c.coupler_first, "length");
+  f.Add("crank_rocker_l3", c.rocker_first, "length");
+  f.Add("crank_rocker_l4", c.frame_first, "length");
+  f.Add("crank_rocker_AK", c.k_first, "length");
+}
+
+}  // namespace
 
 Design SynthesiseMzc(const MzcSpec& spec) {
   Require(spec.lambda.has_value() != spec.kappa.has_value(), "lambda/kappa", "give lambda or kappa (one of them)");
@@ -151,8 +200,89 @@ Design SynthesiseMzc(const MzcSpec& spec) {
   f.Add("k", d.k, "length");
   // point 2 of link 2: K on the coupler (MzcMechanism), as `koppel synth mzc` counts it
   f.Add("contact_points", TangentContactOrder(m, {2, 2}, m.hint.input, 1e-9), "1");
-  return Finished(d, f, m);
+  if (const Cognates c = MzcCognates(m); c.ok()) AddCrankRocker(c, f);
+  Design design = Finished(d, f, m);
+  // the double rocker's own input range, a hundredth of a degree inside its limit positions
+  const InputRange range = DrivableRange(m, kPi, DegToRad(1));
+  const double lo = RadToDeg(range.low) + 0.01, hi = RadToDeg(range.high) - 0.01;
+  design.yaml = WriteMechanismYaml(m,
+                                   fmt::format("Meyer zur Capellen straight-line linkage (koppel synth mzc): lambda = {}, D = {}.\n"
+                                               "Assembled in the crossed symmetric position; K is the inflection pole there.",
+                                               d.lambda, d.D),
+                                   {lo, hi, (hi - lo) / 200});
+  return design;
 }
+
+Design MzcCrankRocker(const Design& double_rocker) {
+  if (!double_rocker.ok() || !double_rocker.model) BadInput("design", "double rocker", "no Meyer zur Capellen design: " + double_rocker.message);
+  const Cognates c = MzcCognates(double_rocker.model->mechanism());
+  Figures f;
+  if (c.ok()) {
+    f.Add("l1", c.crank_first, "length");
+    f.Add("l2", c.coupler_first, "length");
+    f.Add("l3", c.rocker_first, "length");
+    f.Add("l4", c.frame_first, "length");
+    f.Add("AK", c.k_first, "length");
+  }
+  Design design = Finished(c, f, c.first);
+  if (design.ok()) design.yaml = WriteMechanismYaml(c.first, "Crank-rocker cognate of a Meyer zur Capellen linkage (koppel synth mzc).", {0, 360, 1});
+  return design;
+}
+
+namespace {
+
+// The mechanism file's comment: what was asked (by `by`: the command or the API call), what was
+// designed and its structural error.
+std::string FunctionComment(const FunctionRequest& r, const FunctionDesign& d, const std::string& by, const std::string& formula) {
+  const bool four_bar = r.type == FunctionGenerator::kFourBar;
+  const auto out_unit = [&](double v) { return four_bar ? RadToDeg(v) : v; };
+  std::string points;
+  for (double x : d.precision_x) points += fmt::format("{}{:.6g}", points.empty() ? "" : ", ", x);
+  return fmt::format(
+      "Function generator ({}): y = {} for x in [{:.6g}, {:.6g}]; the crank angle phi [deg] maps x\n"
+      "from {:.6g} to {:.6g}, the output {} maps y from {:.6g} to {:.6g}. Precision points x = {}{}.\n"
+      "Structural error: at most {:.6g} {} over the range, {:.3g} at the precision points.",
+      by, formula, r.x_from, r.x_to, RadToDeg(r.input_from), RadToDeg(r.input_to), four_bar ? "psi [deg]" : "s", out_unit(r.output_from),
+      out_unit(r.output_to), points, d.polished ? " (least squares, polished through the mechanism)" : "", out_unit(d.error_max),
+      four_bar ? "deg" : "length", out_unit(d.error_at_precision));
+}
+
+// A function design in the API's units. A design that was made but fails its check keeps its
+// lengths; one that misses a precision point was re-analysed on another assembly branch, so its
+// error (figures and curve) would belong to a different mechanism and is left out.
+Design ShownFunction(const FunctionRequest& r, const FunctionDesign& d, const std::string& by, const std::string& formula) {
+  Design design;
+  design.status = d.ok() ? DesignStatus::kOk : DesignStatus::kNoDesign;
+  design.message = d.ok() ? d.message : d.Brief();
+  if (d.status == FunctionStatus::kNoMechanism) return design;
+  const bool four_bar = r.type == FunctionGenerator::kFourBar;
+  const auto shown = [&](double v) { return four_bar ? RadToDeg(v) : v; };
+  const std::string unit = four_bar ? "deg" : "length";
+  Figures f;
+  f.Add("crank", d.crank, "length");
+  f.Add("coupler", d.coupler, "length");
+  if (four_bar) {
+    f.Add("rocker", d.rocker, "length");
+    f.Add("frame", d.frame, "length");
+  } else {
+    f.Add("offset", d.offset, "length");
+  }
+  if (d.status != FunctionStatus::kMissesPoints) {
+    f.Add("error_max", shown(d.error_max), unit);
+    f.Add("error_at_precision", shown(d.error_at_precision), unit);
+    design.curve.columns = {"x", "crank", "desired", "generated", "error"};
+    for (const StructuralErrorSample& e : d.error_curve)
+      design.curve.rows.push_back({e.x, RadToDeg(e.input), shown(e.desired), shown(e.generated), shown(e.error)});
+  }
+  design.figures = std::move(f.list);
+  if (!d.ok()) return design;
+  design.model = Model::FromMechanism(d.mechanism);
+  const double from = RadToDeg(r.input_from), to = RadToDeg(r.input_to);
+  design.yaml = WriteMechanismYaml(d.mechanism, FunctionComment(r, d, by, formula), {from, to, (to - from) / 360});
+  return design;
+}
+
+}  // namespace
 
 Design SynthesiseFunction(const FunctionSpec& spec) {
   Require(spec.type == "four-bar" || spec.type == "slider-crank", "type", "expected four-bar or slider-crank, found '" + spec.type + "'");
@@ -177,28 +307,14 @@ Design SynthesiseFunction(const FunctionSpec& spec) {
   Require(request.IsValid(&why), "function request", why);
   const FunctionDesign d = koppel::SynthesiseFunction(request);
   if (d.status == FunctionStatus::kInvalidRequest) BadInput("synthesis request", "function request", d.message);
-  Design design;
-  design.status = d.ok() ? DesignStatus::kOk : DesignStatus::kNoDesign;
-  design.message = d.ok() ? d.message : std::string(ToString(d.status)) + ": " + d.message;
-  if (!d.ok()) return design;
-  Figures f;
-  const auto shown = [&](double v) { return angle_out ? RadToDeg(v) : v; };
-  const std::string unit = angle_out ? "deg" : "length";
-  if (angle_out) {
-    f.Add("crank", d.crank, "length");
-    f.Add("coupler", d.coupler, "length");
-    f.Add("rocker", d.rocker, "length");
-    f.Add("frame", d.frame, "length");
-  } else {
-    f.Add("crank", d.crank, "length");
-    f.Add("coupler", d.coupler, "length");
-    f.Add("offset", d.offset, "length");
-  }
-  f.Add("error_max", shown(d.error_max), unit);
-  f.Add("error_at_precision", shown(d.error_at_precision), unit);
-  design.figures = std::move(f.list);
-  design.model = Model::FromMechanism(d.mechanism);
-  return design;
+  return ShownFunction(request, d, "koppel::SynthesiseFunction", "f(x)");
+}
+
+Design SynthesiseFunctionFile(const std::string& path) {
+  const FunctionSpecFile spec = ReadFunctionSpec(path);
+  const FunctionDesign d = koppel::SynthesiseFunction(spec.request);
+  if (d.status == FunctionStatus::kInvalidRequest) BadInput(path, "function request", d.message);
+  return ShownFunction(spec.request, d, "koppel synth function " + path, spec.formula);
 }
 
 Design SynthesiseFit(const FitSpec& spec) {
@@ -236,74 +352,21 @@ Design SynthesiseFit(const FitSpec& spec) {
 
 namespace {
 
-Design MotionDesign(const MotionFourBar& f) {
-  Figures figures;
-  const auto point = [&](const std::string& name, const Eigen::Vector2d& p) {
-    figures.Add(name + "_x", p.x(), "length");
-    figures.Add(name + "_y", p.y(), "length");
-  };
-  point("A0", f.crank.centre);
-  point("A", f.crank.circle);
-  point("B", f.rocker.circle);
-  point("B0", f.rocker.centre);
-  figures.Angle("mu_min", f.mu_min);
-  figures.Add("branch_defect", f.branch_defect ? 1 : 0, "bool");
-  figures.Add("order_defect", f.order_defect ? 1 : 0, "bool");
-  figures.Add("crank_turns_fully", f.crank_turns_fully ? 1 : 0, "bool");
-  figures.Add("pose_error", f.pose_error, "length");
-  for (size_t i = 0; i < f.pose_inputs.size(); ++i) figures.Angle(fmt::format("pose{}_input", i + 1), f.pose_inputs[i]);
-  Design d;
-  d.status = DesignStatus::kOk;
-  d.message = ToString(f.grashof);
-  d.figures = std::move(figures.list);
-  d.model = Model::FromMechanism(f.mechanism);
-  return d;
+// Cognate 1 is driven by a link that follows the original coupler: its own input range over a
+// turn of the original, a hundredth of a degree inside the dead centres at its ends. A coupler
+// that only translates (a parallelogram) leaves that crank standing while K moves: then the
+// sweep is its one pose, and `note` says why.
+SweepDefaults FirstCognateSweep(const Cognates& c, std::string* note) {
+  double lo = RadToDeg(c.first_input_min) + 0.01, hi = RadToDeg(c.first_input_max) - 0.01;
+  if (!(hi > lo)) {
+    *note = "cognate 1's crank follows the original coupler, which does not turn here: cognate 1 cannot be driven by its crank "
+            "(its file's sweep is its one pose)";
+    lo = hi = RadToDeg(0.5 * (c.first_input_min + c.first_input_max));
+  }
+  return {lo, hi, hi > lo ? (hi - lo) / 180 : 1.0};
 }
 
 }  // namespace
-
-Designs SynthesiseMotion(const MotionSpec& spec) {
-  Require(spec.threads >= 0, "threads", "must be 0 (one per core) or more");
-  std::vector<Pose> poses;
-  for (const MotionPose& p : spec.poses) {
-    Require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.angle), "poses", "a pose is not finite");
-    poses.push_back({Eigen::Vector2d(p.x, p.y), DegToRad(p.angle)});
-  }
-  DyadRequest request;
-  for (const auto& [x, y] : spec.circle_points) request.circle_points.emplace_back(x, y);
-  request.crank_turn = DegToRad(spec.crank_turn);
-  request.curve_samples = spec.curve_samples;
-  const DyadChoice dyads = DyadsForPoses(poses, request);
-  if (dyads.status == BurmesterStatus::kInvalidRequest) BadInput("synthesis request", "poses/circle_points", dyads.message);
-  Designs out;
-  if (!dyads.ok() || dyads.dyads.empty()) {
-    out.status = DesignStatus::kNoDesign;
-    out.message = dyads.message.empty() ? "no dyad meets the poses" : dyads.message;
-    return out;
-  }
-  // every ordered pair is a four-bar to re-analyse: the CLI's bound on the work
-  MotionOptions options;
-  const std::uint64_t four_bars = MotionFourBarCount(dyads.dyads.size(), options);
-  Require(four_bars <= static_cast<std::uint64_t>(kMaxMotionFourBars), "curve_samples/circle_points",
-          fmt::format("{} dyads make {} four-bars, more than the limit of {} (kMaxMotionFourBars): fewer, please", dyads.dyads.size(),
-                      four_bars, kMaxMotionFourBars));
-  options.require_crank = spec.require_crank;
-  options.threads = spec.threads;
-  const MotionResult result = FourBarsFromDyads(poses, dyads.dyads, options);
-  if (result.failed > 0) {
-    out.status = DesignStatus::kReanalysisFailed;
-    out.message = fmt::format("{} four-bar(s) failed their re-analysis{}", result.failed, result.failures.empty() ? "" : ": " + result.failures.front());
-    return out;
-  }
-  if (result.four_bars.empty()) {
-    out.status = DesignStatus::kNoDesign;
-    out.message = "no four-bar meets the request";
-    return out;
-  }
-  out.status = DesignStatus::kOk;
-  for (const MotionFourBar& f : result.four_bars) out.designs.push_back(MotionDesign(f));
-  return out;
-}
 
 Designs FindCognates(const Model& original, const std::string& point) {
   const Expected<PointRef> k = FindPointByText(original.mechanism(), point);
@@ -314,23 +377,31 @@ Designs FindCognates(const Model& original, const std::string& point) {
   out.status = c.status;
   out.message = c.message;
   if (!c.ok()) return out;
+  const std::string unit = original.length_unit();
   Figures first, second;
-  first.Add("A0C0", c.frame_first, "length");
-  first.Add("A0A1", c.crank_first, "length");
-  first.Add("A1C1", c.coupler_first, "length");
-  first.Add("C0C1", c.rocker_first, "length");
-  first.Add("A1K", c.k_first, "length");
-  first.Add("C1K", c.l_first, "length");
+  first.Add("A0C0", c.frame_first, unit);
+  first.Add("A0A1", c.crank_first, unit);
+  first.Add("A1C1", c.coupler_first, unit);
+  first.Add("C0C1", c.rocker_first, unit);
+  first.Add("A1K", c.k_first, unit);
+  first.Add("C1K", c.l_first, unit);
   first.Angle("input_min", c.first_input_min);
   first.Angle("input_max", c.first_input_max);
-  second.Add("C0B0", c.frame_second, "length");
-  second.Add("C0C2", c.crank_second, "length");
-  second.Add("C2B2", c.coupler_second, "length");
-  second.Add("B0B2", c.rocker_second, "length");
-  second.Add("B2K", c.k_second, "length");
-  second.Add("C2K", c.l_second, "length");
+  second.Add("C0B0", c.frame_second, unit);
+  second.Add("C0C2", c.crank_second, unit);
+  second.Add("C2B2", c.coupler_second, unit);
+  second.Add("B0B2", c.rocker_second, unit);
+  second.Add("B2K", c.k_second, unit);
+  second.Add("C2K", c.l_second, unit);
   out.designs.push_back(Finished(c, first, c.first));
   out.designs.push_back(Finished(c, second, c.second));
+  const std::string note = "Roberts–Chebyshev cognate of " + original.path() + " (koppel cognates): traces the same curve of K.\n";
+  std::string why;
+  out.designs[0].yaml = WriteMechanismYaml(c.first, note + "Pivots A0 and C0; its crank A0A1 turns with the original coupler.",
+                                           FirstCognateSweep(c, &why));
+  if (!why.empty()) out.notes.push_back(why);
+  out.designs[1].yaml = WriteMechanismYaml(c.second, note + "Pivots C0 and B0; its crank C0C2 turns with the original crank: same input.",
+                                           ModelAccess::File(original).sweep);
   return out;
 }
 

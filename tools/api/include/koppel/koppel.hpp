@@ -7,8 +7,10 @@
 #pragma once
 
 #include "koppel/api/catalog.hpp"
+#include "koppel/api/design_chart.hpp"
 #include "koppel/api/fit.hpp"
 #include "koppel/api/model.hpp"
+#include "koppel/api/motion_synthesis.hpp"
 #include "koppel/api/proportionality.hpp"
 #include "koppel/api/simulation.hpp"
 #include "koppel/api/sweep_layout.hpp"

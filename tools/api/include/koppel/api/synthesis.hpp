@@ -6,7 +6,9 @@
 // value: DesignStatus kOk (proved by the solver's re-analysis, see the synthesis headers),
 // kNoDesign (no mechanism of the kind satisfies the request: the message says why),
 // kBoundaryOptimum (no best design: it degenerates) or kReanalysisFailed (the solver did not
-// confirm the closed form: nothing is reported). Only an ok design carries figures and a model.
+// confirm the closed form: nothing is reported). Only an ok design carries a model; only an ok
+// design carries figures, except a function generator that was designed but fails its check
+// (SynthesiseFunction: its lengths, so that the reader sees what failed).
 #pragma once
 
 #include "koppel/api/model.hpp"
@@ -26,11 +28,21 @@ struct DesignFigure {
   std::string unit;  // "deg", "length", "1"
 };
 
+// A table of numbers a design comes with (function generation: its structural error curve).
+struct DesignTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+};
+
 struct Design {
   DesignStatus status = DesignStatus::kNotRun;
   std::string message;
-  std::vector<DesignFigure> figures;  // as `koppel synth ...` prints them
+  std::vector<DesignFigure> figures;  // as `koppel synth ...` prints them, in its order
   std::optional<Model> model;         // the designed mechanism
+  // The designed mechanism as a mechanism file: a comment that says how it was designed, and its
+  // drivable range as the file's sweep (what `koppel synth ... -o` writes); empty without a model.
+  std::string yaml;
+  DesignTable curve;  // empty unless the synthesis has one
   bool ok() const { return status == DesignStatus::kOk; }
   // The figure called `name`; InputError when the design has none of that name.
   double Get(const std::string& name) const;
@@ -61,12 +73,20 @@ struct SliderCrankSpec {
 Design SynthesiseSliderCrank(const SliderCrankSpec& spec);
 
 // Meyer zur Capellen straight-line linkage (seed 003) from lambda, or from the coupler angle
-// kappa [deg], and the inflection-circle diameter D. Model: the double rocker, output K.
+// kappa [deg], and the inflection-circle diameter D. Model: the double rocker, output K; its yaml
+// sweeps the double rocker's own input range, a hundredth of a degree inside its limit positions.
+// Figures: lambda, D, phi0, kappa, l1..l4, k, contact_points (of K's path with its tangent; 6: a
+// six-point tangent) and, where the cognate exists, its crank-rocker's crank_rocker_l1..l4 and
+// crank_rocker_AK (MzcCrankRocker).
 struct MzcSpec {
   std::optional<double> lambda, kappa;
   double diameter = 1;
 };
 Design SynthesiseMzc(const MzcSpec& spec);
+// The crank-rocker of a Meyer zur Capellen double rocker (SynthesiseMzc's design): its Roberts
+// cognate about K whose crank turns with the double rocker's coupler (seed 003). Figures l1 (the
+// crank), l2, l3, l4 (the frame), AK [length]. InputError for a design that is not ok.
+Design MzcCrankRocker(const Design& double_rocker);
 
 // Function generation (koppel synth function): a four-bar (rocker angle) or slider-crank
 // (slider displacement) whose output follows y = f(x) while the crank follows x, mapped linearly
@@ -83,7 +103,16 @@ struct FunctionSpec {
   std::vector<double> at;
   double frame = 1;
 };
+// A design that was made but fails (it does not run through the whole input range, or the
+// solver's mechanism misses a precision point: another branch) is kNoDesign with its lengths as
+// figures, and error_max and the curve only where they describe it (not for a missed point); the
+// message says which. curve: the structural error over the range, columns x, crank [deg],
+// desired, generated, error [deg | length]. yaml: the mechanism file (ok designs).
 Design SynthesiseFunction(const FunctionSpec& spec);
+// The same from a function spec file (koppel synth function SPEC.yaml; README "synth function"):
+// the file's function formula, ranges and points. InputError naming the file and line for a spec
+// that does not read or a request that is malformed.
+Design SynthesiseFunctionFile(const std::string& path);
 
 // Least-squares fitting of any mechanism file to targets (koppel synth fit): `problem` is a fit
 // problem file (catalog/include/koppel/catalog/fit_problem.hpp: the mechanism, the free
@@ -115,6 +144,7 @@ struct MotionSpec {
   std::vector<std::pair<double, double>> circle_points;
   double crank_turn = 90;    // [deg], two poses only
   int curve_samples = 18;    // four poses without circle points
+  int grid = 0;              // three poses: also the circle points of an n x n grid (MotionGrid), those without a centre point left out
   bool require_crank = false;  // keep only four-bars whose input turns fully
   int threads = 0;           // 0: one per core
 };
@@ -130,6 +160,7 @@ struct MotionSpec {
 struct Designs {
   DesignStatus status = DesignStatus::kNotRun;
   std::string message;
+  std::vector<std::string> notes;  // what the reader should know about a design (FindCognates)
   std::vector<Design> designs;
   bool ok() const { return status == DesignStatus::kOk; }
 };

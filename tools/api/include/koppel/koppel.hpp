@@ -6,8 +6,10 @@
 // koppel::synthesis, ...) have headers of their own under koppel/<part>/.
 #pragma once
 
+#include "koppel/api/atlas.hpp"
 #include "koppel/api/catalog.hpp"
 #include "koppel/api/model.hpp"
+#include "koppel/api/path_synthesis.hpp"
 #include "koppel/api/sweep_layout.hpp"
 #include "koppel/api/synthesis.hpp"
 #include "koppel/core/version.hpp"

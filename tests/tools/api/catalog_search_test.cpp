@@ -1,6 +1,7 @@
 // FindInCatalog (tools/api/src/catalog_search.cpp): the hits of a query, checked against the
 // mechanisms the hits load (their joints counted independently).
 #include "koppel/api/catalog.hpp"
+#include "catalog_query.hpp"
 
 #include "koppel/catalog/classes.hpp"
 #include "support/temp_file.hpp"

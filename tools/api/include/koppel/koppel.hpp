@@ -8,6 +8,7 @@
 
 #include "koppel/api/atlas.hpp"
 #include "koppel/api/catalog.hpp"
+#include "koppel/api/catalog_check.hpp"
 #include "koppel/api/model.hpp"
 #include "koppel/api/path_synthesis.hpp"
 #include "koppel/api/sweep_layout.hpp"

@@ -13,8 +13,8 @@ namespace catalog_check {  // this file's own names, apart from the other comman
 namespace {
 
 std::string ValueText(const CatalogCheck& c) {
-  if (c.kind == "figure" && c.computed) return FormatNumber(c.value);
-  if (c.kind == "equation" && c.computed) return "at " + FormatNumber(c.where);
+  if (c.kind == CatalogCheckKind::kFigure && c.computed()) return FormatNumber(c.value);
+  if (c.kind == CatalogCheckKind::kEquation && c.computed()) return "at " + FormatNumber(c.where);
   return "";
 }
 
@@ -22,10 +22,10 @@ std::string Csv(const std::vector<CatalogCheckReport>& reports) {
   std::string csv = "id,variant,kind,check,status,worst,tolerance,value,at,detail\n";
   for (const CatalogCheckReport& r : reports) {
     for (const CatalogCheck& c : r.checks) {
-      csv += fmt::format("{},{},{},{},{},{:.3g},{:.3g},{},{},{}\n", r.id, CsvField(c.variant), c.kind, CsvField(c.name),
-                         c.status, c.worst, c.tolerance, c.kind == "figure" && c.computed ? FormatNumber(c.value) : "",
-                         c.kind == "equation" && c.computed ? FormatNumber(c.where) : "",
-                         CsvField(c.passed ? "" : c.detail));
+      csv += fmt::format("{},{},{},{},{},{:.3g},{:.3g},{},{},{}\n", r.id, CsvField(c.variant), ToString(c.kind), CsvField(c.name),
+                         ToString(c.status), c.worst, c.tolerance, c.kind == CatalogCheckKind::kFigure && c.computed() ? FormatNumber(c.value) : "",
+                         c.kind == CatalogCheckKind::kEquation && c.computed() ? FormatNumber(c.where) : "",
+                         CsvField(c.passed() ? "" : c.detail));
     }
   }
   return csv;
@@ -36,8 +36,8 @@ std::string Json(const std::vector<CatalogCheckReport>& reports) {
   for (const CatalogCheckReport& r : reports) {
     nlohmann::json checks = nlohmann::json::array();
     for (const CatalogCheck& c : r.checks) {
-      checks.push_back({{"variant", c.variant}, {"name", c.name}, {"kind", c.kind}, {"worst", c.worst},
-                        {"tolerance", c.tolerance}, {"value", c.value}, {"where", c.where}, {"status", c.status},
+      checks.push_back({{"variant", c.variant}, {"name", c.name}, {"kind", ToString(c.kind)}, {"worst", c.worst},
+                        {"tolerance", c.tolerance}, {"value", c.value}, {"where", c.where}, {"status", ToString(c.status)},
                         {"detail", c.detail}});
     }
     j.push_back({{"id", r.id}, {"passed", r.passed}, {"checks", checks}});
@@ -54,10 +54,10 @@ std::string Lines(const std::vector<CatalogCheckReport>& reports, bool verbose) 
     rows.push_back({r.id, r.passed ? "passed" : "FAILED", fmt::format("{}/{}", r.passed_checks, r.checks.size()), w ? Short(w->ratio, 2) : "",
                     w ? w->name + (w->variant.empty() ? "" : " [" + w->variant + "]") : ""});
     for (const CatalogCheck& c : r.checks) {
-      if (c.passed && !verbose) continue;
-      failures += fmt::format("  {} {} {} '{}'{}: worst {} tol {} {}{}\n", r.id, c.status, c.kind, c.name,
+      if (c.passed() && !verbose) continue;
+      failures += fmt::format("  {} {} {} '{}'{}: worst {} tol {} {}{}\n", r.id, ToString(c.status), ToString(c.kind), c.name,
                               c.variant.empty() ? "" : " [" + c.variant + "]", Short(c.worst, 4), Short(c.tolerance, 3), ValueText(c),
-                              c.passed || c.detail.empty() ? "" : " — " + c.detail);
+                              c.passed() || c.detail.empty() ? "" : " — " + c.detail);
     }
   }
   return TextTable(rows) + (failures.empty() ? "" : "\n" + failures);

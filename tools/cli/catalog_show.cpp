@@ -13,7 +13,7 @@ namespace catalog_show {  // this file's own names, apart from the other command
 namespace {
 
 // The outcomes of one equation or figure, over the variants it runs in.
-std::vector<const CatalogCheck*> OutcomesOf(const CatalogCheckReport& report, const std::string& kind, const std::string& name) {
+std::vector<const CatalogCheck*> OutcomesOf(const CatalogCheckReport& report, CatalogCheckKind kind, const std::string& name) {
   std::vector<const CatalogCheck*> found;
   for (const CatalogCheck& c : report.checks) {
     if (c.kind == kind && c.name == name) found.push_back(&c);
@@ -24,8 +24,8 @@ std::vector<const CatalogCheck*> OutcomesOf(const CatalogCheckReport& report, co
 std::string StatusLines(const std::vector<const CatalogCheck*>& outcomes, bool figure) {
   std::string s;
   for (const CatalogCheck* c : outcomes) {
-    s += "      " + c->status + (c->variant.empty() ? "" : " [" + c->variant + "]");
-    if (!c->computed) {
+    s += "      " + std::string(ToString(c->status)) + (c->variant.empty() ? "" : " [" + c->variant + "]");
+    if (!c->computed()) {
       s += ": " + c->detail + "\n";
       continue;
     }
@@ -104,8 +104,8 @@ std::string Dimensions(const CatalogPage& p) {
 std::string Checks(const CatalogPage& p) {
   const CatalogCheckReport& report = p.report;
   std::string t;
-  for (const CatalogCheck* f : OutcomesOf(report, "features", "access features"))
-    t += "\nAccess features and classes against the joint graph: " + f->status + (f->passed ? "" : " — " + f->detail) + "\n";
+  for (const CatalogCheck* f : OutcomesOf(report, CatalogCheckKind::kFeatures, "access features"))
+    t += "\nAccess features and classes against the joint graph: " + std::string(ToString(f->status)) + (f->passed() ? "" : " — " + f->detail) + "\n";
   if (!p.equations.empty()) t += "\nEquations (over " + Short(p.from, 6) + " .. " + Short(p.to, 6) + " step " + Short(p.step, 6) + ")\n";
   for (const auto& [name, formula] : p.where) t += "  where " + name + " = " + formula + "\n";
   for (const CatalogEquation& q : p.equations) {
@@ -113,7 +113,7 @@ std::string Checks(const CatalogPage& p) {
          Wrapped(q.output_shown + (q.order ? " d" + std::to_string(q.order) : ""), q.formula + "   (tolerance " + Short(q.tolerance) + ")");
     if (!q.printed.empty()) t += Wrapped("printed", q.printed);
     if (!q.note.empty()) t += Wrapped("note", q.note);
-    t += StatusLines(OutcomesOf(report, "equation", q.name), false);
+    t += StatusLines(OutcomesOf(report, CatalogCheckKind::kEquation, q.name), false);
   }
   if (!p.figures.empty()) t += "\nFigures\n";
   for (const CatalogFigure& fig : p.figures) {
@@ -124,7 +124,7 @@ std::string Checks(const CatalogPage& p) {
                  fig.expected + (fig.degrees ? " deg" : "") + " ± " + Short(fig.tolerance) + (fig.variant.empty() ? "" : "   [" + fig.variant + "]"));
     if (!fig.printed.empty()) t += Wrapped("printed", fig.printed);
     if (!fig.note.empty()) t += Wrapped("note", fig.note);
-    t += StatusLines(OutcomesOf(report, "figure", fig.name), true);
+    t += StatusLines(OutcomesOf(report, CatalogCheckKind::kFigure, fig.name), true);
   }
   return t;
 }
@@ -141,19 +141,19 @@ nlohmann::json PageJson(const CatalogPage& p) {
   const CatalogHit& e = p.entry;
   nlohmann::json params = nlohmann::json::object(), eqs = nlohmann::json::array(), figs = nlohmann::json::array();
   for (const auto& [n, v] : p.parameters) params[n] = v;
-  auto statuses = [&](const std::string& kind, const std::string& name) {
+  auto statuses = [&](CatalogCheckKind kind, const std::string& name) {
     nlohmann::json j = nlohmann::json::array();
     for (const CatalogCheck* o : OutcomesOf(p.report, kind, name))
-      j.push_back({{"variant", o->variant}, {"status", o->status}, {"worst", o->worst}, {"value", o->value}});
+      j.push_back({{"variant", o->variant}, {"status", ToString(o->status)}, {"worst", o->worst}, {"value", o->value}});
     return j;
   };
   for (const CatalogEquation& q : p.equations)
     eqs.push_back({{"name", q.name}, {"output", q.output}, {"order", q.order}, {"formula", q.formula}, {"tolerance", q.tolerance},
-                   {"printed", q.printed}, {"note", q.note}, {"checks", statuses("equation", q.name)}});
+                   {"printed", q.printed}, {"note", q.note}, {"checks", statuses(CatalogCheckKind::kEquation, q.name)}});
   for (const CatalogFigure& f : p.figures)
     figs.push_back({{"name", f.name}, {"quantity", f.quantity}, {"output", f.output}, {"arguments", f.arguments},
                     {"expected", f.expected}, {"unit", f.degrees ? "deg" : ""}, {"tolerance", f.tolerance}, {"printed", f.printed},
-                    {"note", f.note}, {"variant", f.variant}, {"checks", statuses("figure", f.name)}});
+                    {"note", f.note}, {"variant", f.variant}, {"checks", statuses(CatalogCheckKind::kFigure, f.name)}});
   return {{"id", e.id}, {"title_de", e.title_de}, {"title_en", e.title_en}, {"kind", e.kind},
           {"classes", e.classes}, {"motion", e.motion}, {"applications", p.applications}, {"document", p.document},
           {"author", p.author}, {"literature", p.literature}, {"file", e.path}, {"structure", p.structure},

@@ -11,14 +11,48 @@ namespace koppel {
 
 namespace {
 
+// the catalog library's enums and the API's, value for value (the words are the library's)
+CheckKind LibraryKind(CatalogCheckKind kind) {
+  switch (kind) {
+    case CatalogCheckKind::kFeatures: return CheckKind::kFeatures;
+    case CatalogCheckKind::kEquation: return CheckKind::kEquation;
+    case CatalogCheckKind::kFigure: return CheckKind::kFigure;
+  }
+  return CheckKind::kFeatures;
+}
+CatalogCheckKind KindShown(CheckKind kind) {
+  switch (kind) {
+    case CheckKind::kFeatures: return CatalogCheckKind::kFeatures;
+    case CheckKind::kEquation: return CatalogCheckKind::kEquation;
+    case CheckKind::kFigure: return CatalogCheckKind::kFigure;
+  }
+  return CatalogCheckKind::kFeatures;
+}
+CheckStatus LibraryStatus(CatalogCheckStatus status) {
+  switch (status) {
+    case CatalogCheckStatus::kNotRun: return CheckStatus::kNotRun;
+    case CatalogCheckStatus::kPassed: return CheckStatus::kPassed;
+    case CatalogCheckStatus::kFailed: return CheckStatus::kFailed;
+    case CatalogCheckStatus::kNotComputed: return CheckStatus::kNotComputed;
+  }
+  return CheckStatus::kNotRun;
+}
+CatalogCheckStatus StatusShown(CheckStatus status) {
+  switch (status) {
+    case CheckStatus::kNotRun: return CatalogCheckStatus::kNotRun;
+    case CheckStatus::kPassed: return CatalogCheckStatus::kPassed;
+    case CheckStatus::kFailed: return CatalogCheckStatus::kFailed;
+    case CheckStatus::kNotComputed: return CatalogCheckStatus::kNotComputed;
+  }
+  return CatalogCheckStatus::kNotRun;
+}
+
 CatalogCheck CheckShown(const CheckOutcome& c) {
   CatalogCheck s;
   s.variant = c.variant;
   s.name = c.name;
-  s.kind = ToString(c.kind);
-  s.status = ToString(c.status);
-  s.passed = c.passed();
-  s.computed = c.status != CheckStatus::kNotComputed;
+  s.kind = KindShown(c.kind);
+  s.status = StatusShown(c.status);
   s.worst = c.worst;
   s.tolerance = c.tolerance;
   s.ratio = c.Ratio();
@@ -105,6 +139,9 @@ void EntryTexts(const CatalogEntry& e, CatalogPage* page) {
 }
 
 }  // namespace
+
+const char* ToString(CatalogCheckKind kind) { return ToString(LibraryKind(kind)); }
+const char* ToString(CatalogCheckStatus status) { return ToString(LibraryStatus(status)); }
 
 CatalogChecks CheckCatalog(const std::vector<std::string>& ids, const std::string& directory) {
   const std::string dir = directory.empty() ? DefaultCatalogDirectory() : directory;

@@ -14,14 +14,27 @@
 
 namespace koppel {
 
+// What a check compares: the access features and classes with the joint graph, one of the
+// document's equations over the card's sweep, or one of its figures.
+enum class CatalogCheckKind { kFeatures, kEquation, kFigure };
+const char* ToString(CatalogCheckKind kind);  // "features", "equation", "figure"
+
+enum class CatalogCheckStatus {
+  kNotRun,
+  kPassed,       // within tolerance
+  kFailed,       // outside the tolerance (or a declared feature differs)
+  kNotComputed,  // the solver could not produce the value (detail says why): a failure too
+};
+const char* ToString(CatalogCheckStatus status);  // "not run", "pass", "FAIL", "not computed"
+
 // One check of one variant (parameter set) of an entry.
 struct CatalogCheck {
   std::string variant;  // empty for the file's own parameters
   std::string name;
-  std::string kind;     // "features", "equation", "figure"
-  std::string status;   // "pass", "FAIL", "not computed", "not run"
-  bool passed = false;
-  bool computed = true;  // false: the solver could not produce the value (detail says why)
+  CatalogCheckKind kind = CatalogCheckKind::kFeatures;
+  CatalogCheckStatus status = CatalogCheckStatus::kNotRun;
+  bool passed() const { return status == CatalogCheckStatus::kPassed; }
+  bool computed() const { return status != CatalogCheckStatus::kNotComputed; }
   double worst = 0;      // worst |deviation| (equations) or |koppel - document| (figures)
   double tolerance = 0;
   double ratio = 0;      // worst / tolerance: <= 1 passes

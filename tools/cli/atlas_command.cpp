@@ -3,10 +3,7 @@
 #include "common.hpp"
 #include "progress_bar.hpp"
 
-#include "koppel/core/memory.hpp"
-
-#include "koppel/synthesis/atlas.hpp"
-#include "koppel/synthesis/atlas_file.hpp"
+#include "koppel/api/atlas.hpp"
 
 #include <fmt/core.h>
 
@@ -57,8 +54,8 @@ void PrintSummary(const Args& args, const Summary& s) {
 void Build(const Args& args) {
   RequireOutput(args);
   CheckSummaryFormat(args);
-  AtlasBuildOptions o;
-  o.count = WholeNumber("--count", args.count, kMaxAtlasCurves);
+  AtlasBuildSpec o;
+  o.count = WholeNumber("--count", args.count, AtlasCurveLimit());
   o.seed = WholeNumber("--seed", args.seed, UINT64_MAX);
   if (!args.shard.empty()) {
     const auto slash = args.shard.find('/');
@@ -70,35 +67,32 @@ void Build(const Args& args) {
     o.shards = static_cast<int>(WholeNumber("--shard", args.shard.substr(slash + 1), 1'000'000));
   }
   if (!args.threads.empty()) o.threads = static_cast<int>(WholeNumber("--threads", args.threads, kMaxThreads));
-  if (std::string why; !o.IsValid(&why)) {
+  if (const std::string why = AtlasBuildProblem(o); !why.empty()) {
     Complain(why);
     throw Exit{kExitBadInput};
   }
   // the whole shard is held in memory: refused up front with the figure, not bad_alloc later
-  const MemoryLimit memory = UsableMemory();
-  if (const Outcome fits = CheckAtlasBuildMemory(o, memory.bytes, memory.source); !fits) {
+  if (const Outcome fits = AtlasBuildFits(o); !fits) {
     Complain("--count " + args.count + (args.shard.empty() ? "" : " --shard " + args.shard) + ": " + fits.error());
     throw Exit{kExitBadInput};
   }
   const auto start = std::chrono::steady_clock::now();
-  std::vector<AtlasEntry> entries;
+  AtlasImage atlas;
   {
     ProgressBar bar("koppel atlas build", !args.quiet);
-    entries = BuildAtlas(o, bar.Callback());
+    atlas = BuildAtlasImage(o, bar.Callback());
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  WriteOutput(args.out, SerialiseAtlas(entries));
-  std::size_t closed = 0;
-  for (const AtlasEntry& e : entries) closed += e.closed;
+  WriteOutput(args.out, atlas.bytes);
   Summary summary;
-  summary.Add("curves", static_cast<double>(entries.size()), "");
-  summary.Add("closed", static_cast<double>(closed), "");
-  summary.Add("rocker_arcs", static_cast<double>(entries.size() - closed), "");
+  summary.Add("curves", static_cast<double>(atlas.curves), "");
+  summary.Add("closed", static_cast<double>(atlas.closed), "");
+  summary.Add("rocker_arcs", static_cast<double>(atlas.curves - atlas.closed), "");
   summary.Add("seconds", seconds, "s");
   PrintSummary(args, summary);
   if (!args.quiet)
-    std::cerr << fmt::format("koppel atlas build: {} curves ({} closed, {} rocker arcs) of seed {}, shard {}/{}, in {:.2f} s\n", entries.size(), closed,
-                             entries.size() - closed, o.seed, o.shard, o.shards, seconds);
+    std::cerr << fmt::format("koppel atlas build: {} curves ({} closed, {} rocker arcs) of seed {}, shard {}/{}, in {:.2f} s\n", atlas.curves,
+                             atlas.closed, atlas.curves - atlas.closed, o.seed, o.shard, o.shards, seconds);
 }
 
 void Merge(const Args& args) {
@@ -108,19 +102,17 @@ void Merge(const Args& args) {
     Complain("atlas merge: name the atlases to merge");
     throw Exit{kExitBadInput};
   }
-  std::vector<std::vector<AtlasEntry>> parts;
-  for (const std::string& path : args.inputs) parts.push_back(ReadAtlasFile(path));
-  const Expected<std::vector<AtlasEntry>> merged = MergeAtlases(std::move(parts));
+  const Expected<AtlasImage> merged = MergeAtlasFiles(args.inputs);
   if (!merged) {
     Complain("atlas merge: " + merged.error());
     throw Exit{kExitBadInput};
   }
-  WriteOutput(args.out, SerialiseAtlas(*merged));
+  WriteOutput(args.out, merged->bytes);
   Summary summary;
-  summary.Add("curves", static_cast<double>(merged->size()), "");
+  summary.Add("curves", static_cast<double>(merged->curves), "");
   summary.Add("atlases", static_cast<double>(args.inputs.size()), "");
   PrintSummary(args, summary);
-  if (!args.quiet) std::cerr << fmt::format("koppel atlas merge: {} curves from {} atlases\n", merged->size(), args.inputs.size());
+  if (!args.quiet) std::cerr << fmt::format("koppel atlas merge: {} curves from {} atlases\n", merged->curves, args.inputs.size());
 }
 
 }  // namespace

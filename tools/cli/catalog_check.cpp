@@ -12,54 +12,50 @@ namespace koppel::cli {
 namespace catalog_check {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
-std::string Status(const CheckOutcome& c) { return ToString(c.status); }
-
-std::string ValueText(const CheckOutcome& c) {
-  if (c.kind == CheckKind::kFigure && c.status != CheckStatus::kNotComputed) return FormatNumber(c.value);
-  if (c.kind == CheckKind::kEquation && c.status != CheckStatus::kNotComputed) return "at " + FormatNumber(c.where);
+std::string ValueText(const CatalogCheck& c) {
+  if (c.kind == CatalogCheckKind::kFigure && c.computed()) return FormatNumber(c.value);
+  if (c.kind == CatalogCheckKind::kEquation && c.computed()) return "at " + FormatNumber(c.where);
   return "";
 }
 
-std::string Csv(const std::vector<EntryReport>& reports) {
+std::string Csv(const std::vector<CatalogCheckReport>& reports) {
   std::string csv = "id,variant,kind,check,status,worst,tolerance,value,at,detail\n";
-  for (const EntryReport& r : reports) {
-    for (const CheckOutcome& c : r.checks) {
-      const bool computed = c.status != CheckStatus::kNotComputed;
+  for (const CatalogCheckReport& r : reports) {
+    for (const CatalogCheck& c : r.checks) {
       csv += fmt::format("{},{},{},{},{},{:.3g},{:.3g},{},{},{}\n", r.id, CsvField(c.variant), ToString(c.kind), CsvField(c.name),
-                         Status(c), c.worst, c.tolerance, c.kind == CheckKind::kFigure && computed ? FormatNumber(c.value) : "",
-                         c.kind == CheckKind::kEquation && computed ? FormatNumber(c.where) : "",
+                         ToString(c.status), c.worst, c.tolerance, c.kind == CatalogCheckKind::kFigure && c.computed() ? FormatNumber(c.value) : "",
+                         c.kind == CatalogCheckKind::kEquation && c.computed() ? FormatNumber(c.where) : "",
                          CsvField(c.passed() ? "" : c.detail));
     }
   }
   return csv;
 }
 
-std::string Json(const std::vector<EntryReport>& reports) {
+std::string Json(const std::vector<CatalogCheckReport>& reports) {
   nlohmann::json j = nlohmann::json::array();
-  for (const EntryReport& r : reports) {
+  for (const CatalogCheckReport& r : reports) {
     nlohmann::json checks = nlohmann::json::array();
-    for (const CheckOutcome& c : r.checks) {
+    for (const CatalogCheck& c : r.checks) {
       checks.push_back({{"variant", c.variant}, {"name", c.name}, {"kind", ToString(c.kind)}, {"worst", c.worst},
-                        {"tolerance", c.tolerance}, {"value", c.value}, {"where", c.where}, {"status", Status(c)},
+                        {"tolerance", c.tolerance}, {"value", c.value}, {"where", c.where}, {"status", ToString(c.status)},
                         {"detail", c.detail}});
     }
-    j.push_back({{"id", r.id}, {"passed", r.passed()}, {"checks", checks}});
+    j.push_back({{"id", r.id}, {"passed", r.passed}, {"checks", checks}});
   }
   return j.dump(1) + "\n";
 }
 
 // One line per entry; under a failed entry, its failed checks.
-std::string Lines(const std::vector<EntryReport>& reports, bool verbose) {
+std::string Lines(const std::vector<CatalogCheckReport>& reports, bool verbose) {
   std::vector<std::vector<std::string>> rows = {{"id", "result", "checks", "worst/tol", "worst check"}};
   std::string failures;
-  for (const EntryReport& r : reports) {
-    const CheckOutcome* w = r.Worst();
-    const int passed = r.Count(CheckStatus::kPassed);
-    rows.push_back({r.id, r.passed() ? "passed" : "FAILED", fmt::format("{}/{}", passed, r.checks.size()), w ? Short(w->Ratio(), 2) : "",
+  for (const CatalogCheckReport& r : reports) {
+    const CatalogCheck* w = r.worst >= 0 ? &r.checks[r.worst] : nullptr;
+    rows.push_back({r.id, r.passed ? "passed" : "FAILED", fmt::format("{}/{}", r.passed_checks, r.checks.size()), w ? Short(w->ratio, 2) : "",
                     w ? w->name + (w->variant.empty() ? "" : " [" + w->variant + "]") : ""});
-    for (const CheckOutcome& c : r.checks) {
+    for (const CatalogCheck& c : r.checks) {
       if (c.passed() && !verbose) continue;
-      failures += fmt::format("  {} {} {} '{}'{}: worst {} tol {} {}{}\n", r.id, Status(c), ToString(c.kind), c.name,
+      failures += fmt::format("  {} {} {} '{}'{}: worst {} tol {} {}{}\n", r.id, ToString(c.status), ToString(c.kind), c.name,
                               c.variant.empty() ? "" : " [" + c.variant + "]", Short(c.worst, 4), Short(c.tolerance, 3), ValueText(c),
                               c.passed() || c.detail.empty() ? "" : " — " + c.detail);
     }
@@ -74,27 +70,19 @@ void RunCheck(const CatalogArgs& args) {
   using namespace catalog_check;
   CheckCatalogFormat(args.format);
   const auto start = std::chrono::steady_clock::now();
-  const Catalog catalog = LoadCatalog(args);
-  std::vector<const CatalogEntry*> entries;
-  if (args.ids.empty()) {
-    for (const CatalogEntry& e : catalog.entries()) entries.push_back(&e);
-  } else {
-    for (const std::string& id : args.ids) entries.push_back(&FindOrFail(catalog, id, CatalogDirectoryOf(args)));
+  CatalogChecks checked;
+  try {
+    checked = CheckCatalog(args.ids, CatalogDirectoryOf(args));
+  } catch (const InputError& error) {
+    FailWithDiagnostics(error);
   }
-  std::vector<EntryReport> reports;
-  for (const CatalogEntry* e : entries) {
-    try {
-      reports.push_back(CheckEntry(e->file.path));
-    } catch (const InputError& error) {
-      for (const Diagnostic& d : error.diagnostics()) std::cerr << d.ToString() << "\n";
-      throw Exit{kExitBadInput};
-    }
-  }
+  RefuseUnknownId(checked.refused);
+  const std::vector<CatalogCheckReport>& reports = checked.reports;
   int failed_entries = 0, checks = 0, failed_checks = 0;
-  for (const EntryReport& r : reports) {
-    failed_entries += !r.passed();
+  for (const CatalogCheckReport& r : reports) {
+    failed_entries += !r.passed;
     checks += static_cast<int>(r.checks.size());
-    failed_checks += static_cast<int>(r.checks.size()) - r.Count(CheckStatus::kPassed);
+    failed_checks += static_cast<int>(r.checks.size()) - r.passed_checks;
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string summary = fmt::format("koppel catalog check: {} entries, {} passed, {} failed; {} checks, {} failed; {:.1f} s\n",

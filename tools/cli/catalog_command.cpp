@@ -4,8 +4,6 @@
 #include "common.hpp"
 
 #include "koppel/api/catalog.hpp"
-#include "koppel/catalog/classes.hpp"
-#include "koppel/catalog/figure_quantities.hpp"
 #include "koppel/core/structure.hpp"
 
 #include <fmt/core.h>
@@ -21,22 +19,16 @@ void CheckCatalogFormat(const std::string& format) {
   throw Exit{kExitBadInput};
 }
 
-std::string CatalogDirectoryOf(const CatalogArgs& args) { return args.directory.empty() ? DefaultCatalogDirectory() : args.directory; }
+std::string CatalogDirectoryOf(const CatalogArgs& args) { return args.directory.empty() ? CatalogDirectory() : args.directory; }
 
-Catalog LoadCatalog(const CatalogArgs& args) {
-  try {
-    return Catalog::Load(CatalogDirectoryOf(args));
-  } catch (const InputError& e) {
-    for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
-    throw Exit{kExitBadInput};
-  }
+void FailWithDiagnostics(const InputError& error) {
+  for (const Diagnostic& d : error.diagnostics()) std::cerr << d.ToString() << "\n";
+  throw Exit{kExitBadInput};
 }
 
-const CatalogEntry& FindOrFail(const Catalog& catalog, const std::string& id, const std::string& directory) {
-  if (const CatalogEntry* e = catalog.Find(id)) return *e;
-  std::vector<std::string> ids;
-  for (const CatalogEntry& c : catalog.entries()) ids.push_back(c.file.id);
-  Complain(UnknownCatalogId(id, ids, directory));
+void RefuseUnknownId(const std::string& refused) {
+  if (refused.empty()) return;
+  Complain(refused);
   throw Exit{kExitBadInput};
 }
 
@@ -102,7 +94,7 @@ std::string Short(double value, int digits) {
   return fmt::format("{:.{}g}", value, digits);
 }
 
-std::string LinksText(const AccessFeatures& f) {
+std::string LinksText(const CatalogFeatures& f) {
   using namespace catalog_command;
   std::vector<std::string> parts;
   for (const auto& [degree, n] : f.links_by_degree) {
@@ -111,7 +103,7 @@ std::string LinksText(const AccessFeatures& f) {
   return std::to_string(f.links) + " (" + Join(parts, ", ") + ")";
 }
 
-std::string JointsText(const AccessFeatures& f) {
+std::string JointsText(const CatalogFeatures& f) {
   using namespace catalog_command;
   std::vector<std::string> parts;
   for (const auto& [type, n] : f.joints_by_type) {
@@ -123,7 +115,7 @@ std::string JointsText(const AccessFeatures& f) {
 namespace catalog_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
-nlohmann::json FeaturesJson(const AccessFeatures& f) {
+nlohmann::json FeaturesJson(const CatalogFeatures& f) {
   using namespace catalog_command;
   nlohmann::json by_degree = nlohmann::json::object(), by_type = nlohmann::json::object();
   for (const auto& [d, n] : f.links_by_degree) by_degree[DegreeName(d)] = n;
@@ -133,48 +125,44 @@ nlohmann::json FeaturesJson(const AccessFeatures& f) {
           {"links", f.links}, {"links_by_degree", by_degree}, {"joints", f.joints}, {"joints_by_type", by_type}};
 }
 
-void PrintEntries(const std::vector<const CatalogEntry*>& entries, const CatalogArgs& args) {
+void PrintEntries(const std::vector<CatalogHit>& entries, const CatalogArgs& args) {
   using namespace catalog_command;
   if (args.format == "json") {
     nlohmann::json j = nlohmann::json::array();
-    for (const CatalogEntry* e : entries) {
-      const CatalogCard& c = *e->file.card;
-      j.push_back({{"id", e->file.id}, {"title_de", c.title_de}, {"title_en", c.title_en}, {"kind", ToString(c.kind)},
-                   {"classes", e->classes}, {"motion", c.motion}, {"file", e->file.path}, {"features", FeaturesJson(e->features)}});
+    for (const CatalogHit& e : entries) {
+      j.push_back({{"id", e.id}, {"title_de", e.title_de}, {"title_en", e.title_en}, {"kind", e.kind},
+                   {"classes", e.classes}, {"motion", e.motion}, {"file", e.path}, {"features", FeaturesJson(e.features)}});
     }
     WriteOutput(args.out, JsonText(j));
     return;
   }
   if (args.format == "csv") {
     std::string csv = "id,title_de,title_en,kind,drives,drives_at_frame,outputs,outputs_at_frame,links,binary,ternary,quaternary,joints,D,S,classes,motion\n";
-    for (const CatalogEntry* e : entries) {
-      const CatalogCard& c = *e->file.card;
-      const AccessFeatures& f = e->features;
-      csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", CsvField(e->file.id), CsvField(c.title_de),
-                         CsvField(c.title_en), ToString(c.kind), f.drive_joints, f.drive_joints_at_frame, f.output_links,
+    for (const CatalogHit& e : entries) {
+      const CatalogFeatures& f = e.features;
+      csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", CsvField(e.id), CsvField(e.title_de),
+                         CsvField(e.title_en), e.kind, f.drive_joints, f.drive_joints_at_frame, f.output_links,
                          f.output_links_at_frame, f.links, Count(f.links_by_degree, 2), Count(f.links_by_degree, 3),
                          Count(f.links_by_degree, 4), f.joints, Count(f.joints_by_type, "D"), Count(f.joints_by_type, "S"),
-                         CsvField(Join(e->classes, " ")), CsvField(c.motion));
+                         CsvField(Join(e.classes, " ")), CsvField(e.motion));
     }
     WriteOutput(args.out, csv);
     return;
   }
   std::vector<std::vector<std::string>> rows = {{"id", "kind", "links", "joints D/S", "classes", "title"}};
-  for (const CatalogEntry* e : entries) {
-    const CatalogCard& c = *e->file.card;
-    const AccessFeatures& f = e->features;
-    rows.push_back({e->file.id, ToString(c.kind), std::to_string(f.links),
+  for (const CatalogHit& e : entries) {
+    const CatalogFeatures& f = e.features;
+    rows.push_back({e.id, e.kind, std::to_string(f.links),
                     std::to_string(Count(f.joints_by_type, "D")) + "/" + std::to_string(Count(f.joints_by_type, "S")),
-                    Join(e->classes, " "), c.title_en});
+                    Join(e.classes, " "), e.title_en});
   }
   WriteOutput(args.out, TextTable(rows) + fmt::format("{} entries\n", entries.size()));
 }
 
 std::optional<std::string> Given(const std::string& text) { return text.empty() ? std::nullopt : std::optional(text); }
 
-// The flags as the API's query; its rule (koppel/api/catalog.hpp: ToFeatureQuery) makes the
-// catalog's query, and a field it refuses is named as the flag it came from.
-FeatureQuery QueryOf(const CatalogArgs& args) {
+// The flags as the API's query (koppel/api/catalog.hpp: FindInCatalog checks it).
+CatalogQuery QueryOf(const CatalogArgs& args) {
   using namespace catalog_command;
   CatalogQuery q;
   q.links = Given(args.links);
@@ -193,11 +181,20 @@ FeatureQuery QueryOf(const CatalogArgs& args) {
   q.motion = args.motion;
   q.text = args.text;
   q.like = args.like;
+  return q;
+}
+
+// A field of the query the API refused is named as the flag it came from; the --like mechanism's
+// and the catalog's own diagnostics are printed as they are.
+void RunFind(const CatalogArgs& args, bool all) {
+  using namespace catalog_command;
+  CheckCatalogFormat(args.format);
+  std::vector<CatalogHit> hits;
   try {
-    return ToFeatureQuery(q);
+    hits = FindInCatalog(all ? CatalogQuery{} : QueryOf(args), CatalogDirectoryOf(args));
   } catch (const InputError& e) {
     for (const Diagnostic& d : e.diagnostics()) {
-      if (d.file != "catalog query") {  // the --like mechanism's own diagnostics
+      if (d.file != "catalog query") {
         std::cerr << d.ToString() << "\n";
         continue;
       }
@@ -207,20 +204,13 @@ FeatureQuery QueryOf(const CatalogArgs& args) {
     }
     throw Exit{kExitBadInput};
   }
-}
-
-void RunFind(const CatalogArgs& args, bool all) {
-  using namespace catalog_command;
-  CheckCatalogFormat(args.format);
-  const FeatureQuery q = all ? FeatureQuery{} : QueryOf(args);
-  const Catalog catalog = LoadCatalog(args);
-  PrintEntries(FindEntries(catalog, q), args);
+  PrintEntries(hits, args);
 }
 
 std::string ClassHelp() {
   using namespace catalog_command;
   std::string s = "Class (declared by the entry, or shown by its joint graph):";
-  for (const CatalogClass& c : CatalogClasses()) s += std::string("\n  ") + c.name + ": " + c.meaning;
+  for (const CatalogTerm& c : CatalogClassTerms()) s += "\n  " + c.name + ": " + c.meaning;
   return s;
 }
 
@@ -284,7 +274,7 @@ void AddCatalogCommand(CLI::App& app) {
   show->callback([args] { RunShow(*args); });
 
   std::string quantities = "Figure quantities a card may use:";
-  for (const FigureQuantityInfo& q : FigureQuantities()) quantities += std::string("\n  ") + q.name + ": " + q.meaning;
+  for (const CatalogTerm& q : FigureQuantityTerms()) quantities += "\n  " + q.name + ": " + q.meaning;
   CLI::App* check = cmd->add_subcommand(
       "check",
       "Recompute every check of the given entries (default: all) with the generic solver: access features and\n"

@@ -3,7 +3,6 @@
 // solver as the checks; the text page below them.
 #include "catalog_command.hpp"
 
-#include "koppel/analysis/coupler_curve.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/plot/plots.hpp"
 #include "koppel/plot/sampled_run.hpp"
@@ -14,20 +13,20 @@ namespace koppel::cli {
 namespace catalog_page {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
-SweepOptions CardRange(const CatalogEntry& e, int order) {
-  const CatalogCard& c = *e.file.card;
-  const bool angle = e.file.mechanism.InputIsAngle();
+// the card's sweep (its units: deg for an R drive) as the plots' range
+SweepOptions CardRange(const CatalogPage& e, int order) {
+  const bool angle = e.input_is_angle;
   SweepOptions range;
-  range.from = angle ? DegToRad(c.from) : c.from;
-  range.to = angle ? DegToRad(c.to) : c.to;
-  range.step = angle ? DegToRad(c.step) : c.step;
+  range.from = angle ? DegToRad(e.from) : e.from;
+  range.to = angle ? DegToRad(e.to) : e.to;
+  range.step = angle ? DegToRad(e.step) : e.step;
   range.order = order;
   return range;
 }
 
 // the scheme at the assembly's input, scaled to hold every pose of the card's sweep
-std::string Scheme(const CatalogEntry& e, std::vector<std::string>* problems) {
-  const Mechanism& m = e.file.mechanism;
+std::string Scheme(const CatalogPage& e, std::vector<std::string>* problems) {
+  const Mechanism& m = e.mechanism;
   const plot::SampledRun run = plot::SampleMechanism(m, CardRange(e, 0));
   if (!run.complete) problems->push_back("scheme: " + run.message);
   if (run.size() == 0) return "";
@@ -39,13 +38,13 @@ std::string Scheme(const CatalogEntry& e, std::vector<std::string>* problems) {
   }
   scene.q = *pose;
   for (int i = 0; i < run.size(); ++i) scene.extent.push_back(run.poses.row(i).transpose());
-  scene.caption = e.file.id;
+  scene.caption = e.entry.id;
   return plot::DrawScheme(m, scene);
 }
 
 // one plot per Abtrieb output: a guided point's path, otherwise its transfer functions
-std::string OutputPlot(const CatalogEntry& e, const std::string& name, std::vector<std::string>* problems) {
-  const Mechanism& m = e.file.mechanism;
+std::string OutputPlot(const CatalogPage& e, const std::string& name, std::vector<std::string>* problems) {
+  const Mechanism& m = e.mechanism;
   const int output = m.FindOutput(name);
   plot::PlotResult result;
   if (m.outputs[output].kind == OutputKind::kPoint) {
@@ -67,14 +66,14 @@ std::string OutputPlot(const CatalogEntry& e, const std::string& name, std::vect
 }  // namespace
 }  // namespace catalog_page
 
-std::string EntryHtml(const CatalogEntry& e, const std::string& text_page, std::vector<std::string>* problems) {
+std::string EntryHtml(const CatalogPage& e, const std::string& text_page, std::vector<std::string>* problems) {
   using namespace catalog_page;
-  const CatalogCard& c = *e.file.card;
+  const CatalogHit& c = e.entry;
   std::string figures = Scheme(e, problems);
-  for (const std::string& o : c.outputs) figures += OutputPlot(e, o, problems);
+  for (const std::string& o : e.outputs) figures += OutputPlot(e, o, problems);
   std::string notes;
   for (const std::string& p : *problems) notes += "<li>" + plot::EscapeXml(p) + "</li>";
-  return "<!DOCTYPE html>\n<html lang=\"de\"><head><meta charset=\"utf-8\"><title>" + plot::EscapeXml(e.file.id) +
+  return "<!DOCTYPE html>\n<html lang=\"de\"><head><meta charset=\"utf-8\"><title>" + plot::EscapeXml(c.id) +
          "</title>\n<style>body{font-family:sans-serif;max-width:60em;margin:2em auto}svg{max-width:100%;height:auto;"
          "display:block;margin:1em 0}pre{white-space:pre-wrap}</style></head><body>\n<h1>" + plot::EscapeXml(c.title_de) + "</h1>\n<h2>" +
          plot::EscapeXml(c.title_en) + "</h2>\n" + (notes.empty() ? "" : "<p>Not everything could be drawn:</p><ul>" + notes + "</ul>\n") +

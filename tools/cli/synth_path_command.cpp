@@ -2,11 +2,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 
-#include "koppel/catalog/mechanism_writer.hpp"
-#include "koppel/catalog/path_points.hpp"
-#include "koppel/core/angles.hpp"
-#include "koppel/synthesis/atlas_file.hpp"
-#include "koppel/synthesis/path_synthesis.hpp"
+#include "koppel/api/path_synthesis.hpp"
 
 #include <fmt/core.h>
 
@@ -25,10 +21,10 @@ struct Args {
   bool open = false;
 };
 
-// POINTS.csv (koppel/catalog/path_points.hpp); every bad line reported.
+// POINTS.csv (koppel/api/path_synthesis.hpp); every bad line reported.
 std::vector<Eigen::Vector2d> ReadPoints(const std::string& path) {
   try {
-    return ReadPathPoints(path);
+    return ReadPathPointsFile(path);
   } catch (const InputError& e) {
     for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
     throw Exit{kExitBadInput};
@@ -44,48 +40,48 @@ int Whole(const std::string& flag, const std::string& text, int lo, int hi) {
   return static_cast<int>(v);
 }
 
+// A design as a mechanism file in --dir, its comment saying where it came from.
+void WriteDesign(const Args& args, const PathDesign& l, size_t i) {
+  const std::string name = fmt::format("path-{}", i + 1);
+  const std::string comment = fmt::format(
+      "Linkage {} of koppel synth path {} --atlas {}: its coupler point P passes the points with an RMS distance of {:.6g}\n"
+      "(atlas curve {} of seed {}, polished by the fit through this mechanism: {}). Grashof type {}.{}",
+      i + 1, args.points, args.atlas, l.error, l.atlas_index, l.atlas_seed, l.fit.substr(0, 200), l.grashof,
+      l.cognate_of >= 0 ? fmt::format("\nA Roberts cognate of linkage {}: the same coupler curve from another four-bar.", l.cognate_of + 1) : "");
+  WriteOutput((std::filesystem::path(args.dir) / (name + ".yaml")).string(), PathDesignYaml(l, name, comment));
+}
+
 void Run(const Args& args) {
   CheckFormat(args.format);
-  PathRequest request;
+  PathSpec request;
   request.points = ReadPoints(args.points);
   request.open = args.open;
   request.top = Whole("--top", args.top, 1, 1000);
   if (!args.candidates.empty()) request.candidates = Whole("--candidates", args.candidates, 1, 10000);
   if (!args.threads.empty()) request.threads = Whole("--threads", args.threads, 0, kMaxThreads);
-  if (std::string why; !request.IsValid(&why)) {
+  if (const std::string why = PathSpecProblem(request); !why.empty()) {
     Complain(args.points + ": " + why);
     throw Exit{kExitBadInput};
   }
-  const AtlasIndex atlas(ReadAtlasFile(args.atlas));
-  const PathResult result = SynthesisePath(atlas, request);
-  if (!result.ok()) {
+  const PathDesigns result = SynthesisePathFromAtlas(request, args.atlas);
+  if (!result.ok) {
     Complain(args.points + ": " + result.message);
-    throw Exit{result.status == PathStatus::kInvalidRequest ? kExitBadInput : kExitFailed};
+    throw Exit{result.invalid_request ? kExitBadInput : kExitFailed};
   }
   MixedTable t;
   t.columns = {"rank", "error", "A0_x", "A0_y", "B0_x", "B0_y", "crank", "coupler", "rocker", "frame", "K_along", "K_left", "grashof", "cognate_of"};
   if (!args.dir.empty()) MakeOutputDirectory(args.dir);
-  for (size_t i = 0; i < result.linkages.size(); ++i) {
-    const PathLinkage& l = result.linkages[i];
+  for (size_t i = 0; i < result.designs.size(); ++i) {
+    const PathDesign& l = result.designs[i];
     // a Roberts cognate of a better row: that row's rank; else empty (null in JSON)
     const MixedTable::Cell cognate_of = l.cognate_of >= 0 ? MixedTable::Cell(static_cast<double>(l.cognate_of + 1)) : MixedTable::Cell();
-    t.rows.push_back({static_cast<double>(i + 1), l.error, l.geometry.a0.x(), l.geometry.a0.y(), l.geometry.b0.x(), l.geometry.b0.y(), l.crank,
-                      l.coupler, l.rocker, l.frame, l.coupler_point.x(), l.coupler_point.y(), std::string(ToString(l.grashof)), cognate_of});
-    if (!args.dir.empty()) {
-      Mechanism m = l.mechanism;
-      m.name = fmt::format("path-{}", i + 1);
-      const std::string comment = fmt::format(
-          "Linkage {} of koppel synth path {} --atlas {}: its coupler point P passes the points with an RMS distance of {:.6g}\n"
-          "(atlas curve {} of seed {}, polished by the fit through this mechanism: {}). Grashof type {}.{}",
-          i + 1, args.points, args.atlas, l.error, l.source.index, l.source.seed, l.fit.substr(0, 200), ToString(l.grashof),
-          l.cognate_of >= 0 ? fmt::format("\nA Roberts cognate of linkage {}: the same coupler curve from another four-bar.", l.cognate_of + 1) : "");
-      const double from = RadToDeg(m.hint.input);
-      WriteOutput((std::filesystem::path(args.dir) / (m.name + ".yaml")).string(), WriteMechanismYaml(m, comment, {from, from + 360, 1}));
-    }
+    t.rows.push_back({static_cast<double>(i + 1), l.error, l.a0.x(), l.a0.y(), l.b0.x(), l.b0.y(), l.crank, l.coupler, l.rocker, l.frame,
+                      l.coupler_point.x(), l.coupler_point.y(), l.grashof, cognate_of});
+    if (!args.dir.empty()) WriteDesign(args, l, i);
   }
   WriteOutput(args.out, t.Text(args.format));
   std::cerr << fmt::format("koppel synth path: {} points, {} atlas curves; best RMS distance {:.3g}; {} repeats of a better design dropped\n",
-                           request.points.size(), atlas.entries().size(), result.linkages.front().error, result.duplicates);
+                           request.points.size(), result.atlas_curves, result.designs.front().error, result.duplicates);
 }
 
 }  // namespace

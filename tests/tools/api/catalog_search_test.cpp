@@ -1,6 +1,7 @@
 // FindInCatalog (tools/api/src/catalog_search.cpp): the hits of a query, checked against the
 // mechanisms the hits load (their joints counted independently).
 #include "koppel/api/catalog.hpp"
+#include "catalog_query.hpp"
 
 #include "koppel/catalog/classes.hpp"
 #include "support/temp_file.hpp"
@@ -62,4 +63,27 @@ TEST_CASE("ToFeatureQuery: the one rule that turns a query's text into the catal
   CatalogQuery mobility_two;
   mobility_two.like = test::TestDataPath("five-bar.yaml");
   CHECK(field_refused(mobility_two) == "drive");
+}
+
+TEST_CASE("FindInCatalog: a hit's features agree with its counts and its mechanism; the vocabulary", "[api]") {
+  // references: the mechanism each hit loads (links and joints counted here), the sums of the
+  // by-degree and by-type counts, the class list's own entry for slider-crank
+  const std::vector<CatalogHit> hits = FindInCatalog(CatalogQuery{}, KOPPEL_CATALOG_DIR);
+  REQUIRE(!hits.empty());
+  for (const CatalogHit& h : hits) {
+    INFO(h.id);
+    const Mechanism mech = h.Load().mechanism();
+    CHECK(h.features.links == static_cast<int>(mech.links.size()));
+    CHECK(h.features.joints == static_cast<int>(mech.joints.size()));
+    int by_degree = 0, by_type = 0;
+    for (const auto& [degree, n] : h.features.links_by_degree) by_degree += n;
+    for (const auto& [type, n] : h.features.joints_by_type) by_type += n;
+    CHECK(by_degree == h.features.links);  // every link has a degree
+    CHECK(by_type == h.features.joints);
+    const auto d = h.features.joints_by_type.find("D");
+    CHECK((d == h.features.joints_by_type.end() ? 0 : d->second) == h.revolute);
+  }
+  const std::vector<CatalogTerm> classes = CatalogClassTerms();
+  CHECK(std::any_of(classes.begin(), classes.end(), [](const CatalogTerm& t) { return t.name == "slider-crank" && !t.meaning.empty(); }));
+  CHECK(!FigureQuantityTerms().empty());
 }

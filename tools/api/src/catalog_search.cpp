@@ -1,10 +1,12 @@
 #include "koppel/api/catalog.hpp"
 
+#include "catalog_query.hpp"
 #include "display.hpp"
 
 #include "koppel/api/admission.hpp"
 #include "koppel/catalog/catalog.hpp"
 #include "koppel/catalog/classes.hpp"
+#include "koppel/catalog/figure_quantities.hpp"
 
 namespace koppel {
 
@@ -58,25 +60,47 @@ FeatureQuery ToFeatureQuery(const CatalogQuery& q) {
   return query;
 }
 
+namespace api_detail {
+
+CatalogHit HitOf(const CatalogEntry& e) {
+  CatalogHit h;
+  h.id = e.file.id;
+  h.title_en = e.file.card->title_en;
+  h.title_de = e.file.card->title_de;
+  h.path = e.file.path;
+  h.kind = ToString(e.file.card->kind);
+  h.classes = e.classes;
+  h.links = e.features.links;
+  h.joints = e.features.joints;
+  h.revolute = CountOf(e.features.joints_by_type, "D");
+  h.prismatic = CountOf(e.features.joints_by_type, "S");
+  h.motion = e.file.card->motion;
+  const AccessFeatures& f = e.features;
+  h.features = {f.drive_joints, f.drive_joints_at_frame, f.output_links, f.output_links_at_frame, f.links, f.joints,
+                f.links_by_degree, f.joints_by_type};
+  return h;
+}
+
+}  // namespace api_detail
+
 std::vector<CatalogHit> FindInCatalog(const CatalogQuery& q, const std::string& directory) {
   const FeatureQuery query = ToFeatureQuery(q);
   const Catalog catalog = Catalog::Load(directory.empty() ? DefaultCatalogDirectory() : directory);
   std::vector<CatalogHit> hits;
-  for (const CatalogEntry* e : FindEntries(catalog, query)) {
-    CatalogHit h;
-    h.id = e->file.id;
-    h.title_en = e->file.card->title_en;
-    h.title_de = e->file.card->title_de;
-    h.path = e->file.path;
-    h.kind = ToString(e->file.card->kind);
-    h.classes = e->classes;
-    h.links = e->features.links;
-    h.joints = e->features.joints;
-    h.revolute = CountOf(e->features.joints_by_type, "D");
-    h.prismatic = CountOf(e->features.joints_by_type, "S");
-    hits.push_back(std::move(h));
-  }
+  for (const CatalogEntry* e : FindEntries(catalog, query)) hits.push_back(api_detail::HitOf(*e));
   return hits;
+}
+
+std::vector<CatalogTerm> CatalogClassTerms() {
+  std::vector<CatalogTerm> terms;
+  for (const CatalogClass& c : CatalogClasses()) terms.push_back({c.name, c.meaning});
+  return terms;
+}
+
+std::vector<CatalogTerm> FigureQuantityTerms() {
+  std::vector<CatalogTerm> terms;
+  for (const FigureQuantityInfo& q : FigureQuantities()) terms.push_back({q.name, q.meaning});
+  return terms;
 }
 
 }  // namespace koppel

@@ -6,11 +6,14 @@
 // koppel::synthesis, ...) have headers of their own under koppel/<part>/.
 #pragma once
 
+#include "koppel/api/atlas.hpp"
 #include "koppel/api/catalog.hpp"
+#include "koppel/api/catalog_check.hpp"
 #include "koppel/api/design_chart.hpp"
 #include "koppel/api/fit.hpp"
 #include "koppel/api/model.hpp"
 #include "koppel/api/motion_synthesis.hpp"
+#include "koppel/api/path_synthesis.hpp"
 #include "koppel/api/proportionality.hpp"
 #include "koppel/api/simulation.hpp"
 #include "koppel/api/sweep_layout.hpp"

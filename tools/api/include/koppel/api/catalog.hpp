@@ -4,18 +4,29 @@
 #pragma once
 
 #include "koppel/api/model.hpp"
-#include "koppel/catalog/catalog.hpp"  // FeatureQuery
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace koppel {
 
+// An entry's access features (Zugriffsmerkmale): as its card declares them, completed by those
+// its joint graph shows.
+struct CatalogFeatures {
+  int drive_joints = 0, drive_joints_at_frame = 0, output_links = 0, output_links_at_frame = 0;
+  int links = 0, joints = 0;
+  std::map<int, int> links_by_degree;         // joints per link (2 binary, 3 ternary ...) -> links
+  std::map<std::string, int> joints_by_type;  // "D" revolute, "S" prismatic ... -> joints
+};
+
 struct CatalogHit {
   std::string id, title_en, title_de, path, kind;
   std::vector<std::string> classes;
   int links = 0, joints = 0, revolute = 0, prismatic = 0;
+  std::string motion;  // "<input motion> -> <output motion>", as the card says
+  CatalogFeatures features;
   Model Load(const ParameterValues& set = {}) const { return Model::Load(path, set); }
 };
 
@@ -30,14 +41,21 @@ struct CatalogQuery {
   std::string like;    // a mechanism file or catalog id: entries with its kinematic chain; empty: any
 };
 
-// The catalog library's query for `query`: every count parsed, the kind and the class checked, the
-// `like` mechanism read and admitted (ReadAdmittedMechanism). InputError naming the field (as
-// spelt in CatalogQuery) otherwise. The one place where a query's text becomes a query.
-FeatureQuery ToFeatureQuery(const CatalogQuery& query);
-
+// The entries of the catalog in `directory` that match every field of `query`, in file order.
+// The query is checked first (tools/api/src/catalog_query.hpp: ToFeatureQuery): a malformed field
+// is an InputError whose diagnostic has the file "catalog query" and the field's name (as spelt
+// in CatalogQuery) as its path; the `like` mechanism's own problems keep their file. Then the
+// catalog is read: InputError with every bad file's diagnostics.
 // The default catalog: $KOPPEL_CATALOG, else the one installed with koppel (share/koppel/catalog),
-// else the source tree's. InputError for an unreadable catalog or a malformed query.
+// else the source tree's.
 std::vector<CatalogHit> FindInCatalog(const CatalogQuery& query, const std::string& directory = "");
 std::string CatalogDirectory();
+
+// A word of the catalog's vocabulary and what it means (for --help and the README).
+struct CatalogTerm {
+  std::string name, meaning;
+};
+std::vector<CatalogTerm> CatalogClassTerms();     // the classes an entry may have (--class)
+std::vector<CatalogTerm> FigureQuantityTerms();   // the quantities a card's figures may use
 
 }  // namespace koppel

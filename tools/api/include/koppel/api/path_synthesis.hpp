@@ -1,0 +1,59 @@
+// Path generation from an atlas (koppel synth path): the four-bars whose coupler point passes a
+// set of points, best first, each a distinct design (koppel/synthesis/path_synthesis.hpp gives the
+// method: descriptor look-up, closed-form pre-polish, the least-squares fit through the real
+// mechanism, repeats dropped, Roberts cognates named). Lengths in the points' unit.
+#pragma once
+
+#include "koppel/core/mechanism.hpp"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+// POINTS.csv: the header `x,y`, then one point a line in order along the path. InputError with
+// every bad line (file:line:column).
+std::vector<Eigen::Vector2d> ReadPathPointsFile(const std::string& path);
+
+struct PathSpec {
+  std::vector<Eigen::Vector2d> points;  // in order along the path
+  bool open = false;                    // an open stretch (matched against rocker arcs)
+  int top = 10;                         // linkages returned
+  int candidates = 0;                   // atlas curves pre-polished (0: max(100, 10 top))
+  int threads = 0;                      // 0: one per core
+};
+// Empty when the spec can be run; else why not (too few points, ...).
+std::string PathSpecProblem(const PathSpec& spec);
+
+struct PathDesign {
+  double error = 0;  // RMS distance of the points from the polished coupler curve
+  Eigen::Vector2d a0 = Eigen::Vector2d::Zero(), b0 = Eigen::Vector2d::Zero();  // the pivots
+  double crank = 0, coupler = 0, rocker = 0, frame = 0;                         // A0A, AB, B0B, A0B0
+  Eigen::Vector2d coupler_point = Eigen::Vector2d::Zero();  // K along A -> B, and left of it
+  std::string grashof;            // the Grashof type, as ToString(GrashofType) names it
+  int cognate_of = -1;            // index of the better design it is a Roberts cognate of; -1: none
+  std::uint64_t atlas_seed = 0, atlas_index = 0;  // the atlas curve it came from
+  std::string fit;                // the polishing fit's brief
+  Mechanism mechanism;            // output "P" is the coupler point
+};
+
+struct PathDesigns {
+  bool ok = false;
+  bool invalid_request = false;  // not ok because of the request (bad input), not the search
+  std::string message;
+  std::vector<PathDesign> designs;  // distinct, by error, smallest first
+  int duplicates = 0;               // polished repeats of a better design, dropped
+  std::uint64_t atlas_curves = 0;   // curves in the atlas searched
+};
+
+// Reads the atlas file (io::FileError when it cannot) and searches it.
+PathDesigns SynthesisePathFromAtlas(const PathSpec& spec, const std::string& atlas_path);
+
+// The design as a mechanism file named `name` with `comment` at its top, its sweep one turn of
+// the crank from the assembly's angle by 1 deg.
+std::string PathDesignYaml(const PathDesign& design, const std::string& name, const std::string& comment);
+
+}  // namespace koppel

@@ -7,6 +7,9 @@
 #pragma once
 
 #include "koppel/api/catalog.hpp"
+#include "koppel/api/classification.hpp"
+#include "koppel/api/coupler_curve.hpp"
+#include "koppel/api/forces.hpp"
 #include "koppel/api/model.hpp"
 #include "koppel/api/sweep_layout.hpp"
 #include "koppel/api/synthesis.hpp"

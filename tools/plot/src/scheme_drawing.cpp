@@ -1,6 +1,7 @@
 #include "koppel/plot/scheme_drawing.hpp"
 
 #include "koppel/analysis/coupler_curve.hpp"
+#include "koppel/analysis/dead_centres.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/plot/sampled_run.hpp"
 #include "koppel/plot/scheme.hpp"
@@ -26,6 +27,9 @@ SweepOptions SchemeSweepOf(const Model& model, const SchemeRequest& request) {
   return range;
 }
 
+// An input for people: degrees for an R drive.
+double Shown(const Model& model, double input) { return model.input_is_angle() ? RadToDeg(input) : input; }
+
 // The labels of the caption: φ for phi, degrees for an R drive.
 struct InputWords {
   std::string name, unit;
@@ -34,42 +38,46 @@ InputWords InputWordsOf(const Model& model) {
   return {model.input_name() == "phi" ? "φ" : model.input_name(), model.input_is_angle() ? "°" : ""};
 }
 
-// The output Model::FindDeadCentres takes for "" (empty when there is none: it refused).
-std::string FirstScalarOutput(const Mechanism& m) {
-  for (const Output& o : m.outputs)
-    if (o.Components() == 1) return o.name;
-  return "";
+// The index of a scalar output by name ("": the first scalar output); -1 when there is none.
+int ScalarOutputIndex(const Mechanism& m, const std::string& name) {
+  for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o)
+    if (m.outputs[o].Components() == 1 && (name.empty() || m.outputs[o].name == name)) return o;
+  return -1;
 }
 
-// The dead-centre poses of request.output drawn over the scheme, named in the caption (searched
-// at the resolution of `koppel deadcentres`, 1 deg, or the sweep's step when finer); what cannot
-// be drawn goes to `problems`.
+// The dead-centre poses of request.output drawn over the scheme, named in the caption; what
+// cannot be drawn goes to `problems`. Searched on the drawing's own sweep (its branch and its
+// --at-branch-point, so that the search stops where the sweep stops) at the resolution of
+// `koppel deadcentres`, 1 deg, or the sweep's step when finer. (Model::FindDeadCentres takes no
+// at_branch_point yet: the analysis is called directly, as the picture library may.)
 void AddDeadCentrePoses(const Model& model, const SchemeRequest& request, const SampledRun& run, SchemeScene& scene,
                         std::vector<std::string>& problems) {
   const Mechanism& m = model.mechanism();
-  const double unit = model.input_is_angle() ? DegToRad(1.0) : 1.0;
   const InputWords words = InputWordsOf(model);
-  const SweepSpan span = model.Span(request.from, request.to, request.step);
-  const double step = 1.0 < std::abs(span.step) ? 1.0 : span.step;
-  const DeadCentres dead = model.FindDeadCentres(request.output, span.from, span.to, step);
-  if (dead.status != AnalysisStatus::kComplete) problems.push_back("dead centres: " + dead.message);
+  const int output = ScalarOutputIndex(m, request.output);
+  if (output < 0) throw InputError({Diagnostic{model.path(), 0, 0, "output", "'" + request.output + "' is not a scalar output"}});
+  SweepOptions search = SchemeSweepOf(model, request);
+  const double degree = model.input_is_angle() ? DegToRad(1.0) : 1.0;
+  search.step = degree < std::abs(search.step) ? degree : search.step;
+  const DeadCentreReport dead = FindDeadCentres(m, output, 0, search);
+  if (!dead.sweep.complete()) problems.push_back("dead centres: " + dead.sweep.message);
   int unnamed = 0;
   std::string list;
-  for (const DeadCentrePoint& d : dead.points) {
+  for (const DeadCentre& d : dead.points) {
     OverlayPose overlay;
-    overlay.suffix = d.kind == "extended" ? "a" : d.kind == "folded" ? "i" : std::to_string(++unnamed);
-    const Expected<Eigen::VectorXd> dead_pose = PoseAt(m, run, d.input * unit);
+    overlay.suffix = d.kind == DeadCentreKind::kExtended ? "a" : d.kind == DeadCentreKind::kFolded ? "i" : std::to_string(++unnamed);
+    const double shown = Shown(model, d.input);
+    const Expected<Eigen::VectorXd> dead_pose = PoseAt(m, run, d.input);
     if (!dead_pose) {
-      problems.push_back("dead centre at " + fmt::format("{:g}", d.input) + ": " + dead_pose.error());
+      problems.push_back("dead centre at " + fmt::format("{:g}", shown) + ": " + dead_pose.error());
       continue;
     }
     overlay.q = *dead_pose;
-    list += fmt::format("{}{}_{} = {:.2f}{}", list.empty() ? "" : ", ", words.name, overlay.suffix, d.input, words.unit);
+    list += fmt::format("{}{}_{} = {:.2f}{}", list.empty() ? "" : ", ", words.name, overlay.suffix, shown, words.unit);
     scene.overlays.push_back(std::move(overlay));
   }
-  const std::string output = request.output.empty() ? FirstScalarOutput(m) : request.output;
-  if (dead.points.empty()) problems.push_back("no dead centre of '" + output + "' found");
-  if (!list.empty()) scene.caption += "; dead centres of " + output + ": " + list;
+  if (dead.points.empty()) problems.push_back("no dead centre of '" + m.outputs[output].name + "' found");
+  if (!list.empty()) scene.caption += "; dead centres of " + m.outputs[output].name + ": " + list;
 }
 
 }  // namespace
@@ -103,11 +111,11 @@ SchemeDrawing DrawSchemeOf(const Model& model, const SchemeRequest& request) {
   const Expected<Eigen::VectorXd> pose = PoseAt(m, run, at);
   if (!pose) {
     drawing.status = PlotStatus::kFailed;
-    drawing.message = "cannot reach " + words.name + " = " + fmt::format("{:g}", at / unit) + ": " + pose.error();
+    drawing.message = "cannot reach " + words.name + " = " + fmt::format("{:g}", Shown(model, at)) + ": " + pose.error();
     return drawing;
   }
   scene.q = *pose;
-  scene.caption = fmt::format("{}: {} = {:.2f}{}", m.name, words.name, at / unit, words.unit);
+  scene.caption = fmt::format("{}: {} = {:.2f}{}", m.name, words.name, Shown(model, at), words.unit);
   for (int i = 0; i < run.size(); ++i) scene.extent.push_back(run.poses.row(i).transpose());
   if (request.trace) {
     for (const Stretch& s : run.stretches) {

@@ -2,6 +2,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "cycle_flags.hpp"
+#include "model_loading.hpp"
 
 #include "koppel/export/export.hpp"
 
@@ -35,9 +36,9 @@ std::pair<int, int> ParseSize(const std::string& text) {
 }
 
 void Run(const Args& args) {
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
+  const Model model = LoadModel(args.file, args.sets);
   plot::AnimationOptions options;
-  options.cycle = ReadCycleFlags(file, args.cycle);
+  options.cycle = ReadCycleFlags(model, args.cycle);
   const double frames = ParseNumberFlag("--frames", args.frames);
   options.frames = frames >= 0 && frames <= kMaxAnimationFrames && frames == std::floor(frames) ? static_cast<int>(frames) : -1;
   plot::GifOptions gif;
@@ -52,7 +53,7 @@ void Run(const Args& args) {
     Complain("--size/--fps/--frames: " + why);
     throw Exit{kExitBadInput};
   }
-  WriteExportResult(args.file, args.out, plot::AnimateGif(file.mechanism, options, gif));
+  WriteExportResult(args.file, args.out, plot::AnimateGif(model.mechanism(), options, gif));
 }
 
 }  // namespace

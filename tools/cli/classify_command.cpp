@@ -1,8 +1,9 @@
 // koppel classify: mobility, drive rotation and the Grashof type of four-bars and slider-cranks.
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 
-#include "koppel/analysis/classification.hpp"
+#include "koppel/api/classification.hpp"
 
 #include <array>
 
@@ -34,9 +35,8 @@ struct Rows {
 
 void Run(const Args& args) {
   CheckFormat(args.format);
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const Mechanism& m = file.mechanism;
-  const Classification c = Classify(m);
+  const Model model = LoadModel(args.file, args.sets);
+  const ModelClassification c = ClassifyModel(model);
   Rows rows;
   nlohmann::json j = nlohmann::json::object();
   auto add_number = [&](const std::string& q, double v, const std::string& unit) {
@@ -49,10 +49,10 @@ void Run(const Args& args) {
   };
   add_number("mobility", c.mobility, "1");
   if (c.assembled) add_number("rank_mobility", c.rank_mobility, "1");
-  add_word("drive_rotation", m.InputIsAngle() && c.drive_turns_fully ? "full" : "limited");
-  if (c.grashof != GrashofType::kNotApplicable) {
-    add_word("grashof", ToString(c.grashof));
-    for (const auto& [name, value] : c.lengths) add_number(name, value, file.loads.LengthUnit());
+  add_word("drive_rotation", c.drive_rotation);
+  if (!c.grashof.empty()) {
+    add_word("grashof", c.grashof);
+    for (const auto& [name, value] : c.lengths) add_number(name, value, model.length_unit());
     add_word("grashof_rule", c.rule);
   }
   WriteOutput(args.out, args.format == "json" ? JsonText(j) : rows.ToCsv());

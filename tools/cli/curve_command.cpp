@@ -2,12 +2,15 @@
 // the straight-line analysis (Geradführung) of seed 003.
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 #include "sweep_report.hpp"
 
+#include "koppel/api/coupler_curve.hpp"
 #include "koppel/core/angles.hpp"
-#include "koppel/analysis/coupler_curve.hpp"
 
 #include <algorithm>
+#include <tuple>
+#include <utility>
 
 namespace koppel::cli {
 namespace curve_command {  // this file's own names, apart from the other commands' in a unity build
@@ -21,110 +24,119 @@ struct Args {
 };
 
 // The curve of `point` over --from/--to/--step: position, tangent, arc length, curvature.
-void RunTrace(const Args& args, const MechanismFile& file, const PointRef& point, const ContinuationOptions& continuation) {
-  const Mechanism& m = file.mechanism;
-  const bool angle = m.InputIsAngle();
+void RunTrace(const Args& args, const Model& model, const CouplerCurveRequest& base) {
+  const bool angle = model.input_is_angle();
   auto in = [&](double v) { return angle ? DegToRad(v) : v; };
-  auto shown = [&](double v) { return angle ? RadToDeg(v) : v; };
-  SweepOptions range;
-  range.continuation = continuation;
-  range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
-  range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
-  range.step = in(args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step));
-  std::string why;
-  CheckSampleCount(range.from, range.to, range.step, "--from/--to/--step");
-  if (!range.IsValid(&why)) {
+  CouplerCurveRequest request = base;
+  if (!args.from.empty()) request.from = ParseNumberFlag("--from", args.from);
+  if (!args.to.empty()) request.to = ParseNumberFlag("--to", args.to);
+  if (!args.step.empty()) request.step = ParseNumberFlag("--step", args.step);
+  const SweepSpan span = model.Span(request.from, request.to, request.step);
+  CheckSampleCount(in(span.from), in(span.to), in(span.step), "--from/--to/--step");
+  if (std::string why; !request.IsValid(model, &why)) {
     Complain("--from/--to/--step: " + why);
     throw Exit{kExitBadInput};
   }
-  const CouplerCurve c = TraceCurve(m, point, range);
+  const CouplerCurveTable c = TraceCouplerCurve(model, request);
   Table t;
-  t.columns = {m.drive.input_name, "x", "y", "dx", "dy", "arc", "curvature", "singular"};
+  t.columns = {model.input_name(), "x", "y", "dx", "dy", "arc", "curvature", "singular"};
   for (size_t i = 0; i < c.inputs.size(); ++i)
-    t.rows.push_back({shown(c.inputs[i]), c.points[i].x(), c.points[i].y(), c.d1[i].x(), c.d1[i].y(), c.arc_length[i], c.curvature[i],
-                      static_cast<double>(c.singular[i])});
+    t.rows.push_back({c.inputs[i], c.points[i].x, c.points[i].y, c.d1[i].x, c.d1[i].y, c.arc_length[i], c.curvature[i],
+                      c.singular[i] ? 1.0 : 0.0});
   if (args.format == "json") {
     nlohmann::json j = t.ToJson();
-    j["mechanism"] = m.name;
-    j["point"] = m.links[point.link].name + "." + m.links[point.link].points[point.point].name;
+    j["mechanism"] = model.name();
+    j["point"] = c.point;
     j["complete"] = c.sweep.complete();
-    j.update(SweepEventsJson(m, c.sweep));
+    j.update(SweepEventsJson(c.sweep));
     if (!c.sweep.complete()) j["message"] = c.sweep.message;
     WriteOutput(args.out, JsonText(j));
   } else {
     WriteOutput(args.out, t.ToCsv());
   }
-  ReportSweep(args.file, m, c.sweep);
+  ReportSweep(args.file, model, c.sweep);
   if (!c.sweep.complete()) throw Exit{kExitFailed};
 }
 
-// --straight: the longest stretch within --qg (or the band of --stretch A:E) about --at.
-void RunStraight(const Args& args, const MechanismFile& file, const PointRef& point, const ContinuationOptions& continuation) {
-  const Mechanism& m = file.mechanism;
-  const bool angle = m.InputIsAngle();
-  if (!angle) {
+// --stretch A:E [deg]; Exit{2} unless it has that form and a reference point --at.
+std::pair<double, double> ParseStretch(const Args& args) {
+  const auto colon = args.stretch.find(':');
+  if (colon == std::string::npos || args.at.empty()) {
+    Complain("--stretch A:E needs the form A:E (degrees) and a reference point --at");
+    throw Exit{kExitBadInput};
+  }
+  const double a = ParseNumberFlag("--stretch", args.stretch.substr(0, colon)), e = ParseNumberFlag("--stretch", args.stretch.substr(colon + 1));
+  if (std::string why; !StraightStretchIsValid(a, e, &why)) {
+    Complain("--stretch: " + why);
+    throw Exit{kExitBadInput};
+  }
+  return {a, e};
+}
+
+// The flags of --straight, checked as the search's own rules, each naming its flag.
+StraightLineRequest ReadStraight(const Args& args, const Model& model, const CouplerCurveRequest& base) {
+  if (!model.input_is_angle()) {
     Complain("--straight needs a rotating drive (an R joint)");
     throw Exit{kExitBadInput};
   }
-  const double resolution = DegToRad(ParseNumberFlag("--resolution", args.resolution));
+  StraightLineRequest request;
+  request.point = base.point;
+  request.at_branch_point = base.at_branch_point;
+  request.resolution = ParseNumberFlag("--resolution", args.resolution);
+  const double resolution = DegToRad(request.resolution);
   if (resolution <= 0) {
     Complain("--resolution must be positive");
     throw Exit{kExitBadInput};
   }
-  std::optional<double> reference;
-  if (!args.at.empty()) reference = DegToRad(ParseNumberFlag("--at", args.at));
-  CheckSampleCount(reference.value_or(0) - kPi, reference.value_or(0) + kPi, resolution, "--at/--resolution", kStraightSearchSamples);
-  StraightStretch s;
+  if (!args.at.empty()) request.at = ParseNumberFlag("--at", args.at);
+  const double reference = request.at ? DegToRad(*request.at) : 0.0;
+  CheckSampleCount(reference - kPi, reference + kPi, resolution, "--at/--resolution", kStraightSearchSamples);
   if (!args.stretch.empty()) {
-    const auto colon = args.stretch.find(':');
-    if (colon == std::string::npos || !reference) {
-      Complain("--stretch A:E needs the form A:E (degrees) and a reference point --at");
-      throw Exit{kExitBadInput};
-    }
-    const double a = DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(0, colon))),
-                 e = DegToRad(ParseNumberFlag("--stretch", args.stretch.substr(colon + 1)));
-    if (std::string why; !StretchIsValid(a, e, &why)) {
-      Complain("--stretch: " + why);
-      throw Exit{kExitBadInput};
-    }
-    CheckSampleCount(std::min({a, e, *reference}), std::max({a, e, *reference}), resolution, "--stretch/--at/--resolution");
-    s = StretchBand(m, point, *reference, a, e, resolution, continuation);
+    std::tie(request.stretch_a, request.stretch_e) = ParseStretch(args);
+    const double a = DegToRad(*request.stretch_a), e = DegToRad(*request.stretch_e);
+    CheckSampleCount(std::min({a, e, reference}), std::max({a, e, reference}), resolution, "--stretch/--at/--resolution");
   } else {
-    const double qg = ParseNumberFlag("--qg", args.qg);
-    if (qg <= 0) {
+    request.qg = ParseNumberFlag("--qg", args.qg);
+    if (request.qg <= 0) {
       Complain("--qg must be positive");
       throw Exit{kExitBadInput};
     }
-    s = LongestStraightStretch(m, point, qg, reference, kPi, resolution, continuation);
   }
+  return request;
+}
+
+// --straight: the longest stretch within --qg (or the band of --stretch A:E) about --at.
+void RunStraight(const Args& args, const Model& model, const CouplerCurveRequest& base) {
+  const StraightLine s = FindStraightLine(model, ReadStraight(args, model, base));
   if (!s.ok()) {
     Complain(args.file + ": " + s.message);
     throw Exit{kExitFailed};
   }
+  const std::string input = model.input_name(), length = model.length_unit();
   Summary sum;
-  sum.Add(m.drive.input_name + "_I", RadToDeg(s.reference), "deg");
-  sum.Add("K_I_x", s.reference_point.x(), file.loads.LengthUnit());
-  sum.Add("K_I_y", s.reference_point.y(), file.loads.LengthUnit());
-  sum.Add("tangent_angle", RadToDeg(std::atan2(s.tangent.y(), s.tangent.x())), "deg");
-  sum.Add(m.drive.input_name + "_A", RadToDeg(s.phi_a), "deg");
-  sum.Add(m.drive.input_name + "_E", RadToDeg(s.phi_e), "deg");
-  sum.Add(m.drive.input_name + "_G", RadToDeg(s.phi_g), "deg");
-  sum.Add("L", s.length, file.loads.LengthUnit());
-  sum.Add("delta_y", s.band, file.loads.LengthUnit());
+  sum.Add(input + "_I", s.reference, "deg");
+  sum.Add("K_I_x", s.reference_point.x, length);
+  sum.Add("K_I_y", s.reference_point.y, length);
+  sum.Add("tangent_angle", s.tangent_angle, "deg");
+  sum.Add(input + "_A", s.phi_a, "deg");
+  sum.Add(input + "_E", s.phi_e, "deg");
+  sum.Add(input + "_G", s.phi_g, "deg");
+  sum.Add("L", s.length, length);
+  sum.Add("delta_y", s.band, length);
   sum.Add("Q_G", s.qg, "1");
   WriteOutput(args.out, args.format == "json" ? JsonText(sum.ToJson()) : sum.ToCsv());
 }
 
 void Run(const Args& args) {
   CheckFormat(args.format);
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const PointRef point = ResolvePoint(file.mechanism, args.point, "--point");
-  ContinuationOptions continuation;
-  continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
+  const Model model = LoadModel(args.file, args.sets);
+  CouplerCurveRequest request;
+  request.point = ResolvePoint(model.mechanism(), args.point, "--point");
+  request.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
   if (args.straight) {
-    RunStraight(args, file, point, continuation);
+    RunStraight(args, model, request);
   } else {
-    RunTrace(args, file, point, continuation);
+    RunTrace(args, model, request);
   }
 }
 

@@ -2,8 +2,6 @@
 
 #include "common.hpp"
 
-#include "koppel/core/angles.hpp"
-
 #include <fmt/format.h>
 
 namespace koppel::cli {
@@ -16,18 +14,14 @@ void AddCycleFlags(CLI::App* command, CycleFlags& flags) {
   command->add_option("--pin", flags.pin, "Hole diameter D at the joints, slot width [length unit], less than W (default: W/2)");
 }
 
-plot::CycleOptions ReadCycleFlags(const MechanismFile& file, const CycleFlags& flags) {
-  const Mechanism& m = file.mechanism;
-  plot::CycleOptions options;
-  if (flags.trace.empty()) options.traced = plot::PointOutputs(m);
+plot::CycleOptions ReadCycleFlags(const Model& model, const CycleFlags& flags) {
+  const Mechanism& m = model.mechanism();
+  plot::CycleOptions options = plot::CycleOptionsOf(model);
+  if (!flags.trace.empty()) options.traced.clear();
   for (const std::string& text : flags.trace) options.traced.push_back({ResolvePoint(m, text, "--trace"), text});
-  options.sizes = plot::DefaultPartSizes(m);
   if (!flags.plate.empty()) options.sizes.plate_width = ParseNumberFlag("--plate", flags.plate);
   if (!flags.pin.empty()) options.sizes.pin_diameter = ParseNumberFlag("--pin", flags.pin);
   else if (!flags.plate.empty()) options.sizes.pin_diameter = options.sizes.plate_width / 2;
-  const double unit = m.InputIsAngle() ? DegToRad(1.0) : 1.0;
-  options.sweep.from = file.sweep.from * unit;
-  options.sweep.to = file.sweep.to * unit;
   std::string why;
   if (!options.IsValid(&why)) {
     Complain(fmt::format("--pin/--plate: {} (D = {:g}, W = {:g})", why, options.sizes.pin_diameter, options.sizes.plate_width));

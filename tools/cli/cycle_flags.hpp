@@ -3,7 +3,7 @@
 // sweep (the range where a drive meets no limit); and how their result is written and told.
 #pragma once
 
-#include "koppel/catalog/mechanism_file.hpp"
+#include "koppel/api/model.hpp"
 #include "koppel/export/export.hpp"
 #include "koppel/plot/cycle.hpp"
 
@@ -23,8 +23,9 @@ struct CycleFlags {
 void AddCycleFlags(CLI::App* command, CycleFlags& flags);
 
 // The options of the flags: the named points (default: the file's point outputs), the sizes
-// (default: plot::DefaultPartSizes). Exit{2} for an unknown point or sizes that are not valid.
-plot::CycleOptions ReadCycleFlags(const MechanismFile& file, const CycleFlags& flags);
+// (default: plot::DefaultPartSizes), the file's sweep (plot::CycleOptionsOf). Exit{2} for an
+// unknown point or sizes that are not valid.
+plot::CycleOptions ReadCycleFlags(const Model& model, const CycleFlags& flags);
 
 // Writes the result's file to `out` (WriteOutput) unless it failed; its message on stderr,
 // prefixed by `file`. Exit{1} when it failed (no file) or is partial (the file holds what was

@@ -2,15 +2,10 @@
 // (seed 000 "Bild 3") and a traced coupler curve.
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 #include "sweep_report.hpp"
 
-#include "koppel/analysis/coupler_curve.hpp"
-#include "koppel/analysis/dead_centres.hpp"
-#include "koppel/core/angles.hpp"
-#include "koppel/plot/sampled_run.hpp"
-#include "koppel/plot/scheme.hpp"
-
-#include <fmt/format.h>
+#include "koppel/plot/scheme_drawing.hpp"
 
 namespace koppel::cli {
 namespace draw_command {  // this file's own names, apart from the other commands' in a unity build
@@ -23,84 +18,47 @@ struct Args {
   std::string out;
 };
 
-// --deadcentres: the dead-centre poses of --output drawn over the scheme, named in the caption;
-// what cannot be drawn goes to `problems`.
-void AddDeadCentres(const Args& args, const Mechanism& m, const plot::SampledRun& run, const SweepOptions& range,
-                    plot::SchemeScene& scene, std::vector<std::string>& problems) {
-  const bool angle = m.InputIsAngle();
-  auto in = [&](double v) { return angle ? DegToRad(v) : v; };
-  auto shown = [&](double v) { return angle ? RadToDeg(v) : v; };
-  const std::string input_name = m.drive.input_name == "phi" ? "φ" : m.drive.input_name, unit = angle ? "°" : "";
-  const int output = ResolveScalarOutput(m, args.output, "--output", args.file);
-  SweepOptions search = range;
-  search.step = in(1.0) < std::abs(range.step) ? in(1.0) : range.step;  // the search resolution of `deadcentres`
-  const DeadCentreReport dead = FindDeadCentres(m, output, 0, search);
-  if (!dead.sweep.complete()) problems.push_back("dead centres: " + dead.sweep.message);
-  int unnamed = 0;
-  std::string list;
-  for (const DeadCentre& d : dead.points) {
-    plot::OverlayPose overlay;
-    overlay.suffix = d.kind == DeadCentreKind::kExtended ? "a" : d.kind == DeadCentreKind::kFolded ? "i" : std::to_string(++unnamed);
-    const Expected<Eigen::VectorXd> dead_pose = plot::PoseAt(m, run, d.input);
-    if (!dead_pose) {
-      problems.push_back("dead centre at " + fmt::format("{:g}", shown(d.input)) + ": " + dead_pose.error());
-      continue;
-    }
-    overlay.q = *dead_pose;
-    list += fmt::format("{}{}_{} = {:.2f}{}", list.empty() ? "" : ", ", input_name, overlay.suffix, shown(d.input), unit);
-    scene.overlays.push_back(std::move(overlay));
-  }
-  if (dead.points.empty()) problems.push_back("no dead centre of '" + m.outputs[output].name + "' found");
-  if (!list.empty()) scene.caption += "; dead centres of " + m.outputs[output].name + ": " + list;
+// Whether --output names a scalar output (the first one when empty), without a word: a pose that
+// cannot be drawn is told first, and ResolveScalarOutput names the output's problem after it.
+bool HasScalarOutput(const Mechanism& m, const std::string& name) {
+  for (const Output& o : m.outputs)
+    if (o.Components() == 1 && (name.empty() || o.name == name)) return true;
+  return false;
 }
 
-void Run(const Args& args) {
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const Mechanism& m = file.mechanism;
-  const bool angle = m.InputIsAngle();
-  auto in = [&](double v) { return angle ? DegToRad(v) : v; };
-  auto shown = [&](double v) { return angle ? RadToDeg(v) : v; };
-  SweepOptions range;
-  range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
-  range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
-  range.step = in(args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step));
-  range.order = 0;
-  range.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
-  if (range.step == 0 || SampleCount(range.from, range.to, range.step) > 20001) {
+plot::SchemeRequest ReadRequest(const Args& args, const Model& model) {
+  const Mechanism& m = model.mechanism();
+  plot::SchemeRequest request;
+  if (!args.from.empty()) request.from = ParseNumberFlag("--from", args.from);
+  if (!args.to.empty()) request.to = ParseNumberFlag("--to", args.to);
+  if (!args.step.empty()) request.step = ParseNumberFlag("--step", args.step);
+  request.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
+  if (std::string why; !request.IsValid(model, &why)) {
     Complain("--step must not be 0 (and give at most 20000 samples)");
     throw Exit{kExitBadInput};
   }
-  // one sweep for the view, the guides' lengths, the trace and the poses' starting points
-  const Mechanism traced = args.trace.empty() ? m : WithPointOutput(m, ResolvePoint(m, args.trace, "--trace"));
-  const plot::SampledRun run = plot::SampleMechanism(traced, range);
-  if (run.size() == 0) {
-    Complain(args.file + ": " + run.message);
-    throw Exit{kExitFailed};
-  }
-  std::vector<std::string> problems;
-  if (!run.complete) problems.push_back(run.message);
-  const std::string input_name = m.drive.input_name == "phi" ? "φ" : m.drive.input_name, unit = angle ? "°" : "";
-  plot::SchemeScene scene;
-  const double at = args.at.empty() ? m.hint.input : in(ParseNumberFlag("--at", args.at));
-  const Expected<Eigen::VectorXd> pose = plot::PoseAt(m, run, at);
-  if (!pose) {
-    Complain(args.file + ": cannot reach " + input_name + " = " + fmt::format("{:g}", shown(at)) + ": " + pose.error());
-    throw Exit{kExitFailed};
-  }
-  scene.q = *pose;
-  scene.caption = fmt::format("{}: {} = {:.2f}{}", m.name, input_name, shown(at), unit);
-  for (int i = 0; i < run.size(); ++i) scene.extent.push_back(run.poses.row(i).transpose());
   if (!args.trace.empty()) {
-    for (const plot::Stretch& s : run.stretches) {
-      scene.trace.emplace_back();
-      for (int i = s.begin; i < s.end; ++i) scene.trace.back().emplace_back(run.outputs(i, 0), run.outputs(i, 1));
-    }
-    scene.trace_name = args.trace;
+    request.trace = ResolvePoint(m, args.trace, "--trace");
+    request.trace_name = args.trace;
   }
-  if (args.deadcentres) AddDeadCentres(args, m, run, range, scene, problems);
-  WriteOutput(args.out, plot::DrawScheme(m, scene));
-  if (!problems.empty()) {
-    for (const std::string& p : problems) Complain(args.file + ": " + p);
+  if (!args.at.empty()) request.at = ParseNumberFlag("--at", args.at);
+  request.dead_centres = args.deadcentres && HasScalarOutput(m, args.output);
+  request.output = args.output;
+  return request;
+}
+
+void Run(const Args& args) {
+  const Model model = LoadModel(args.file, args.sets);
+  const plot::SchemeRequest request = ReadRequest(args, model);
+  const plot::SchemeDrawing drawing = Checked([&] { return plot::DrawSchemeOf(model, request); });
+  if (drawing.status == plot::PlotStatus::kFailed) {
+    Complain(args.file + ": " + drawing.message);
+    throw Exit{kExitFailed};
+  }
+  if (args.deadcentres && !request.dead_centres) ResolveScalarOutput(model.mechanism(), args.output, "--output", args.file);  // Exit{2}
+  WriteOutput(args.out, drawing.svg);
+  if (!drawing.problems.empty()) {
+    for (const std::string& p : drawing.problems) Complain(args.file + ": " + p);
     throw Exit{kExitFailed};
   }
 }

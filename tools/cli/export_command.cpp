@@ -2,7 +2,9 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "cycle_flags.hpp"
+#include "model_loading.hpp"
 
+#include "koppel/api/forces.hpp"  // ModelLoads
 #include "koppel/core/angles.hpp"
 #include "koppel/export/export.hpp"
 
@@ -22,12 +24,12 @@ void Run(const Args& args) {
     Complain("name the format to write: --dxf (the only one so far)");
     throw Exit{kExitBadInput};
   }
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const Mechanism& m = file.mechanism;
+  const Model model = LoadModel(args.file, args.sets);
+  const Mechanism& m = model.mechanism();
   plot::WorkshopOptions options;
-  options.cycle = ReadCycleFlags(file, args.cycle);
+  options.cycle = ReadCycleFlags(model, args.cycle);
   if (!args.at.empty()) options.at = ParseNumberFlag("--at", args.at) * (m.InputIsAngle() ? DegToRad(1.0) : 1.0);
-  const int units = plot::DxfUnits(file.loads.metres_per_unit, file.loads.length_unit_given);
+  const int units = plot::DxfUnits(ModelLoads(model).metres_per_unit, ModelLoads(model).length_unit_given);
   WriteExportResult(args.file, args.out, plot::ExportDxf(m, options, units));
 }
 

@@ -2,14 +2,11 @@
 // constant drive speed), with the virtual-work check and the reduced moment of inertia.
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 #include "sweep_report.hpp"
 
-#include "koppel/analysis/forces.hpp"
-#include "koppel/core/angles.hpp"
+#include "koppel/api/forces.hpp"
 
-#include <fmt/core.h>
-
-#include <functional>
 #include <optional>
 
 namespace koppel::cli {
@@ -24,69 +21,26 @@ struct ForcesArgs {
   std::string out;
 };
 
-// One column of the table: its name, unit and how to read it off a row (empty when the row
-// does not have it).
-struct Column {
-  std::string name, unit;
-  std::function<std::optional<double>(const ForcesRow&)> value;
-};
-
-std::vector<Column> Layout(const Mechanism& m) {
-  const bool angle = m.InputIsAngle();
-  const std::string drive = angle ? "torque" : "force", drive_unit = angle ? "N m" : "N";
-  const std::string inertia = angle ? "J_red" : "m_red";
-  std::vector<Column> columns;
-  auto computed = [](auto get) {
-    return [get](const ForcesRow& r) -> std::optional<double> { return r.computed ? std::optional<double>(get(r)) : std::nullopt; };
-  };
-  auto by_virtual_work = [](auto get) {
-    return [get](const ForcesRow& r) -> std::optional<double> { return r.virtual_work ? std::optional<double>(get(r)) : std::nullopt; };
-  };
-  columns.push_back({m.drive.input_name, angle ? "deg" : "length", [angle](const ForcesRow& r) {
-                       return std::optional<double>(angle ? RadToDeg(r.input) : r.input);
-                     }});
-  columns.push_back({drive, drive_unit, computed([](const ForcesRow& r) { return r.drive; })});
-  columns.push_back({drive + "_vw", drive_unit, by_virtual_work([](const ForcesRow& r) { return r.drive_virtual_work; })});
-  columns.push_back({inertia, angle ? "kg m^2" : "kg", by_virtual_work([](const ForcesRow& r) { return r.reduced_inertia; })});
-  columns.push_back({inertia + "_d1", angle ? "kg m^2/rad" : "kg/m",
-                     by_virtual_work([](const ForcesRow& r) { return r.reduced_inertia_derivative; })});
-  for (size_t j = 0; j < m.joints.size(); ++j) {
-    const std::string& name = m.joints[j].name;
-    columns.push_back({name + "_x", "N", computed([j](const ForcesRow& r) { return r.joints[j].force.x(); })});
-    columns.push_back({name + "_y", "N", computed([j](const ForcesRow& r) { return r.joints[j].force.y(); })});
-    if (m.joints[j].type == JointType::kPrismatic) {
-      columns.push_back({name + "_N", "N", computed([j](const ForcesRow& r) { return r.joints[j].normal; })});
-      columns.push_back({name + "_M", "N m", computed([j](const ForcesRow& r) { return r.joints[j].moment; })});
-    }
-  }
-  columns.push_back({"singular", "1", [](const ForcesRow& r) { return std::optional<double>(r.singular ? 1.0 : 0.0); }});
-  return columns;
-}
-
-std::string ToCsv(const std::vector<Column>& columns, const ForcesResult& result) {
+std::string ToCsv(const ForcesTable& table) {
   std::string out;
-  for (size_t c = 0; c < columns.size(); ++c) out += (c ? "," : "") + columns[c].name;
+  for (size_t c = 0; c < table.columns.size(); ++c) out += (c ? "," : "") + table.columns[c];
   out += "\n";
-  for (const ForcesRow& row : result.rows) {
-    for (size_t c = 0; c < columns.size(); ++c) {
+  for (const std::vector<std::optional<double>>& row : table.rows) {
+    for (size_t c = 0; c < row.size(); ++c) {
       if (c) out += ",";
-      if (const std::optional<double> v = columns[c].value(row)) out += FormatNumber(*v);
+      if (row[c]) out += FormatNumber(*row[c]);
     }
     out += "\n";
   }
   return out;
 }
 
-nlohmann::json ToJson(const std::vector<Column>& columns, const ForcesResult& result) {
-  nlohmann::json names = nlohmann::json::array(), units = nlohmann::json::array(), rows = nlohmann::json::array();
-  for (const Column& c : columns) {
-    names.push_back(c.name);
-    units.push_back(c.unit);
-  }
-  for (const ForcesRow& row : result.rows) {
+nlohmann::json ToJson(const ForcesTable& table) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const std::vector<std::optional<double>>& row : table.rows) {
     nlohmann::json values = nlohmann::json::array();
-    for (const Column& c : columns) {
-      if (const std::optional<double> v = c.value(row)) {
+    for (const std::optional<double>& v : row) {
+      if (v) {
         FormatNumber(*v);  // the same refusal of non-finite numbers as CSV
         values.push_back(*v);
       } else {
@@ -95,53 +49,48 @@ nlohmann::json ToJson(const std::vector<Column>& columns, const ForcesResult& re
     }
     rows.push_back(values);
   }
-  return {{"columns", names}, {"units", units}, {"rows", rows}};
+  return {{"columns", table.columns}, {"units", table.units}, {"rows", rows}};
+}
+
+ForcesRequest ReadRequest(const ForcesArgs& args) {
+  ForcesRequest request;
+  if (!args.from.empty()) request.from = ParseNumberFlag("--from", args.from);
+  if (!args.to.empty()) request.to = ParseNumberFlag("--to", args.to);
+  if (!args.step.empty()) request.step = ParseNumberFlag("--step", args.step);
+  request.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
+  if (!args.speed.empty()) request.speed = ParseNumberFlag("--speed", args.speed);
+  return request;
 }
 
 void RunForces(const ForcesArgs& args) {
   CheckFormat(args.format);
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const Mechanism& m = file.mechanism;
-  const bool angle = m.InputIsAngle();
-  auto to_internal = [&](double v) { return angle ? DegToRad(v) : v; };
-  ForcesOptions options;
-  options.sweep.from = to_internal(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
-  options.sweep.to = to_internal(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
-  options.sweep.step = to_internal(args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step));
-  options.sweep.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
-  if (!args.speed.empty()) {
-    const double speed = ParseNumberFlag("--speed", args.speed);
-    options.speed = angle ? speed * 2.0 * kPi / 60.0 : speed;  // rpm -> rad/s
-  }
-  std::string why;
-  if (!options.IsValid(&why)) {
+  const Model model = LoadModel(args.file, args.sets);
+  const ForcesRequest request = ReadRequest(args);
+  if (std::string why; !request.IsValid(model, &why)) {
     Complain("--from/--to/--step/--speed: " + why);
     throw Exit{kExitBadInput};
   }
-  const Loads& loads = file.loads;
-  if (!loads.HasMass() && loads.forces.empty() && loads.torques.empty() && loads.springs.empty())
-    Complain(args.file + ": note: the file gives no masses and no loads, so every force is zero (README.md, 'Masses and loads')");
-  const ForcesResult result = AnalyseForces(m, loads, options);
+  const ForcesTable result = AnalyseForces(model, request);
+  for (const std::string& note : result.notes) Complain(args.file + ": " + note);
   if (result.bad_input) {
     Complain(args.file + ": " + result.message);
     throw Exit{kExitBadInput};
   }
-  const std::vector<Column> columns = Layout(m);
   if (args.format == "csv") {
-    WriteOutput(args.out, ToCsv(columns, result));
+    WriteOutput(args.out, ToCsv(result));
   } else {
-    nlohmann::json j = ToJson(columns, result);
-    j["mechanism"] = m.name;
-    j["file"] = file.path;
+    nlohmann::json j = ToJson(result);
+    j["mechanism"] = model.name();
+    j["file"] = model.path();
     j["kinetostatic"] = result.kinetostatic;
-    if (options.speed) j["speed"] = {{"value", ParseNumberFlag("--speed", args.speed)}, {"unit", angle ? "rpm" : "length/s"}};
+    if (request.speed) j["speed"] = {{"value", *request.speed}, {"unit", model.input_is_angle() ? "rpm" : "length/s"}};
     j["status"] = ToString(result.status);
     j["worst_disagreement"] = result.worst_disagreement;
-    j.update(SweepEventsJson(m, result.sweep));
+    j.update(SweepEventsJson(result.sweep));
     if (!result.complete()) j["message"] = result.message;
     WriteOutput(args.out, JsonText(j));
   }
-  ReportSweep(args.file, m, result.sweep);
+  ReportSweep(args.file, model, result.sweep);
   if (!result.complete()) {
     if (result.message != result.sweep.message) Complain(args.file + ": " + result.message);
     throw Exit{kExitFailed};

@@ -6,7 +6,9 @@
 
 #include "tools/plot/cycle_fixtures.hpp"
 
+#include "koppel/api/model.hpp"
 #include "koppel/core/angles.hpp"
+#include "support/temp_file.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -110,6 +112,21 @@ TEST_CASE("cycle samples: a rocker's curve is open", "[plot][cycle]") {
   REQUIRE(samples);
   CHECK_FALSE(samples->curves[0].closed);
   CHECK(samples->curves[0].runs[0].size() == plot::kCycleSegments + 1);
+}
+
+TEST_CASE("cycle options of a model: its point outputs, the default sizes, the file's sweep in radians", "[plot][cycle]") {
+  // the file: sweep 0 .. 360 deg; one point output K
+  const Model model = Model::Load(test::CatalogEntryPath("mzc-crank-rocker"));
+  const plot::CycleOptions options = plot::CycleOptionsOf(model);
+  CHECK_THAT(options.sweep.from, WithinAbs(DegToRad(model.sweep_from()), kStepRoundoff));
+  CHECK_THAT(options.sweep.to, WithinAbs(DegToRad(model.sweep_to()), kStepRoundoff));
+  CHECK_THAT(options.sweep.to - options.sweep.from, WithinAbs(2 * kPi, kStepRoundoff));
+  REQUIRE(options.traced.size() == plot::PointOutputs(model.mechanism()).size());
+  REQUIRE(options.traced.size() == 1);
+  CHECK(options.traced[0].name == "K");
+  CHECK(options.sizes.plate_width == plot::DefaultPartSizes(model.mechanism()).plate_width);
+  std::string why;
+  CHECK(options.IsValid(&why));
 }
 
 }  // namespace koppel::cycle_test

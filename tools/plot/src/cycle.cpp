@@ -1,6 +1,8 @@
 #include "koppel/plot/cycle.hpp"
 
 #include "koppel/analysis/ranges.hpp"
+#include "koppel/api/model.hpp"
+#include "koppel/core/angles.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -134,6 +136,17 @@ bool CycleOptions::IsValid(std::string* why) const {
   if (!sizes.IsValid(why)) return false;
   if (!std::isfinite(sweep.from) || !std::isfinite(sweep.to)) *why = "the sweep's ends must be finite";
   return why->empty();
+}
+
+CycleOptions CycleOptionsOf(const Model& model) {
+  const Mechanism& m = model.mechanism();
+  CycleOptions options;
+  options.traced = PointOutputs(m);
+  options.sizes = DefaultPartSizes(m);
+  const double unit = m.InputIsAngle() ? DegToRad(1.0) : 1.0;
+  options.sweep.from = model.sweep_from() * unit;
+  options.sweep.to = model.sweep_to() * unit;
+  return options;
 }
 
 std::vector<TracedPoint> PointOutputs(const Mechanism& m) {

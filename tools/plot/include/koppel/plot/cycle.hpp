@@ -16,6 +16,10 @@
 #include <string>
 #include <vector>
 
+namespace koppel {
+class Model;
+}  // namespace koppel
+
 namespace koppel::plot {
 
 struct CycleRange {
@@ -81,6 +85,10 @@ struct CycleOptions {
   SweepOptions sweep;
   bool IsValid(std::string* why) const;  // sizes valid, sweep ends finite
 };
+
+// The options of a model's pictures unless the user says otherwise: its point outputs traced,
+// DefaultPartSizes, and the file's sweep (koppel/api/model.hpp: sweep_from, sweep_to).
+CycleOptions CycleOptionsOf(const Model& model);
 
 // The cycle of CycleRangeOf(options.sweep) sampled with the options' points (SampleCycle above);
 // an error when the range or the samples cannot be had. samples.range.note says where the

@@ -63,10 +63,8 @@ nlohmann::json JsonRow(const SweepTable& t, const double* values) {
 // The range from the flags, the file's sweep for what is not given (Model::Span), checked with
 // the flags' names before anything is allocated.
 SweepSpan SpanOf(const AnalyzeArgs& args, const Model& model) {
-  auto flag = [](const char* name, const std::string& text) {
-    return text.empty() ? std::optional<double>{} : ParseNumberFlag(name, text);
-  };
-  const SweepSpan span = model.Span(flag("--from", args.from), flag("--to", args.to), flag("--step", args.step));
+  const SweepSpan span = model.Span(OptionalNumberFlag("--from", args.from), OptionalNumberFlag("--to", args.to),
+                                    OptionalNumberFlag("--step", args.step));
   CheckSampleCount(span.from, span.to, span.step, "--from/--to/--step");
   if (args.order < 0 || args.order > kMaxTransferOrder) {
     Complain("--from/--to/--step/--order: the order must lie between 0 and " + std::to_string(kMaxTransferOrder));

@@ -1,8 +1,7 @@
 #include "common.hpp"
 
 #include "koppel/core/expression.hpp"
-#include "koppel/core/version.hpp"
-#include "koppel/api/admission.hpp"
+#include "koppel/koppel.hpp"  // Version
 
 #include <fmt/core.h>
 
@@ -20,17 +19,9 @@ void PrintNotes(const std::string& path, const std::vector<std::string>& notes) 
   for (const std::string& note : notes) Complain(path + ": note: " + note);
 }
 
-MechanismFile LoadMechanism(const std::string& path, const std::vector<std::string>& sets) {
-  try {
-    std::vector<std::pair<std::string, std::string>> overrides;
-    for (const std::string& s : sets) overrides.push_back(ParseAssignment(s));
-    AdmittedFile admitted = ReadAdmittedMechanism(path, overrides);
-    PrintNotes(path, admitted.notes);
-    return std::move(admitted.file);
-  } catch (const InputError& e) {
-    for (const Diagnostic& d : e.diagnostics()) std::cerr << d.ToString() << "\n";
-    throw Exit{kExitBadInput};
-  }
+std::optional<double> OptionalNumberFlag(const std::string& flag, const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  return ParseNumberFlag(flag, text);
 }
 
 double ParseNumberFlag(const std::string& flag, const std::string& text) {
@@ -79,7 +70,6 @@ std::string JsonText(nlohmann::json j) {
   return j.dump(1) + "\n";
 }
 
-const char* Version() { return kVersion; }  // koppel/core/version.hpp
 
 std::string FormatNumber(double value) {
   std::string text;

@@ -3,11 +3,13 @@
 // (0 ok, 1 a check or solve failed, 2 bad input; diagnostics always on stderr).
 #pragma once
 
-#include "koppel/catalog/mechanism_file.hpp"
+#include "koppel/core/diagnostic.hpp"
 #include "koppel/core/limits.hpp"
+#include "koppel/core/mechanism.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -27,12 +29,12 @@ struct Exit {
   int code;
 };
 
-// Reads a mechanism file and admits it (ReadAdmittedMechanism: mobility 1); `sets` are
-// "NAME=VALUE" overrides. Bad input: diagnostics on stderr, then Exit{2}; notes on stderr.
-MechanismFile LoadMechanism(const std::string& path, const std::vector<std::string>& sets);
-
 // A number given on the command line as a formula ("5/6", "2*sqrt(3)"). Exit{2} on error.
 double ParseNumberFlag(const std::string& flag, const std::string& text);
+
+// The same for a flag that may be left out: nothing when `text` is empty (the command's default,
+// e.g. the file's sweep through Model::Span, applies).
+std::optional<double> OptionalNumberFlag(const std::string& flag, const std::string& text);
 
 // `count` numbers separated by commas ("X,Y"), each a formula; `form` names them ("X,Y").
 // Exit{2} when the count differs (a decimal comma among them is named) or one does not evaluate.
@@ -60,9 +62,6 @@ int FinishStandardOutput(int code);
 // The JSON text of an output: `j` with a "version" field (koppel's version, when j is an
 // object), indented, with a final newline.
 std::string JsonText(nlohmann::json j);
-
-// The version of koppel (CMake's project version).
-const char* Version();
 
 // A limit on how many samples or cells a command may ask for (koppel/core/limits.hpp).
 struct CountLimit {

@@ -108,10 +108,8 @@ void Run(const Args& args) {
   const Model model = LoadModel(args.file, args.sets);
   const int output = ResolveScalarOutput(model.mechanism(), args.output, "--output", args.file);
   const std::string output_name = model.mechanism().outputs[output].name;
-  auto flag = [](const char* name, const std::string& text) {
-    return text.empty() ? std::optional<double>{} : ParseNumberFlag(name, text);
-  };
-  const SweepSpan span = model.Span(flag("--from", args.from), flag("--to", args.to), ParseNumberFlag("--step", args.step));
+  const SweepSpan span =
+      model.Span(OptionalNumberFlag("--from", args.from), OptionalNumberFlag("--to", args.to), ParseNumberFlag("--step", args.step));
   const AtBranchPoint action = ParseBranchPointFlag(args.at_branch_point);
   CheckSampleCount(span.from, span.to, span.step, "--from/--to/--step");
   const DeadCentres d = Checked([&] { return model.FindDeadCentres(output_name, span.from, span.to, span.step, action); });

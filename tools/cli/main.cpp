@@ -4,6 +4,7 @@
 
 #include "koppel/core/file_error.hpp"
 #include "koppel/core/temporary_files.hpp"
+#include "koppel/koppel.hpp"  // Version
 
 
 #include <exception>
@@ -20,7 +21,7 @@ int Run(int argc, char** argv) {
       "command line, lengths in the file's unit. Exit codes: 0 ok, 1 a check or solve failed, 2 bad input.",
       "koppel"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("koppel ") + koppel::cli::Version(), "Print koppel's version and exit");
+  app.set_version_flag("--version", std::string("koppel ") + koppel::Version(), "Print koppel's version and exit");
   app.set_help_all_flag("--help-all", "Print help for every subcommand");
   koppel::cli::AddAnalyzeCommand(app);
   koppel::cli::AddCatalogCommand(app);

@@ -4,9 +4,7 @@ namespace koppel::cli {
 
 Model LoadModel(const std::string& path, const std::vector<std::string>& sets) {
   Model model = Checked([&] {
-    ParameterValues overrides;
-    for (const std::string& s : sets) overrides.push_back(ParseAssignment(s));
-    return Model::Load(path, overrides);  // admitted as LoadMechanism admits
+    return Model::Load(path, ParseParameterValues(sets));  // admitted: mobility 1 (tools/api/src/admission.hpp)
   });
   PrintNotes(path, model.notes());
   return model;

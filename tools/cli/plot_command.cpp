@@ -6,6 +6,7 @@
 #include "model_loading.hpp"
 #include "sweep_report.hpp"
 
+#include "koppel/api/forces.hpp"  // ModelLoads
 #include "koppel/core/angles.hpp"
 #include "koppel/core/input_file.hpp"
 #include "koppel/plot/forces_plot.hpp"
@@ -57,8 +58,8 @@ void RunChart(const Args& args) {
   WriteOutput(args.out, r.svg);
 }
 
-void RunForcesPlot(const Args& args, const MechanismFile& file, const SweepOptions& range) {
-  const Mechanism& m = file.mechanism;
+void RunForcesPlot(const Args& args, const Model& model, const SweepOptions& range) {
+  const Mechanism& m = model.mechanism();
   plot::ForcesPlotOptions options;
   options.forces.sweep = range;
   if (!args.speed.empty()) options.forces.speed = ParseNumberFlag("--speed", args.speed) * (m.InputIsAngle() ? kPi / 30 : 1.0);
@@ -74,16 +75,20 @@ void RunForcesPlot(const Args& args, const MechanismFile& file, const SweepOptio
     Complain(why);
     throw Exit{kExitBadInput};
   }
-  Finish(args, plot::ForcesPlot(m, file.loads, options));
+  Finish(args, plot::ForcesPlot(m, ModelLoads(model), options));
+}
+
+// --from/--to/--step, the file's sweep for what is not given (Model::Span).
+SweepSpan SpanOf(const Args& args, const Model& model) {
+  return model.Span(OptionalNumberFlag("--from", args.from), OptionalNumberFlag("--to", args.to), OptionalNumberFlag("--step", args.step));
 }
 
 // The band of koppel tolerance over the range (Model::Tolerances), drawn by plot::TolerancePlot.
-void RunTolerancePlot(const Args& args, const MechanismFile& file) {
+void RunTolerancePlot(const Args& args, const Model& model) {
   ToleranceRequest request;
   request.output = args.tolerance;
-  const double from = args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from);
-  const double to = args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to);
-  const double step = args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step);
+  const SweepSpan span = SpanOf(args, model);
+  const double from = span.from, to = span.to, step = span.step;
   CheckSampleCount(from, to, step, "--from/--to/--step");
   const long n = static_cast<long>(std::floor(std::abs(to - from) / std::abs(step) + 1e-9)) + 1;
   for (long i = 0; i < n; ++i) request.inputs.push_back(from + i * (to >= from ? std::abs(step) : -std::abs(step)));
@@ -92,7 +97,6 @@ void RunTolerancePlot(const Args& args, const MechanismFile& file) {
   request.samples = args.samples;
   request.seed = args.seed;
   request.distribution = args.distribution;
-  const Model model = LoadModel(args.file, args.sets);
   const ToleranceResult r = Checked([&] { return model.Tolerances(request); });
   plot::ToleranceBand band;
   band.mechanism = model.name();
@@ -123,12 +127,13 @@ void RunTolerancePlot(const Args& args, const MechanismFile& file) {
 }
 
 // --from/--to/--step (else the file's sweep) and --at-branch-point, as the plot's range.
-SweepOptions RangeOf(const Args& args, const MechanismFile& file) {
-  auto in = [&](double v) { return file.mechanism.InputIsAngle() ? DegToRad(v) : v; };
+SweepOptions RangeOf(const Args& args, const Model& model) {
+  auto in = [&](double v) { return model.input_is_angle() ? DegToRad(v) : v; };
+  const SweepSpan span = SpanOf(args, model);
   SweepOptions range;
-  range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
-  range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
-  range.step = in(args.step.empty() ? file.sweep.step : ParseNumberFlag("--step", args.step));
+  range.from = in(span.from);
+  range.to = in(span.to);
+  range.step = in(span.step);
   range.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
   return range;
 }
@@ -162,9 +167,9 @@ void Run(const Args& args) {
     Complain("say what to plot: exactly one of --transfer OUTPUT, --mu, --curve POINT, --forces, --tolerance OUTPUT (or give a chart .csv)");
     throw Exit{kExitBadInput};
   }
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const Mechanism& m = file.mechanism;
-  const SweepOptions range = RangeOf(args, file);
+  const Model model = LoadModel(args.file, args.sets);
+  const Mechanism& m = model.mechanism();
+  const SweepOptions range = RangeOf(args, model);
   std::string why;
   if (!args.transfer.empty()) {
     plot::TransferPlotOptions options;
@@ -178,9 +183,9 @@ void Run(const Args& args) {
     }
     Finish(args, plot::TransferPlot(m, options));
   } else if (args.forces) {
-    RunForcesPlot(args, file, range);
+    RunForcesPlot(args, model, range);
   } else if (!args.tolerance.empty()) {
-    RunTolerancePlot(args, file);
+    RunTolerancePlot(args, model);
   } else if (args.mu) {
     RunMuPlot(args, m, range);
   } else {

@@ -2,38 +2,11 @@
 
 #include "common.hpp"
 
-#include "koppel/api/model.hpp"
-#include "koppel/core/angles.hpp"
-
 #include <fmt/core.h>
-
-#include <iostream>
 
 namespace koppel::cli {
 namespace sweep_report {  // this file's own names, apart from the other commands' in a unity build
 namespace {
-
-double Shown(const Mechanism& m, double input) { return m.InputIsAngle() ? RadToDeg(input) : input; }
-
-std::string JointNames(const Mechanism& m, const std::vector<int>& joints) {
-  std::string names;
-  for (int j : joints) names += (names.empty() ? "" : ", ") + m.joints[j].name;
-  return names;
-}
-
-std::string Describe(const Mechanism& m, const SingularPoint& p) {
-  const char* what = p.kind == SingularKind::kLimitPoint ? "singular position: limit point (dead centre of the drive)"
-                                                         : "singular position: branch point (two branches cross)";
-  std::string text = std::string(what) + " at " + FormatInput(m, p.input) + " (joints " + JointNames(m, p.joints) +
-                     fmt::format("; reciprocal condition of the Jacobian {:.3g})", p.rcond);
-  if (p.kind == SingularKind::kLimitPoint) return text + ": the drive cannot pass it on this branch";
-  switch (p.action) {
-    case BranchPointAction::kContinue: return text + ": continued on the branch that continues the incoming one";
-    case BranchPointAction::kStop: return text + ": the sweep stops there";
-    case BranchPointAction::kSwitch: return text + ": switched to the other branch (--at-branch-point switch)";
-  }
-  return text;
-}
 
 std::string Describe(const Model& model, const SingularPosition& p) {
   std::string names;
@@ -66,63 +39,19 @@ std::string FlaggedRows(const std::string& input_name, bool angle, const std::ve
 }  // namespace sweep_report
 
 void AddBranchPointOption(CLI::App* command, std::string& value) {
-  using namespace sweep_report;
   command->add_option("--at-branch-point", value,
                       "Where two branches cross (change point of a Grashof-neutral linkage, a loop folding flat):\n"
                       "continue (default) on the branch that continues the incoming one analytically, stop there, or\n"
                       "switch to the other branch");
 }
 
-BranchPointAction ParseBranchPointFlag(const std::string& text) {
+AtBranchPoint ParseBranchPointFlag(const std::string& text) {
   try {
     return ParseAtBranchPoint(text);  // the words are the library's (koppel/api/model.hpp)
   } catch (const InputError&) {
     Complain("--at-branch-point must be continue, stop or switch, not '" + text + "'");
     throw Exit{kExitBadInput};
   }
-}
-
-std::string FormatInput(const Mechanism& m, double input) {
-  using namespace sweep_report;
-  return m.drive.input_name + " = " + FormatNumber(Shown(m, input)) + (m.InputIsAngle() ? " deg" : "");
-}
-
-void ReportSingularPoints(const std::string& file, const Mechanism& m, const std::vector<SingularPoint>& points) {
-  using namespace sweep_report;
-  for (const SingularPoint& p : points) Complain(file + ": " + Describe(m, p));
-}
-
-void ReportSweep(const std::string& file, const Mechanism& m, const SweepEvents& sweep) {
-  using namespace sweep_report;
-  for (const std::string& note : sweep.notes) Complain(file + ": " + note);
-  ReportSingularPoints(file, m, sweep.singular_points);
-  std::vector<double> shown;
-  for (double input : sweep.singular_inputs) shown.push_back(Shown(m, input));
-  if (!shown.empty()) Complain(file + ": " + FlaggedRows(m.drive.input_name, m.InputIsAngle(), shown));
-  if (!sweep.complete() && !sweep.message.empty()) Complain(file + ": " + sweep.message);
-}
-
-nlohmann::json SingularPointsJson(const Mechanism& m, const std::vector<SingularPoint>& points) {
-  using namespace sweep_report;
-  nlohmann::json list = nlohmann::json::array();
-  for (const SingularPoint& p : points) {
-    nlohmann::json joints = nlohmann::json::array();
-    for (int j : p.joints) joints.push_back(m.joints[j].name);
-    nlohmann::json entry = {{"input", Shown(m, p.input)}, {"kind", ToString(p.kind)}, {"joints", joints}, {"rcond", p.rcond}};
-    if (p.kind == SingularKind::kBranchPoint) entry["action"] = ToString(p.action);
-    list.push_back(entry);
-  }
-  return list;
-}
-
-nlohmann::json SweepEventsJson(const Mechanism& m, const SweepEvents& sweep) {
-  using namespace sweep_report;
-  nlohmann::json gaps = nlohmann::json::array();
-  for (const InputInterval& g : sweep.gaps) gaps.push_back({{"from", Shown(m, g.from)}, {"to", Shown(m, g.to)}});
-  return {{"singular_points", SingularPointsJson(m, sweep.singular_points)},
-          {"gaps", gaps},
-          {"notes", sweep.notes},
-          {"reached", {{"from", Shown(m, sweep.reached.from)}, {"to", Shown(m, sweep.reached.to)}}}};
 }
 
 std::string FormatInput(const Model& model, double shown) {

@@ -4,8 +4,6 @@
 #pragma once
 
 #include "koppel/api/model.hpp"
-#include "koppel/core/mechanism.hpp"
-#include "koppel/solver/sweep.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -17,25 +15,19 @@ namespace koppel::cli {
 // Adds --at-branch-point continue|stop|switch to a command; `value` receives the text.
 void AddBranchPointOption(CLI::App* command, std::string& value);
 // The action named by the flag's text. Exit{2} with the choices otherwise.
-BranchPointAction ParseBranchPointFlag(const std::string& text);
+AtBranchPoint ParseBranchPointFlag(const std::string& text);
 
-// An input value for people: degrees for an R drive ("phi = 180 deg"), length for a P drive.
-std::string FormatInput(const Mechanism& mechanism, double input);
+// An input value for people, `shown` in the model's units: "phi = 180 deg" for an R drive, a
+// length for a P drive.
+std::string FormatInput(const Model& model, double shown);
 
 // Prints on stderr, prefixed by the file: the notes, every singular point (input, kind, joints,
 // reciprocal condition, what the sweep did), the rows flagged singular, and the gaps.
-void ReportSweep(const std::string& file, const Mechanism& mechanism, const SweepEvents& sweep);
-void ReportSingularPoints(const std::string& file, const Mechanism& mechanism, const std::vector<SingularPoint>& points);
-
-// The same as JSON: {"singular_points": [...], "gaps": [...], "notes": [...], "reached": {...}},
-// inputs in the drive's display unit (deg or length).
-nlohmann::json SweepEventsJson(const Mechanism& mechanism, const SweepEvents& sweep);
-nlohmann::json SingularPointsJson(const Mechanism& mechanism, const std::vector<SingularPoint>& points);
-
-// The same from the API's record of a sweep (koppel/api/model.hpp: inputs in the model's units).
-std::string FormatInput(const Model& model, double shown);
 void ReportSweep(const std::string& file, const Model& model, const SweepRecord& sweep);
 void ReportSingularPoints(const std::string& file, const Model& model, const std::vector<SingularPosition>& points);
+
+// The same as JSON: {"singular_points": [...], "gaps": [...], "notes": [...], "reached": {...}},
+// inputs in the model's units (deg or length).
 nlohmann::json SweepEventsJson(const SweepRecord& sweep);
 nlohmann::json SingularPointsJson(const std::vector<SingularPosition>& points);
 

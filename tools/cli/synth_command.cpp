@@ -53,11 +53,6 @@ double Required(const std::string& flag, const std::string& text) {
   return ParseNumberFlag(flag, text);
 }
 
-std::optional<double> Optional(const std::string& flag, const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  return ParseNumberFlag(flag, text);
-}
-
 // --rocker-sense: same | opposite (| both for the chart)
 void CheckRockerSense(const std::string& text, bool allow_both) {
   if (text == "same" || text == "opposite" || (allow_both && text == "both")) return;
@@ -95,8 +90,8 @@ void RunCrankRocker(const Args& args, double phi0) {
     Complain("give --beta or --lambda, not both");
     throw Exit{kExitBadInput};
   }
-  spec.beta = Optional("--beta", args.beta);
-  spec.lambda = Optional("--lambda", args.lambda_cr);
+  spec.beta = OptionalNumberFlag("--beta", args.beta);
+  spec.lambda = OptionalNumberFlag("--lambda", args.lambda_cr);
   const Design d = Checked([&] { return SynthesiseCrankRocker(spec); });
   if (!d.ok()) Refuse(d);
   Emit(args, d);
@@ -110,8 +105,8 @@ void RunSliderCrank(const Args& args, double phi0) {
     Complain("give --offset or --beta, not both");
     throw Exit{kExitBadInput};
   }
-  spec.offset = Optional("--offset", args.offset);
-  spec.beta = Optional("--beta", args.beta);
+  spec.offset = OptionalNumberFlag("--offset", args.offset);
+  spec.beta = OptionalNumberFlag("--beta", args.beta);
   const Design d = Checked([&] { return SynthesiseSliderCrank(spec); });
   if (!d.ok()) Refuse(d);
   Emit(args, d);

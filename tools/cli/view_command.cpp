@@ -1,6 +1,7 @@
 // koppel view: one self-contained HTML page that animates the mechanism (see view_page.hpp).
 #include "commands.hpp"
 #include "common.hpp"
+#include "model_loading.hpp"
 #include "sweep_report.hpp"
 
 #include "koppel/core/angles.hpp"
@@ -17,16 +18,19 @@ struct Args {
 };
 
 void Run(const Args& args) {
-  const MechanismFile file = LoadMechanism(args.file, args.sets);
-  const Mechanism& m = file.mechanism;
+  const Model model = LoadModel(args.file, args.sets);
+  const Mechanism& m = model.mechanism();
   auto in = [&](double v) { return m.InputIsAngle() ? DegToRad(v) : v; };
-  plot::ViewOptions options;
-  options.range.from = in(args.from.empty() ? file.sweep.from : ParseNumberFlag("--from", args.from));
-  options.range.to = in(args.to.empty() ? file.sweep.to : ParseNumberFlag("--to", args.to));
   // one frame per degree unless asked: smooth enough, and the page stays small
-  options.range.step = in(args.step.empty() ? (m.InputIsAngle() ? 1.0 : file.sweep.step) : ParseNumberFlag("--step", args.step));
+  std::optional<double> step = OptionalNumberFlag("--step", args.step);
+  if (!step && m.InputIsAngle()) step = 1.0;
+  const SweepSpan span = model.Span(OptionalNumberFlag("--from", args.from), OptionalNumberFlag("--to", args.to), step);
+  plot::ViewOptions options;
+  options.range.from = in(span.from);
+  options.range.to = in(span.to);
+  options.range.step = in(span.step);
   options.range.continuation.at_branch_point = ParseBranchPointFlag(args.at_branch_point);
-  options.title = file.title.empty() ? m.name : file.title + " (" + m.name + ")";
+  options.title = model.title().empty() ? m.name : model.title() + " (" + m.name + ")";
   std::string why;
   if (!options.IsValid(&why)) {
     Complain(why);

@@ -2,7 +2,7 @@
 // 1. References: the Grübler–Kutzbach count by hand for each file, and the motion itself (a
 // five-bar with one drive does not move determinately; a parallelogram with a third parallel
 // crank moves although the count says 0).
-#include "koppel/api/admission.hpp"
+#include "admission.hpp"
 
 #include "koppel/api/model.hpp"
 #include "support/temp_file.hpp"

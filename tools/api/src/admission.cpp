@@ -1,4 +1,4 @@
-#include "koppel/api/admission.hpp"
+#include "admission.hpp"
 
 #include "koppel/solver/assembly.hpp"
 

@@ -3,7 +3,7 @@
 #include "catalog_query.hpp"
 #include "display.hpp"
 
-#include "koppel/api/admission.hpp"
+#include "admission.hpp"
 #include "koppel/catalog/catalog.hpp"
 #include "koppel/catalog/classes.hpp"
 #include "koppel/catalog/figure_quantities.hpp"

@@ -3,7 +3,7 @@
 #include "display.hpp"
 #include "model_impl.hpp"
 
-#include "koppel/api/admission.hpp"
+#include "admission.hpp"
 #include "koppel/catalog/mechanism_writer.hpp"
 
 #include <algorithm>
@@ -30,6 +30,12 @@ AtBranchPoint ParseAtBranchPoint(const std::string& word) {
   if (word.empty()) return AtBranchPoint::kContinue;
   if (const std::optional<BranchPointAction> action = ParseBranchPointAction(word)) return *action;
   throw InputError({Diagnostic{"at_branch_point", 0, 0, "at_branch_point", "expected continue, stop or switch, found '" + word + "'"}});
+}
+
+ParameterValues ParseParameterValues(const std::vector<std::string>& assignments) {
+  ParameterValues values;
+  for (const std::string& a : assignments) values.push_back(ParseAssignment(a));
+  return values;
 }
 
 Model::Model(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}

@@ -14,6 +14,7 @@
 // whose entries are dimensionless, so that thresholds mean the same for any size of mechanism.
 #pragma once
 
+#include "koppel/solver/branch_point_action.hpp"
 #include "koppel/solver/constraints.hpp"
 
 #include <Eigen/Core>
@@ -27,12 +28,6 @@ namespace koppel {
 enum class SingularKind { kLimitPoint, kBranchPoint };
 const char* ToString(SingularKind kind);  // "limit", "branch-point"
 
-// What a sweep does where two branches cross: continue on the branch that continues the
-// incoming one analytically (a parallelogram stays a parallelogram), stop there, or switch to
-// the other branch.
-enum class BranchPointAction { kContinue, kStop, kSwitch };
-const char* ToString(BranchPointAction action);  // "continue", "stop", "switch"
-std::optional<BranchPointAction> ParseBranchPointAction(const std::string& text);
 
 // A pose counts as a branch point when sigma_{n-1} / sigma_1 of the constraint rows (drive row
 // left out) is below this: the mechanism without its drive is then within about 1e-12 L of a

@@ -24,7 +24,7 @@
 #include "koppel/api/tolerance.hpp"
 #include "koppel/core/diagnostic.hpp"  // InputError, Diagnostic
 #include "koppel/core/mechanism.hpp"
-#include "koppel/solver/singular.hpp"  // BranchPointAction
+#include "koppel/solver/branch_point_action.hpp"  // BranchPointAction: the words, without the solver
 
 #include <functional>
 #include <memory>
@@ -40,6 +40,8 @@ inline constexpr int kMaxTransferOrder = 8;
 
 // Parameter overrides: name -> formula over the file's parameters ("0.8", "l1/2").
 using ParameterValues = std::vector<std::pair<std::string, std::string>>;
+// Overrides written "NAME=VALUE" (the CLI's --set); InputError for one without a name or value.
+ParameterValues ParseParameterValues(const std::vector<std::string>& assignments);
 
 // A singular position met on the way (koppel/solver/singular.hpp explains the kinds).
 struct SingularPosition {
@@ -195,7 +197,7 @@ class Model {
   // Reads a mechanism file, or the catalog entry when `path` is no file but a catalog id
   // ("crank-rocker", ResolveMechanismName); `set` overrides parameters as --set does. Throws
   // InputError. Load, Parse, FromMechanism and Set admit only a mechanism of mobility 1 (one
-  // drive), as every command does (koppel/api/admission.hpp): InputError otherwise.
+  // drive), as every command does (tools/api/src/admission.hpp): InputError otherwise.
   static Model Load(const std::string& path, const ParameterValues& set = {});
   // The same from the text of a mechanism file; `name` stands for the file in messages.
   static Model Parse(const std::string& yaml, const std::string& name = "<string>", const ParameterValues& set = {});

@@ -1,4 +1,4 @@
-// The rule every front door (the CLI, the Python module, C++ users of koppel::Model) applies to a
+// Private to the API (every koppel::Model is admitted here). The rule every front door (the CLI, the Python module, C++ users of koppel::Model) applies to a
 // mechanism before analysing it: one drive needs mobility 1. The Grübler–Kutzbach count
 // 3 (n - 1) - 2 j_R - 2 j_P is checked against the rank of the joint equations at an assembled
 // pose, which decides where the two disagree: an overconstrained linkage that moves (a

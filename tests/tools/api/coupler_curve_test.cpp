@@ -20,6 +20,8 @@ constexpr double kSampleInput = 1e-9;  // [deg] from + i step in radians, shown 
 constexpr double kPosition = 1e-9;     // the solver's closure tolerance, with margin
 constexpr double kArc = 1e-6;          // 3-point Gauss on cubic Hermite pieces of 5 deg of a circle: error ~ h^6
 constexpr double kDocument = 0.05;     // [deg] seed 003 gives its angles to 0.1 deg
+constexpr double kSum = 1e-9;          // [deg] phi_E = phi_A + phi_G: a sum of two shown angles, rounding only
+constexpr double kRatio = 1e-12;       // q_G = band / length: one division, rounding only
 
 PointRef Point(const Model& m, const std::string& text) {
   const Expected<PointRef> p = FindPointByText(m.mechanism(), text);
@@ -81,9 +83,9 @@ TEST_CASE("FindStraightLine: seed 003's reading example in its convention", "[ap
   CHECK_THAT(s.reference, WithinAbs(180, kDocument));
   CHECK_THAT(s.phi_a, WithinAbs(98.3, kDocument));
   CHECK_THAT(s.phi_g, WithinAbs(163.3, kDocument));
-  CHECK_THAT(s.phi_e, WithinAbs(s.phi_a + s.phi_g, 1e-9));
+  CHECK_THAT(s.phi_e, WithinAbs(s.phi_a + s.phi_g, kSum));
   CHECK(s.qg <= 0.005);
-  CHECK_THAT(s.qg, WithinAbs(s.band / s.length, 1e-12));
+  CHECK_THAT(s.qg, WithinAbs(s.band / s.length, kRatio));
   // the same point from --at -180: the document's convention puts phi_I in [0, 360) all the same
   request.at = -180;
   const StraightLine turned = FindStraightLine(m, request);

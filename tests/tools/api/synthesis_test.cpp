@@ -21,6 +21,10 @@ namespace {
 constexpr double kDesignClosedForm = 1e-9;
 // sin^2 of the designed phi0 (closed form, through degrees) against seed 003's formula: rounding only
 constexpr double kSeedRoundoff = 1e-12;
+// the same request read from a spec file and written in code: the same numbers, rounding only
+constexpr double kSameRequest = 1e-9;
+// a whole number of degrees written to a file and read back
+constexpr double kReadBack = 1e-12;
 // [deg] an angle of the re-analysed design, driven by the API: the design's own accuracy
 // (pose tolerance 1e-9 of its size, Ceres' stopping tolerances for a fit) shown in degrees, with margin
 constexpr double kReanalysedDeg = 1e-6;
@@ -264,15 +268,15 @@ TEST_CASE("SynthesiseFunctionFile: the spec file gives the design SynthesiseFunc
   spec.output_to = 195;
   const Design code = SynthesiseFunction(spec);
   REQUIRE(code.ok());
-  for (const char* name : {"crank", "coupler", "rocker", "frame", "error_max"}) CHECK_THAT(file.Get(name), WithinAbs(code.Get(name), 1e-9));
+  for (const char* name : {"crank", "coupler", "rocker", "frame", "error_max"}) CHECK_THAT(file.Get(name), WithinAbs(code.Get(name), kSameRequest));
   // the error curve: error_max is its maximum refined between samples, so at least its largest |error|
   REQUIRE(file.curve.columns == std::vector<std::string>{"x", "crank", "desired", "generated", "error"});
   double largest = 0;
   for (const std::vector<double>& row : file.curve.rows) largest = std::max(largest, std::abs(row[4]));
-  CHECK(file.Get("error_max") >= largest - 1e-12);
+  CHECK(file.Get("error_max") >= largest - kSeedRoundoff);  // the refined maximum is never below a sample
   const Model back = Model::Parse(file.yaml, "generator.yaml");
-  CHECK_THAT(back.sweep_from(), WithinAbs(15, 1e-12));
-  CHECK_THAT(back.sweep_to(), WithinAbs(75, 1e-12));
+  CHECK_THAT(back.sweep_from(), WithinAbs(15, kReadBack));
+  CHECK_THAT(back.sweep_to(), WithinAbs(75, kReadBack));
   CHECK_THROWS_AS(SynthesiseFunctionFile(test::TestDataPath("no-such-function.yaml")), InputError);
 }
 
@@ -302,7 +306,7 @@ TEST_CASE("FindCognates: a parallelogram's cognate 1 cannot be driven, and the n
   REQUIRE(c.notes.size() == 1);
   CHECK_THAT(c.notes[0], Catch::Matchers::Contains("cognate 1 cannot be driven"));
   // the coupler only translates: the crank that follows it stands (to the rounding of two solver sweeps)
-  CHECK_THAT(c.designs[0].Get("input_min"), WithinAbs(c.designs[0].Get("input_max"), 1e-9));
+  CHECK_THAT(c.designs[0].Get("input_min"), WithinAbs(c.designs[0].Get("input_max"), kSameCurve));
   CHECK(c.designs[0].figures.front().unit == original.length_unit());
   // cognate 2 runs with the original's input: its file keeps the original's sweep
   const Model second = Model::Parse(c.designs[1].yaml, "cognate-2.yaml");

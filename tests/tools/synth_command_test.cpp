@@ -92,6 +92,19 @@ TEST_CASE("synth deadcentre refuses degenerate and impossible crank-rockers with
   CHECK_THAT(help.out, Catch::Contains("--rocker-sense same (default, the document's definition)") && Catch::Contains("folded dead centre"));
 }
 
+TEST_CASE("a malformed synthesis request is said as a flag error, exit 2, whatever layer checks it", "[cli][synth]") {
+  // the checks live in the API (koppel/api/synthesis.hpp); the CLI says them as before they moved
+  const test::RunResult phi0 = test::RunKoppel("synth deadcentre crank-rocker --phi0 400 --psi0 60");
+  CHECK(phi0.exit_code == 2);
+  CHECK(phi0.err == "koppel: phi0 must lie strictly between 0 and 360 deg\n");
+  const test::RunResult lambda = test::RunKoppel("synth mzc --lambda 2");
+  CHECK(lambda.exit_code == 2);
+  CHECK(lambda.err == "koppel: needs 0.5 <= lambda <= 1.5 and D > 0\n");
+  const test::RunResult chart = test::RunKoppel("synth chart crank-rocker --psi0 0:400:10");
+  CHECK(chart.exit_code == 2);
+  CHECK_THAT(chart.err, Catch::StartsWith("koppel: psi0 must lie strictly between 0 and 180 deg"));
+}
+
 TEST_CASE("synth deadcentre slider-crank and the charts", "[cli][synth]") {
   test::TempDir dir;
   const std::string yaml = (dir.path() / "sc.yaml").string();

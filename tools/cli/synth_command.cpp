@@ -68,6 +68,18 @@ void Emit(const Args& args, const Design& d) {
   WriteOutput(args.out, args.format == "json" ? JsonText(s.ToJson()) : s.ToCsv());
 }
 
+// A request the API refuses as malformed (InputError: a value out of its range): its reason on
+// stderr as the command's other flag errors are said, exit 2.
+template <class F>
+auto Requested(F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    for (const Diagnostic& d : e.diagnostics()) Complain(d.message);
+    throw Exit{kExitBadInput};
+  }
+}
+
 // A refused design: the reason on stderr, exit 1 (a malformed request is InputError: exit 2).
 void Refuse(const Design& d) {
   Complain(d.message);
@@ -92,7 +104,7 @@ void RunCrankRocker(const Args& args, double phi0) {
   }
   spec.beta = OptionalNumberFlag("--beta", args.beta);
   spec.lambda = OptionalNumberFlag("--lambda", args.lambda_cr);
-  const Design d = Checked([&] { return SynthesiseCrankRocker(spec); });
+  const Design d = Requested([&] { return SynthesiseCrankRocker(spec); });
   if (!d.ok()) Refuse(d);
   Emit(args, d);
 }
@@ -107,7 +119,7 @@ void RunSliderCrank(const Args& args, double phi0) {
   }
   spec.offset = OptionalNumberFlag("--offset", args.offset);
   spec.beta = OptionalNumberFlag("--beta", args.beta);
-  const Design d = Checked([&] { return SynthesiseSliderCrank(spec); });
+  const Design d = Requested([&] { return SynthesiseSliderCrank(spec); });
   if (!d.ok()) Refuse(d);
   Emit(args, d);
 }
@@ -165,7 +177,7 @@ void RunChart(const Args& args) {
     CheckRockerSense(args.rocker_sense, true);
     spec.rocker_sense = args.rocker_sense;
   }
-  const DesignChart chart = Checked([&] { return SynthesiseChart(spec); });
+  const DesignChart chart = Requested([&] { return SynthesiseChart(spec); });
   if (!args.quiet) std::cerr << fmt::format("koppel synth chart: {} designs\n", chart.designs);
   WriteOutput(args.out, args.format == "json" ? JsonText(ChartJson(chart)) : ChartCsv(chart));
 }
@@ -176,7 +188,7 @@ void RunMzc(const Args& args) {
   if (!args.kappa.empty()) spec.kappa = ParseNumberFlag("--kappa", args.kappa);
   else spec.lambda = Required("--lambda", args.lambda);
   spec.diameter = ParseNumberFlag("--D", args.diameter);
-  const Design d = Checked([&] { return SynthesiseMzc(spec); });
+  const Design d = Requested([&] { return SynthesiseMzc(spec); });
   if (!d.ok()) {
     Complain(d.message);
     throw Exit{kExitBadInput};

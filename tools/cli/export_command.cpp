@@ -4,7 +4,6 @@
 #include "cycle_flags.hpp"
 #include "model_loading.hpp"
 
-#include "koppel/api/forces.hpp"  // ModelLoads
 #include "koppel/core/angles.hpp"
 #include "koppel/export/export.hpp"
 
@@ -29,7 +28,7 @@ void Run(const Args& args) {
   plot::WorkshopOptions options;
   options.cycle = ReadCycleFlags(model, args.cycle);
   if (!args.at.empty()) options.at = ParseNumberFlag("--at", args.at) * (m.InputIsAngle() ? DegToRad(1.0) : 1.0);
-  const int units = plot::DxfUnits(ModelLoads(model).metres_per_unit, ModelLoads(model).length_unit_given);
+  const int units = plot::DxfUnits(model.loads().metres_per_unit, model.loads().length_unit_given);
   WriteExportResult(args.file, args.out, plot::ExportDxf(m, options, units));
 }
 

@@ -6,7 +6,6 @@
 #include "model_loading.hpp"
 #include "sweep_report.hpp"
 
-#include "koppel/api/forces.hpp"  // ModelLoads
 #include "koppel/core/angles.hpp"
 #include "koppel/core/input_file.hpp"
 #include "koppel/plot/forces_plot.hpp"
@@ -75,7 +74,7 @@ void RunForcesPlot(const Args& args, const Model& model, const SweepOptions& ran
     Complain(why);
     throw Exit{kExitBadInput};
   }
-  Finish(args, plot::ForcesPlot(m, ModelLoads(model), options));
+  Finish(args, plot::ForcesPlot(m, model.loads(), options));
 }
 
 // --from/--to/--step, the file's sweep for what is not given (Model::Span).

@@ -85,11 +85,11 @@ TEST_CASE("AnalyseForces: a file without masses and loads is told; a step of 0 i
   CHECK_FALSE(request.IsValid(m, &why));
 }
 
-TEST_CASE("ModelLoads: the file's length unit and masses", "[api]") {
+TEST_CASE("Model::loads: the file's length unit and masses", "[api]") {
   const Model m = Model::Load(test::TestDataPath("slider-crank-loads.yaml"));
-  CHECK(ModelLoads(m).length_unit_given);
-  CHECK(ModelLoads(m).metres_per_unit == 0.001);
-  CHECK(ModelLoads(m).HasMass());
+  CHECK(m.loads().length_unit_given);
+  CHECK(m.loads().metres_per_unit == 0.001);
+  CHECK(m.loads().HasMass());
 }
 
 }  // namespace forces_test

@@ -73,13 +73,12 @@ std::vector<ForcesColumn> ForcesLayout(const Mechanism& m) {
 
 bool ForcesRequest::IsValid(const Model& model, std::string* why) const { return ForcesOptionsOf(model, *this).IsValid(why); }
 
-const Loads& ModelLoads(const Model& model) { return ModelAccess::File(model).loads; }
 
 ForcesTable AnalyseForces(const Model& model, const ForcesRequest& request) {
   const Mechanism& m = model.mechanism();
   const ForcesOptions options = ForcesOptionsOf(model, request);
   if (std::string why; !options.IsValid(&why)) api_detail::BadInput(model.path(), "from/to/step/speed", why);
-  const Loads& loads = ModelLoads(model);
+  const Loads& loads = model.loads();
   ForcesTable table;
   if (!loads.HasMass() && loads.forces.empty() && loads.torques.empty() && loads.springs.empty())
     table.notes.push_back("note: the file gives no masses and no loads, so every force is zero (README.md, 'Masses and loads')");

@@ -76,6 +76,7 @@ const std::string& Model::path() const { return impl_->file.path; }
 const Mechanism& Model::mechanism() const { return impl_->file.mechanism; }
 const std::vector<std::string>& Model::notes() const { return impl_->notes; }
 std::string Model::length_unit() const { return impl_->file.loads.LengthUnit(); }
+const Loads& Model::loads() const { return impl_->file.loads; }
 std::string Model::input_name() const { return mechanism().drive.input_name; }
 bool Model::input_is_angle() const { return mechanism().InputIsAngle(); }
 double Model::sweep_from() const { return impl_->file.sweep.from; }

@@ -47,7 +47,4 @@ struct ForcesTable {
 // The forces over the request's sweep. InputError when !request.IsValid(model).
 ForcesTable AnalyseForces(const Model& model, const ForcesRequest& request);
 
-// The masses, loads and length unit the model's file gives (core/loads.hpp).
-const Loads& ModelLoads(const Model& model);
-
 }  // namespace koppel

@@ -23,6 +23,7 @@
 #include "koppel/api/instant_geometry.hpp"
 #include "koppel/api/tolerance.hpp"
 #include "koppel/core/diagnostic.hpp"  // InputError, Diagnostic
+#include "koppel/core/loads.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/solver/branch_point_action.hpp"  // BranchPointAction: the words, without the solver
 
@@ -220,6 +221,9 @@ class Model {
   // The label of the file's length unit, as tables give it: "mm" for `units: {length: mm}`,
   // "length" when the file names none (Loads::LengthUnit).
   std::string length_unit() const;
+  // The masses, loads, gravity and length unit the file gives (koppel/core/loads.hpp; none when
+  // it gives none).
+  const Loads& loads() const;
   std::string input_name() const;     // "phi"
   bool input_is_angle() const;        // R drive (degrees here) or P drive (length)
   std::vector<std::string> output_names() const;

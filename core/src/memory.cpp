@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 
 namespace koppel {
@@ -26,14 +27,12 @@ MemoryLimit UsableMemory() {
 
 std::string FormatBytes(double bytes) {
   const char* units[] = {"bytes", "kB", "MB", "GB", "TB", "PB"};
-  int u = 0;
-  while (bytes >= 1000.0 && u < 5) {
-    bytes /= 1000.0;
-    ++u;
-  }
   char text[32];
-  std::snprintf(text, sizeof text, u == 0 ? "%.0f %s" : "%.3g %s", bytes, units[u]);
-  return text;
+  for (int u = 0;; ++u, bytes /= 1000.0) {
+    std::snprintf(text, sizeof text, u == 0 || bytes >= 1000.0 ? "%.0f %s" : "%.3g %s", bytes, units[u]);
+    // the unit is chosen on the number as printed: 999 999 bytes is "1 MB", not "1e+03 kB"
+    if (u == 5 || std::strtod(text, nullptr) < 1000.0) return text;
+  }
 }
 
 }  // namespace koppel

@@ -73,6 +73,11 @@ TEST_CASE("FormatBytes writes decimal units with three significant digits", "[me
   CHECK(FormatBytes(13.2e9) == "13.2 GB");
   CHECK(FormatBytes(2.5e12) == "2.5 TB");
   CHECK(FormatBytes(7e15) == "7 PB");
+  // the unit is chosen on the number as printed: never "1e+03 kB" at a unit's boundary
+  CHECK(FormatBytes(999.5) == "1 kB");
+  CHECK(FormatBytes(999999) == "1 MB");
+  CHECK(FormatBytes(999.6e6) == "1 GB");
+  CHECK(FormatBytes(3e18) == "3000 PB");
 }
 
 }  // namespace koppel::memory_test

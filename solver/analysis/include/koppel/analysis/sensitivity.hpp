@@ -47,7 +47,7 @@ void OutputSensitivity(const PositionSolver& solver, const Eigen::VectorXd& q, d
                        int first_component, int comps, bool angle, Eigen::MatrixXd* d);
 
 // The gradient d y / d delta [1/1, global frame] of an output component to a revolute joint's
-// play: the joint's point on link_b displaced by delta from its point on link_a (the pin free in
+// play: the joint's point on link_a displaced by delta from its point on link_b (the pin free in
 // its hole), at a converged pose. The output moves by at most c |gradient| for a pin anywhere
 // within a circle of radius c (first order).
 Eigen::Vector2d ClearanceGradient(const PositionSolver& solver, const Eigen::VectorXd& q, int joint, int output, int component);

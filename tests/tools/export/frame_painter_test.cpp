@@ -158,12 +158,10 @@ TEST_CASE("FramePainter: one view for every frame; each frame painted afresh", "
 }
 
 // frame_painter.hpp: "the same [view] in each frame so that only the mechanism moves". Curves()
-// sets CAIRO_LINE_JOIN_ROUND on the context and nothing sets it back, so the first Paint strokes
-// the pivots' triangles with cairo's default mitre joins and every later one with round joins:
-// the same frame painted twice differs at the pivot's corners (10 pixels here), and the GIF's
-// second frame carries pixels of the still frame. Kept failing on purpose until the library
-// restores the join (cairo_save/cairo_restore round Curves); reported, not fixed here.
-TEST_CASE("FramePainter: the same frame painted twice gives the same pixels", "[export][gif][!shouldfail]") {
+// set CAIRO_LINE_JOIN_ROUND on the context and nothing set it back, so the first Paint stroked
+// the pivots' triangles with mitre joins and every later one with round joins (10 pixels of the
+// still frame differed); it now saves and restores the context around the curves.
+TEST_CASE("FramePainter: the same frame painted twice gives the same pixels", "[export][gif]") {
   const plot::AnimationScene scene = Scene();
   plot::FramePainter painter(scene, kWidth, kHeight);
   cairo_surface_t* s = painter.surface();

@@ -183,11 +183,10 @@ TEST_CASE("TolerancePlot: an unreached row breaks every curve and the band; part
   CHECK(Corners(bands[1]).size() == 2 * 10);
 }
 
-// plots.hpp: "gaps of the computed range are shaded". TolerancePlot marks an unreached row as
-// the interval [x, x] (ShadeUnreachedInputs), which has no width, and the figure draws a gap only
-// when it has some (figure.cpp: `if (b > a)`): no input is shaded. Kept failing on purpose until
-// the library shades the stretch between the reached neighbours (reported, not fixed here).
-TEST_CASE("TolerancePlot: an unreached row is shaded on the panels", "[plot][!shouldfail]") {
+// plots.hpp: "gaps of the computed range are shaded". An unreached row is shaded from its
+// reached neighbour before to the one after (it was the interval [x, x], which the figure never
+// draws: figure.cpp draws a gap only when b > a).
+TEST_CASE("TolerancePlot: an unreached row is shaded on the panels", "[plot]") {
   plot::ToleranceBand b = Band(true);
   b.ok[10] = false;
   const auto doc = test::ParseSvg(plot::TolerancePlot(b).svg);

@@ -147,6 +147,7 @@ void FramePainter::MovingPart(const Part& part) const {
 }
 
 void FramePainter::Curves(double up_to) const {
+  cairo_save(cr_);  // the round joins are the curves' own: every frame starts from the same state
   for (const TracedCurve& c : scene_.curves)
     for (const auto& run : c.UpTo(up_to)) {
       MoveTo(run[0]);
@@ -156,6 +157,7 @@ void FramePainter::Curves(double up_to) const {
   cairo_set_line_width(cr_, 1.6 * px_);
   cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
   cairo_stroke(cr_);
+  cairo_restore(cr_);
 }
 
 void FramePainter::Paint(int index) {

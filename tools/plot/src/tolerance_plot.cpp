@@ -33,8 +33,19 @@ void Widen(const std::vector<std::vector<Eigen::Vector2d>>& runs, double* low, d
 
 // Marks the inputs that were not reached on a panel.
 void ShadeUnreachedInputs(const ToleranceBand& b, Panel* panel) {
-  for (size_t i = 0; i < b.inputs.size(); ++i) {
-    if (!b.ok[i]) panel->shaded.push_back({b.inputs[i], b.inputs[i]});
+  // a run of unreached rows is shaded from the last reached input before it to the first after
+  // it (nothing is known in between), as the sweeping plots shade their gaps (MarkGaps)
+  const size_t n = b.inputs.size();
+  for (size_t i = 0; i < n;) {
+    if (b.ok[i]) {
+      ++i;
+      continue;
+    }
+    size_t j = i;
+    while (j < n && !b.ok[j]) ++j;  // rows i .. j-1 are unreached
+    const double from = b.inputs[i > 0 ? i - 1 : i], to = b.inputs[j < n ? j : n - 1];
+    panel->shaded.emplace_back(std::min(from, to), std::max(from, to));
+    i = j;
   }
 }
 
@@ -102,6 +113,7 @@ Panel VarianceSharePanel(const ToleranceBand& b, double x_low, double x_high) {
   shares.y = NiceAxis("share of the variance", 0, 1);
   shares.title = "share of the variance";
   for (size_t j = 0; j < b.names.size(); ++j) shares.curves.push_back({b.names[j], Runs(b, b.shares[j]), static_cast<int>(j), false, ""});
+  ShadeUnreachedInputs(b, &shares);
   return shares;
 }
 

@@ -6,7 +6,6 @@
 #include "koppel/core/temporary_files.hpp"
 #include "koppel/koppel.hpp"  // Version
 
-
 #include <exception>
 #include <iostream>
 

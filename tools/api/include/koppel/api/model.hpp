@@ -197,7 +197,7 @@ class Model {
  public:
   // Reads a mechanism file, or the catalog entry when `path` is no file but a catalog id
   // ("crank-rocker", ResolveMechanismName); `set` overrides parameters as --set does. Throws
-  // InputError. Load, Parse, FromMechanism and Set admit only a mechanism of mobility 1 (one
+  // InputError. Load, Parse, FromMechanism and With admit only a mechanism of mobility 1 (one
   // drive), as every command does (tools/api/src/admission.hpp): InputError otherwise.
   static Model Load(const std::string& path, const ParameterValues& set = {});
   // The same from the text of a mechanism file; `name` stands for the file in messages.

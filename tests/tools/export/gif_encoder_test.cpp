@@ -6,6 +6,8 @@
 // top 5 bits (the median cut's grid), the picture comes back exactly.
 #include "gif_encoder.hpp"
 
+#include "gif_reading.hpp"
+
 #include <gif_lib.h>
 
 #include <catch2/catch.hpp>
@@ -27,23 +29,10 @@ struct Frame {
   std::vector<std::uint32_t> shown;  // composed over the frames before, 0xRRGGBB
 };
 
-struct Source {
-  const std::string* bytes;
-  size_t at = 0;
-};
-
-int ReadBytes(GifFileType* gif, GifByteType* out, int n) {
-  Source* s = static_cast<Source*>(gif->UserData);
-  const size_t k = std::min(static_cast<size_t>(n), s->bytes->size() - s->at);
-  std::memcpy(out, s->bytes->data() + s->at, k);
-  s->at += k;
-  return static_cast<int>(k);
-}
-
 std::vector<Frame> Decode(const std::string& bytes, int width, int height) {
-  Source source{&bytes};
+  test::GifSource source{&bytes};
   int error = 0;
-  GifFileType* gif = DGifOpen(&source, ReadBytes, &error);
+  GifFileType* gif = DGifOpen(&source, test::ReadGifBytes, &error);
   REQUIRE(gif != nullptr);
   REQUIRE(DGifSlurp(gif) == GIF_OK);
   CHECK(gif->SWidth == width);

@@ -9,6 +9,8 @@
 #include "koppel/core/angles.hpp"
 #include "koppel/core/limits.hpp"
 
+#include "gif_reading.hpp"
+
 #include <gif_lib.h>
 
 #include <catch2/catch.hpp>
@@ -31,23 +33,10 @@ struct Decoded {
   std::vector<std::vector<std::uint32_t>> shown;  // each frame composed over the ones before, 0xRRGGBB
 };
 
-struct Source {
-  const std::string* bytes;
-  size_t at = 0;
-};
-
-int ReadBytes(GifFileType* gif, GifByteType* out, int n) {
-  Source* s = static_cast<Source*>(gif->UserData);
-  const size_t k = std::min(static_cast<size_t>(n), s->bytes->size() - s->at);
-  std::memcpy(out, s->bytes->data() + s->at, k);
-  s->at += k;
-  return static_cast<int>(k);
-}
-
 Decoded Decode(const std::string& bytes) {
-  Source source{&bytes};
+  test::GifSource source{&bytes};
   int error = 0;
-  GifFileType* gif = DGifOpen(&source, ReadBytes, &error);
+  GifFileType* gif = DGifOpen(&source, test::ReadGifBytes, &error);
   REQUIRE(gif != nullptr);
   REQUIRE(DGifSlurp(gif) == GIF_OK);
   Decoded d;

@@ -73,7 +73,6 @@ std::vector<ForcesColumn> ForcesLayout(const Mechanism& m) {
 
 bool ForcesRequest::IsValid(const Model& model, std::string* why) const { return ForcesOptionsOf(model, *this).IsValid(why); }
 
-
 ForcesTable AnalyseForces(const Model& model, const ForcesRequest& request) {
   const Mechanism& m = model.mechanism();
   const ForcesOptions options = ForcesOptionsOf(model, request);

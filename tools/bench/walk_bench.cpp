@@ -9,6 +9,7 @@
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/assembly.hpp"
 #include "koppel/solver/continuation.hpp"
+#include "koppel/solver/point_schedule.hpp"
 
 #include <cmath>
 #include <limits>
@@ -105,6 +106,57 @@ void TimeWalk(benchmark::State& state, const Mechanism& mechanism, bool transfer
   }
 }
 
+// The compiled joint-point step (point_schedule.hpp) over the same walk: positions, then every
+// output's 1st and 2nd derivative from its series, as Walker::Step.
+void TimePointWalk(benchmark::State& state, const Mechanism& mechanism,
+                   const std::function<double(double, const std::vector<double>&)>& check) {
+  PositionSolver solver(mechanism);
+  const Assembly assembly = AssembleRegular(mechanism, solver);
+  Continuation path(solver);
+  PointSchedule schedule(solver.system());
+  if (!assembly.ok() || !path.Start(assembly.input, assembly.q).ok() || !schedule.compiled()) {
+    state.SkipWithError((mechanism.name + ": not assembled or not compiled: " + schedule.why_not()).c_str());
+    return;
+  }
+  schedule.Load(path.input(), path.q(), path.Series(2));
+  std::vector<double> row(solver.OutputWidth(2));
+  Eigen::MatrixXd series(solver.NumCoordinates(), 3);
+  std::vector<double> trig(solver.system().TrigSize());
+  int at = 0;
+  bool up = true;
+  auto step = [&] {
+    const double next = assembly.input + (up ? at + 1 : kStepsPerTurn - 1 - at) * kStep;
+    if (!schedule.Step(next)) return false;
+    schedule.Series(series);
+    schedule.Trig(trig.data());
+    solver.OutputDerivatives(series, 2, row.data(), trig.data());
+    if (++at == kStepsPerTurn) {
+      at = 0;
+      up = !up;
+    }
+    return true;
+  };
+  double worst = 0.0;
+  for (int i = 0; i < kStepsPerTurn; ++i) {
+    if (!step()) break;
+    const double input = assembly.input + (up ? at : kStepsPerTurn - at) * kStep;
+    worst = std::max(worst, check(input, row));
+  }
+  if (!(worst <= kAgreement)) {
+    state.SkipWithError((mechanism.name + ": the schedule and the closed form differ by " + std::to_string(worst)).c_str());
+    return;
+  }
+  for (auto _ : state) {
+    for (int i = 0; i < kStepsPerTurn; ++i) {
+      if (!step()) {
+        state.SkipWithError((mechanism.name + ": the compiled walk failed").c_str());
+        return;
+      }
+      benchmark::DoNotOptimize(row.data());
+    }
+  }
+}
+
 double Deviation(const Jet& jet, const double* row) {
   return std::max({std::abs(jet.v - row[0]), std::abs(jet.d1 - row[1]), std::abs(jet.d2 - row[2])});
 }
@@ -165,6 +217,10 @@ std::vector<Case> WalkCases() {
   cases.push_back(WalkCase("fourbar", SeedFourBar, FourBarCheck));
   cases.push_back(ClosedFormCase("slider-crank-closed-form", SeedSliderCrankClosedForm));
   cases.push_back(WalkCase("slider-crank", SeedSliderCrank, SliderCrankCheck));
+  cases.push_back(StepCase("fourbar-compiled", "fourbar-closed-form", kStepsPerTurn,
+                           [](benchmark::State& s) { TimePointWalk(s, SeedFourBar(), FourBarCheck); }));
+  cases.push_back(StepCase("slider-crank-compiled", "slider-crank-closed-form", kStepsPerTurn,
+                           [](benchmark::State& s) { TimePointWalk(s, SeedSliderCrank(), SliderCrankCheck); }));
   cases.push_back(ClosedFormCase("proportional-closed-form", SeedProportionalClosedForm));
   cases.push_back(WalkCase("proportional", SeedProportional, ProportionalCheck));
   for (int loops : {4, 16, 128}) {

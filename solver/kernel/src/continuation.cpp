@@ -13,6 +13,10 @@
 namespace koppel {
 namespace {
 
+// The compiled step hands over to the general one where a dyad's normalised determinant (the sine
+// of the angle between its two rows) falls below this: far above any singular position's
+// (kSingularRowRcond), so a compiled pose is never one, and far below a regular walk's.
+constexpr double kFastGauge = 1e-2;
 // A pose examined at a stall is near a singular position below this reciprocal condition.
 constexpr double kNearSingularRcond = 1e-3;
 // Taylor order at the two ends of a branch-point window: orders up to 3 are accurate at both
@@ -129,11 +133,17 @@ Continuation::Continuation(PositionSolver& solver, ContinuationOptions options)
   input_scale_ = solver.system().mechanism().InputIsAngle() ? 1.0 : length_scale_;
   q_.setZero(n);
   previous_q_.setZero(n);
+  for (RegularPose& p : regular_) p.q.setZero(n);
   q_trial_.setZero(n);
   predicted_.setZero(n);
   tangent_predicted_.setZero(n);
   series_.setZero(n, kWindowOrder + 1);
   trial_series_.setZero(n, kWindowOrder + 1);
+  if (!solver.options().dense) {
+    schedule_ = std::make_unique<PointSchedule>(solver.system());
+    if (!schedule_->compiled()) schedule_.reset();
+    trig_.resize(solver.system().TrigSize());
+  }
 }
 
 Continuation::~Continuation() = default;
@@ -186,6 +196,8 @@ void Continuation::SetRegularPose(double input, const Eigen::VectorXd& q) {
 }
 
 bool Continuation::RestoreFactorization() {
+  compiled_pose_ = false;
+  schedule_loaded_ = false;
   q_trial_ = q_;
   if (!solver_.Correct(input_, q_trial_).ok()) return false;
   q_ = q_trial_;
@@ -194,6 +206,7 @@ bool Continuation::RestoreFactorization() {
   sign_ = solver_.JacobianSign();
   determinant_ = solver_.ScaledDeterminant();
   pivot_ratio_ = solver_.PivotRatio();
+  RememberIfRegular(pivot_ratio_ > kRegularPivotRatio);
   rcond_ = -1.0;
   valid_order_ = kMaxOrder;
   series_order_ = -1;
@@ -206,6 +219,8 @@ SolveReport Continuation::Start(double input, const Eigen::VectorXd& q) {
   if (report.ok()) {
     started_ = true;
     at_limit_ = false;
+    compiled_pose_ = false;
+    schedule_loaded_ = false;
     input_ = input;
     q_ = q_trial_;
     factorized_here_ = true;
@@ -213,6 +228,7 @@ SolveReport Continuation::Start(double input, const Eigen::VectorXd& q) {
     sign_ = solver_.JacobianSign();
     determinant_ = solver_.ScaledDeterminant();
     pivot_ratio_ = solver_.PivotRatio();
+    RememberIfRegular(pivot_ratio_ > kRegularPivotRatio);
     rcond_ = -1.0;
     valid_order_ = kMaxOrder;
     series_order_ = -1;
@@ -251,6 +267,7 @@ const Eigen::MatrixXd& Continuation::Series(int order) {
 }
 
 bool Continuation::AtSingularPose() {
+  if (compiled_pose_) return false;  // every dyad's gauge above kFastGauge: regular
   if (rcond_ < 0.0) {
     rcond_ = (!from_window_ && pivot_ratio_ > kRegularPivotRatio) ? pivot_ratio_
                                                                    : ReciprocalCondition(solver_.system(), q_);
@@ -259,6 +276,7 @@ bool Continuation::AtSingularPose() {
 }
 
 void Continuation::Accept(double next) {
+  schedule_loaded_ = false;
   previous_input_ = input_;
   previous_q_ = q_;
   previous_determinant_ = determinant_;
@@ -279,9 +297,68 @@ void Continuation::Accept(double next) {
   if (series_.rows() != trial_series_.rows() || series_.cols() < trial_series_.cols()) series_.resize(trial_series_.rows(), trial_series_.cols());
   series_.leftCols(trial_series_.cols()) = trial_series_;
   series_order_ = 2;
+  // a step that is not clearly regular keeps the last regular pose (the walk is continuous)
+  if (pivot_ratio_ > kRegularPivotRatio) RememberIfRegular(true);
+}
+
+void Continuation::RememberIfRegular(bool regular) {
+  if (!regular) {
+    regular_count_ = 0;
+    return;
+  }
+  RegularPose& p = regular_[regular_next_];
+  p.input = input_;
+  p.q = q_;
+  regular_next_ = (regular_next_ + 1) % kRememberedPoses;
+  regular_count_ = std::min(regular_count_ + 1, kRememberedPoses);
+}
+
+int Continuation::RegularPoseBefore(double input, double direction) const {
+  for (int k = 1; k <= regular_count_; ++k) {
+    const int slot = (regular_next_ - k + kRememberedPoses) % kRememberedPoses;
+    if (direction * (input - regular_[slot].input) >= 0.0) return slot;
+  }
+  return -1;
+}
+
+void Continuation::EnsureFactorized() {
+  if (compiled_pose_) RestoreFactorization();
+}
+
+Continuation::StepResult Continuation::TryCompiledStep(double next) {
+  StepResult out;
+  if (!schedule_ || from_window_ || at_limit_) return out;
+  if (!compiled_pose_ && !(pivot_ratio_ > kRegularPivotRatio)) return out;  // near a singular position
+  if (!schedule_loaded_) {
+    schedule_->Load(input_, q_, Series(2));
+    schedule_loaded_ = true;
+  }
+  PointSchedule::StepOptions o;
+  o.tolerance = solver_.options().tolerance;
+  o.max_iterations = options_.max_corrector_iterations;
+  o.max_correction = options_.max_correction;
+  o.max_tangent_change = options_.max_tangent_change;
+  o.min_gauge = kFastGauge;
+  if (!schedule_->Step(next, o)) return out;
+  input_ = next;
+  schedule_->Pose(q_);
+  schedule_->Trig(trig_.data());
+  solver_.AdoptPose(next, q_, trig_.data());
+  schedule_->Series(series_);
+  series_order_ = 2;
+  factorized_here_ = false;
+  from_window_ = false;
+  at_limit_ = false;
+  compiled_pose_ = true;
+  RememberIfRegular(true);  // every dyad's gauge above kFastGauge
+  rcond_ = -1.0;
+  valid_order_ = kMaxOrder;
+  out.accepted = true;
+  return out;
 }
 
 Continuation::StepResult Continuation::TryStep(double next) {
+  EnsureFactorized();
   StepResult out;
   const double h = next - input_;
   const Eigen::MatrixXd& c = Series(2);
@@ -403,7 +480,15 @@ Continuation::Crossing Continuation::CrossBranchPoint(double estimate, double di
   const double start_input = input_;
   const Eigen::VectorXd start_q = q_;
   double delta = options_.branch_window * input_scale_;
+  // The window's near end is walked to from a regular pose behind it when the walk has one: the
+  // walk that stalled here may stand so close to the point that its tangent is noise, and a step
+  // back from there can land on the other branch.
+  const int behind = RegularPoseBefore(estimate - direction * delta, direction);
   for (int attempt = 0; attempt < kCrossingAttempts; ++attempt, delta *= 0.25) {
+    if (attempt == 0 && behind >= 0) {
+      const RegularPose& p = regular_[behind];
+      SetRegularPose(p.input, p.q);
+    }
     if (attempt > 0) SetRegularPose(start_input, start_q);
     Eigen::MatrixXd at_star;
     std::unique_ptr<Window> window = OpenBranchWindow(estimate, direction, delta, &at_star);
@@ -463,6 +548,9 @@ Continuation::Crossing Continuation::LeaveOrEnterWindow(double target, WalkRepor
 }
 
 void Continuation::EvaluateInWindow(double input) {
+  regular_count_ = 0;
+  compiled_pose_ = false;
+  schedule_loaded_ = false;
   const Window& w = *window_;
   const bool outgoing = !w.outgoing.empty() && w.direction * (input - w.star) > 0.0;
   const HermiteSegment& segment = outgoing ? w.outgoing : w.incoming;
@@ -487,6 +575,9 @@ std::string Continuation::LimitMessage(const SingularStructure& s, double input)
 }
 
 void Continuation::SetLimitPose(double input, const Eigen::VectorXd& q) {
+  regular_count_ = 0;
+  compiled_pose_ = false;
+  schedule_loaded_ = false;
   retreat_input_ = input_;
   retreat_q_ = q_;
   at_limit_ = true;
@@ -561,7 +652,8 @@ WalkReport Continuation::AdvanceTo(double target, double max_step) {
     const double remaining = target - input_;
     const double direction = remaining > 0.0 ? 1.0 : -1.0;
     const double next = std::abs(remaining) <= h ? target : input_ + direction * h;
-    const StepResult step = TryStep(next);
+    StepResult step = TryCompiledStep(next);
+    if (!step.accepted) step = TryStep(next);
     if (step.accepted && !step.sign_changed) {
       examined = false;
       h = std::min(cap, 2.0 * h);

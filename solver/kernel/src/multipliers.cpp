@@ -5,6 +5,7 @@
 namespace koppel {
 
 bool PositionSolver::SolveWithJacobianTranspose(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
+  Resolve();
   if (!factorized_ || !square_) return false;
   if (use_blocks_) {
     x = rhs;

@@ -162,6 +162,7 @@ PositionSolver::PositionSolver(const Mechanism& mechanism, NewtonOptions options
   rhs_.resize(m);
   step_.resize(n);
   q_try_.resize(n);
+  pending_q_.resize(n);
   q_solved_.setZero(n);
   jacobian_.resize(m, n);
   use_blocks_ = square_ && !options_.dense && n > 0 && blocks_.Analyse(n, system_.pattern_rows(), system_.pattern_cols());
@@ -274,7 +275,28 @@ SolveReport PositionSolver::Report(SolveStatus status, int iterations, std::stri
   return report;
 }
 
+void PositionSolver::AdoptPose(double input, const Eigen::VectorXd& q, const double* trig) {
+  pending_ = true;
+  pending_input_ = input;
+  pending_q_ = q;
+  if (use_blocks_ && trig) {
+    // what OutputDerivatives reads at the pose; the factorisation's users call Resolve first,
+    // which solves anew
+    q_solved_ = q;
+    std::copy(trig, trig + trig_solved_.size(), trig_solved_.begin());
+  }
+}
+
+void PositionSolver::Resolve() const {
+  if (!pending_) return;
+  // the adopted pose is converged (to roundoff): Newton takes at most one step and factorises
+  auto* self = const_cast<PositionSolver*>(this);
+  self->pending_ = false;
+  self->Correct(pending_input_, self->pending_q_);
+}
+
 SolveReport PositionSolver::Correct(double input, Eigen::VectorXd& q) {
+  pending_ = false;
   const double tolerance = options_.tolerance * system_.length_scale();
   q_try_ = q;
   double first_norm = -1.0;
@@ -460,6 +482,7 @@ void PositionSolver::BlockSeries(int order, Eigen::MatrixXd& coefficients) {
 }
 
 bool PositionSolver::Series(int order, Eigen::MatrixXd& coefficients) {
+  Resolve();
   if (!factorized_ || order < 0 || order > kMaxOrder) return false;
   if (coefficients.rows() != NumCoordinates() || coefficients.cols() != order + 1)
     coefficients.resize(NumCoordinates(), order + 1);
@@ -483,7 +506,7 @@ int PositionSolver::OutputWidth(int order) const {
 }
 
 template <int N>
-void PositionSolver::OutputDerivativesImpl(const Eigen::MatrixXd& coefficients, int order, double* out) const {
+void PositionSolver::OutputDerivativesImpl(const Eigen::MatrixXd& coefficients, int order, double* out, const double* trig_at_pose) const {
   std::vector<Taylor<N>>& qs = CoordinateSeries<N>();
   std::vector<Taylor<N>>& trig = TrigSeries<N>();
   for (int i = 0; i < NumCoordinates(); ++i) {
@@ -493,14 +516,14 @@ void PositionSolver::OutputDerivativesImpl(const Eigen::MatrixXd& coefficients, 
   // cos and sin of each link angle once, not once per point an output looks at; at the pose
   // Newton converged to (the common case: a walk's outputs) the last evaluation's values, the
   // same numbers as a new sincos
-  const bool at_solved = use_blocks_ && coefficients.col(0) == q_solved_;
+  if (!trig_at_pose && use_blocks_ && coefficients.col(0) == q_solved_) trig_at_pose = trig_solved_.data();
   for (int l = 0; l < static_cast<int>(mechanism_.links.size()); ++l) {
     const int i = system_.CoordinateOf(l);
     if (i < 0) {
       trig[2 * l] = Taylor<N>(1.0);
       trig[2 * l + 1] = Taylor<N>(0.0);
-    } else if (at_solved) {
-      SinCos(qs[i + 2], trig_solved_[2 * l + 1], trig_solved_[2 * l], trig[2 * l + 1], trig[2 * l]);
+    } else if (trig_at_pose) {
+      SinCos(qs[i + 2], trig_at_pose[2 * l + 1], trig_at_pose[2 * l], trig[2 * l + 1], trig[2 * l]);
     } else {
       SinCos(qs[i + 2], trig[2 * l + 1], trig[2 * l]);
     }
@@ -528,14 +551,19 @@ void PositionSolver::OutputDerivativesImpl(const Eigen::MatrixXd& coefficients, 
 }
 
 void PositionSolver::OutputDerivatives(const Eigen::MatrixXd& coefficients, int order, double* out) const {
+  OutputDerivatives(coefficients, order, out, nullptr);
+}
+
+void PositionSolver::OutputDerivatives(const Eigen::MatrixXd& coefficients, int order, double* out, const double* trig) const {
   if (order <= 2) {
-    OutputDerivativesImpl<2>(coefficients, order, out);
+    OutputDerivativesImpl<2>(coefficients, order, out, trig);
   } else {
-    OutputDerivativesImpl<kMaxOrder>(coefficients, order, out);
+    OutputDerivativesImpl<kMaxOrder>(coefficients, order, out, trig);
   }
 }
 
 Eigen::VectorXd PositionSolver::SolveWithJacobian(const Eigen::VectorXd& rhs) const {
+  Resolve();
   Eigen::VectorXd x(NumCoordinates());
   SolveFactorized(rhs, x);
   return x;

@@ -72,6 +72,9 @@ using Complex = std::complex<double>;
 constexpr int kCandidateSamples = 720;
 // Rounds of re-timing in the pre-polish (each a closed-form fit of a few milliseconds).
 constexpr int kRetimings = 4;
+// A polished design within this of the points (times the points' scale) fits them exactly: the
+// kernel's Newton tolerance is 1e-13 L.
+constexpr double kExactFit = 1e-12;
 
 // One way of reading the points: mirrored or not, with its descriptor.
 struct Reading {
@@ -409,7 +412,11 @@ PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
     const size_t count = std::min(order.size() - next, next == 0 ? top : 2 * missing);
     PolishBatch(atlas, request, scale, candidates, placed, order, next, count, &polished);
     next += count;
-    std::stable_sort(polished.begin(), polished.end(), [](const PathLinkage& a, const PathLinkage& b) { return a.error < b.error; });
+    // exact fits (errors at roundoff) keep the order of their atlas candidates: their errors'
+    // order is roundoff, which any change of the kernel's arithmetic reshuffles
+    const auto rank_error = [&](const PathLinkage& l) { return l.error < kExactFit * scale ? 0.0 : l.error; };
+    std::stable_sort(polished.begin(), polished.end(),
+                     [&](const PathLinkage& a, const PathLinkage& b) { return rank_error(a) < rank_error(b); });
     result.linkages = DistinctLinkages(polished, kSameDesign * scale, &result.duplicates);
     missing = top - std::min(top, result.linkages.size());
   }

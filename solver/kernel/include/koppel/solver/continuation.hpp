@@ -7,6 +7,13 @@
 // by O(1). The sign of det J is never a reason to accept a step; its change only tells that a
 // singular position was crossed, which is then located and reported.
 //
+// Regular steps take the compiled joint-point schedule (point_schedule.hpp) where the mechanism
+// compiles into one and the solver is not asked for the dense reference path: the same guards
+// (iterations, correction, tangent), and a step whose dyad determinants come near zero
+// (kFastGauge) or change sign is handed to the general step. A pose reached by the schedule has
+// no factorisation of its own: whatever needs one (a higher order, a singular-position test
+// below the gauge, the general step) first re-solves the pose with the general kernel.
+//
 // Singular positions (see singular.hpp):
 // - limit point: no step gets past. Where the steps stall, the point is located on the augmented
 //   system (singular.hpp, LocateLimitPoint) to roundoff; a target between the walk and the point
@@ -24,6 +31,7 @@
 #pragma once
 
 #include "koppel/core/mechanism.hpp"
+#include "koppel/solver/point_schedule.hpp"
 #include "koppel/solver/position.hpp"
 #include "koppel/solver/singular.hpp"
 
@@ -121,6 +129,15 @@ class Continuation {
   double ScaledTangentNorm(Eigen::Ref<const Eigen::VectorXd> a, const Eigen::VectorXd* b) const;
   enum class Crossing { kNotCrossed, kPassed, kFinished };
   StepResult TryStep(double next);
+  // The schedule's step; accepted poses are regular (every dyad's gauge above kFastGauge).
+  StepResult TryCompiledStep(double next);
+  // After compiled steps: the general kernel's factorisation, sign and gauge at the current pose.
+  void EnsureFactorized();
+  // Keeps the current pose as the last regular one when `regular`, else forgets the last one (the
+  // walk jumped: a pose set from outside, a window's end).
+  void RememberIfRegular(bool regular);
+  // The newest remembered regular pose at or behind `input` in `direction`, or -1.
+  int RegularPoseBefore(double input, double direction) const;
   void Accept(double next);
   void SetRegularPose(double input, const Eigen::VectorXd& q);
   bool RestoreFactorization();
@@ -184,6 +201,21 @@ class Continuation {
   double retreat_input_ = 0.0;
   Eigen::VectorXd retreat_q_;
   std::vector<SingularPoint> singular_points_;
+  // the compiled step: null when the mechanism does not compile or the dense path is asked for
+  std::unique_ptr<PointSchedule> schedule_;
+  bool schedule_loaded_ = false;  // the schedule's state is the current pose
+  std::vector<double> trig_;      // cos and sin of the link angles at a compiled pose
+  bool compiled_pose_ = false;    // the current pose came from the schedule (no factorisation)
+  // the last accepted poses of the walk that were clearly regular (pivot gauge above
+  // kRegularPivotRatio), newest last, since the walk last jumped: a branch crossing starts from
+  // one behind its window
+  struct RegularPose {
+    double input = 0.0;
+    Eigen::VectorXd q;
+  };
+  static constexpr int kRememberedPoses = 8;
+  std::array<RegularPose, kRememberedPoses> regular_;
+  int regular_next_ = 0, regular_count_ = 0;
 };
 
 }  // namespace koppel

@@ -62,6 +62,7 @@ class PositionSolver {
   explicit PositionSolver(const Mechanism& mechanism, NewtonOptions options = {});
 
   const ConstraintSystem& system() const { return system_; }
+  const NewtonOptions& options() const { return options_; }
   int NumCoordinates() const { return system_.NumCoordinates(); }
 
   // Newton from q at `input`. On success q holds the solution and the Jacobian there is
@@ -90,21 +91,24 @@ class PositionSolver {
   // (x, y for points), k = 0..order: out[...] = d^k y / d input^k. `out` holds
   // OutputWidth(order) numbers.
   void OutputDerivatives(const Eigen::MatrixXd& q_coefficients, int order, double* out) const;
+  // The same with cos and sin of every link angle at q_coefficients.col(0) given (TrigSize()
+  // numbers, as ConstraintSystem::Evaluate lays them out), e.g. PointSchedule::Trig.
+  void OutputDerivatives(const Eigen::MatrixXd& q_coefficients, int order, double* out, const double* trig) const;
   int OutputWidth(int order) const;
 
   // Sign of det J at the last converged pose (square systems), 0 when J is singular or not
   // square. A change of sign along a path means the path crossed a singular position.
-  int JacobianSign() const { return jacobian_sign_; }
+  int JacobianSign() const { Resolve(); return jacobian_sign_; }
   // Smallest over largest pivot of the last LU of the scaled Jacobian J_hat = J S, where S divides
   // the theta columns by L so that every entry is dimensionless: a cheap distance-to-singularity
   // gauge (an SVD gives the exact reciprocal condition, see singular.hpp).
-  double PivotRatio() const { return pivot_ratio_; }
+  double PivotRatio() const { Resolve(); return pivot_ratio_; }
   // det(J_hat) at the last factorised pose (square systems; 0 otherwise): a smooth, signed test
   // function whose simple roots along a branch are its singular positions.
-  double ScaledDeterminant() const { return scaled_determinant_; }
+  double ScaledDeterminant() const { Resolve(); return scaled_determinant_; }
   // True when the steps factorise the Jacobian block by block (see NewtonOptions::dense).
   bool UsesBlocks() const { return use_blocks_; }
-  const BlockLU& blocks() const { return blocks_; }
+  const BlockLU& blocks() const { Resolve(); return blocks_; }
 
   // x = J^-1 rhs with the factorisation of the last converged pose (implicit-function theorem:
   // dq/dp = -J^-1 dF/dp). Precondition: the last Correct/Assemble succeeded.
@@ -113,12 +117,22 @@ class PositionSolver {
   // when there is none or J is not square (redundant joints: the multipliers are not unique).
   bool SolveWithJacobianTranspose(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;  // multipliers.cpp
 
+  // A solved pose reached without this solver (continuation.hpp's compiled steps): the last
+  // converged pose from now on. Its factorisation is made when first needed (Series, the solves
+  // with J, the sign and gauges above), by Newton at the pose, so that callers reading the
+  // solver after a walk always get the walk's pose.
+  // `trig` (optional): cos and sin of every link angle at q, which OutputDerivatives then reuses.
+  void AdoptPose(double input, const Eigen::VectorXd& q, const double* trig = nullptr);
+
   // Rank of the constraint rows (drive row excluded) at q, and the actual mobility
   // NumCoordinates() - rank.
   int ConstraintRank(const Eigen::VectorXd& q) const;
 
  private:
   void Evaluate(const Eigen::VectorXd& q, double input);  // fills residual_ and the Jacobian
+  // Factorises at an adopted pose (AdoptPose) if one waits. Logically const: the solver's
+  // observable state is the adopted pose either way.
+  void Resolve() const;
   void FillDenseJacobian();                               // jacobian_ from the block path's values
   bool Factorize();                                       // factorises jacobian_
   void SolveFactorized(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
@@ -154,6 +168,9 @@ class PositionSolver {
   mutable std::vector<Taylor<2>> q2_, r2_, trig2_;
   mutable std::vector<Taylor<kMaxOrder>> q8_, r8_, trig8_;
   Eigen::VectorXd q_try_;
+  bool pending_ = false;  // an adopted pose waits for its factorisation
+  double pending_input_ = 0.0;
+  Eigen::VectorXd pending_q_;
   template <int N> std::vector<Taylor<N>>& CoordinateSeries() const {
     if constexpr (N == 2) return q2_; else return q8_;
   }
@@ -163,7 +180,8 @@ class PositionSolver {
   template <int N> std::vector<Taylor<N>>& TrigSeries() const {
     if constexpr (N == 2) return trig2_; else return trig8_;
   }
-  template <int N> void OutputDerivativesImpl(const Eigen::MatrixXd& q_coefficients, int order, double* out) const;
+  template <int N>
+  void OutputDerivativesImpl(const Eigen::MatrixXd& q_coefficients, int order, double* out, const double* trig_at_pose) const;
 };
 
 }  // namespace koppel

@@ -1,0 +1,153 @@
+// A compiled walk step in joint-point coordinates: the mechanism, once, as a flat list of fixed-size
+// block solves whose unknowns are the global positions of joint points, and whose residuals are
+// the joints' and links' own equations (a link keeps the distance between its points, a block
+// stays on its slide line). No trigonometry inside Newton: a dyad's loop is a 2 x 2 system in
+// one joint point, solved with its exact Jacobian; link angles follow from the points afterwards.
+//
+// The stages, in solve order (each poses the links it names: angle, origin and their 1st and 2nd
+// derivatives with respect to the drive input):
+//   drive R:  a link hinged to a posed link by the drive joint: theta_b = theta_a + zero + input;
+//   drive P:  a block on a posed guide by the drive joint: on the slide line at zero + input;
+//   dyad RR:  two links, each hinged to a posed link, hinged to each other at J:
+//             |J - A| = a, |J - B| = b   (A, B the posed hinges);
+//   dyad RP:  a link hinged to a posed link at A and to a block at J, the block on the slide line
+//             of a posed guide (its angle is the guide's plus the joint's):
+//             |J - A| = a, n . (point of the block - point of the line) = 0.
+// A mechanism made of other parts (triads, a slotted link turning about its pivot, redundant
+// joints) is not compiled (compiled() false, why_not() says what): the caller keeps the general
+// kernel (position.hpp) for it. The schedule is the fast path of a regular step, never the only
+// one: singular poses, assembly and higher orders stay with the general kernel.
+//
+// Conventions as constraints.hpp: theta in rad (counter-clockwise from the frame's x axis), the
+// same q layout (x, y, theta per moving link), the input in rad (R drive) or lengths (P drive).
+#pragma once
+
+#include "koppel/core/mechanism.hpp"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+class ConstraintSystem;
+
+class PointSchedule {
+ public:
+  // Compiles `system`'s mechanism (which must outlive the schedule).
+  explicit PointSchedule(const ConstraintSystem& system);
+
+  bool compiled() const { return why_not_.empty(); }
+  const std::string& why_not() const { return why_not_; }
+  int Stages() const { return static_cast<int>(stages_.size()); }
+
+  // Takes the pose q (ConstraintSystem's layout, a solved pose at `input`) as the state to step
+  // from; its series (columns 0..2, as PositionSolver::Series) give the prediction.
+  void Load(double input, const Eigen::VectorXd& q, const Eigen::MatrixXd& series);
+
+  // Newton, stage by stage, from the 2nd-order prediction of the loaded (or last solved) state at
+  // `input`. False, with the state unchanged, when a stage does not converge within
+  // max_iterations, its normalised determinant falls below min_gauge or changes sign (a singular
+  // position lies between: the general kernel locates and crosses it), the correction of a predicted joint point exceeds
+  // max_correction * L, or its first derivative moved from the predicted one by more than
+  // max_tangent_change * (1 + its size / L): the step's guards of continuation.hpp, which keep a
+  // walk on its branch. Converged: every residual within tolerance * L.
+  struct StepOptions {
+    double tolerance = 1e-13;
+    int max_iterations = 8;
+    double max_correction = 0.02;
+    double max_tangent_change = 0.02;
+    double min_gauge = 1e-12;
+  };
+  bool Step(double input, const StepOptions& options);
+  bool Step(double input) { return Step(input, StepOptions()); }
+
+  // The solved state in ConstraintSystem's layout: q, and its Taylor coefficients (columns 0, 1,
+  // 2 = q, dq/dinput, d2q/dinput2 / 2).
+  void Pose(Eigen::VectorXd& q) const;
+  // (`series` must have NumCoordinates() rows and at least 3 columns: the first 3 are written,
+  // nothing is allocated)
+  void Series(Eigen::MatrixXd& series) const;
+  // cos and sin of every link angle at the solved pose (ConstraintSystem::TrigSize() numbers).
+  void Trig(double* trig) const;
+  // Product of the stages' 2 x 2 Jacobian determinant signs: it changes where det J of the whole
+  // system does (block triangular form), so a change between steps means a singular position lies
+  // between them. Smallest |det| of a stage's normalised Jacobian (a gauge in [0, 1]).
+  int DeterminantSign() const;
+  double Gauge() const;
+  // Newton iterations the last Step took (the most of any stage).
+  int Iterations() const { return iterations_; }
+
+ private:
+  // A link's pose and its first and second derivatives with respect to the input.
+  struct LinkJet {
+    double theta[3] = {0, 0, 0};
+    double c = 1.0, s = 0.0;
+    Eigen::Vector2d origin[3] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+  };
+  // A global point and its first and second derivatives.
+  struct PointJet {
+    Eigen::Vector2d p[3] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+  };
+  enum class Kind { kDriveR, kDriveP, kDyadRR, kDyadRP };
+  struct Stage {
+    Kind kind = Kind::kDriveR;
+    // drive R / P: the posed link `base` and the driven link `link`; sign +1 when the driven link
+    // is the joint's link_b
+    int base = -1, link = -1;
+    double sign = 1.0;
+    Eigen::Vector2d base_point, link_point;  // local points of the joint on base and link
+    Eigen::Vector2d axis;                     // P: the slide direction, local to the guide
+    double angle = 0.0;                       // P: theta_block - theta_guide
+    double cos_turn = 1.0, sin_turn = 0.0;    // P: cos and sin of the block's angle from the guide's
+    // dyads: links a (hinged to posed `anchor_a` at A) and b (hinged to posed `anchor_b` at B, or
+    // a block on the posed guide `anchor_b`), J between a and b
+    int a = -1, b = -1, anchor_a = -1, anchor_b = -1;
+    Eigen::Vector2d a_at_anchor, anchor_a_point;  // local: A on a, A on anchor_a
+    Eigen::Vector2d a_at_j, b_at_j;               // local: J on a, J on b
+    Eigen::Vector2d b_at_anchor, anchor_b_point;  // RR: B on b, on anchor_b; RP: the slide's point on b and on the guide
+    double length_a = 0.0, length_b = 0.0;        // |J - A| (on a), |J - B| (on b)
+    bool block_is_guide_side = false;             // RP: the block is the P joint's link_a
+    // the solved J, its derivatives, and the last 2 x 2 determinant (sign and gauge)
+    PointJet j, j_saved;
+    int det_sign = 0, det_sign_saved = 0;
+    double gauge = 1.0;
+  };
+
+  // Compiling: a stage for the drive, or for a dyad, when one can be posed next; false if none.
+  bool AddDriveStage(std::vector<bool>& posed, std::vector<bool>& used);
+  bool AddDyadStage(std::vector<bool>& posed, std::vector<bool>& used);
+  // The second half of dyad `s` through its inner joint k: b's R joint to a posed link (RR) or
+  // its P joint on a posed guide (RP); that joint, or -1.
+  int CloseDyad(Stage& s, int k, const std::vector<bool>& posed, const std::vector<bool>& used) const;
+  PointJet GlobalPoint(int link, const Eigen::Vector2d& local) const;
+  void PoseDrive(const Stage& s, double input);
+  struct DyadRows;
+  void PrepareDyad(const Stage& s, DyadRows& rows) const;
+  // Newton on J from `j`; the iterations taken, or -1 (no convergence, singular).
+  int NewtonDyad(const Stage& s, DyadRows& rows, Eigen::Vector2d& j, const StepOptions& options) const;
+  PointJet DyadDerivatives(const Stage& s, const DyadRows& rows, const Eigen::Vector2d& j) const;
+  bool SolveDyad(Stage& s, double h, const StepOptions& options);
+  // poses link `link` from its point `local_from` at `from` and `local_to` at `to` (jets)
+  void PoseByTwoPoints(int link, const Eigen::Vector2d& local_from, const PointJet& from, const Eigen::Vector2d& local_to,
+                       const PointJet& to);
+  // `angle` moved by whole turns to the nearest of link's predicted angle: the joints hold angles
+  // modulo a turn (constraints.hpp), a walk keeps each link's angle continuous
+  double OnTurn(int link, double angle) const;
+  // poses a link of known angle jet through its local point at `at`
+  // (cos and sin of theta given: the stages have them without trigonometry)
+  void PoseByAngle(int link, const double theta[3], double c, double s, const Eigen::Vector2d& local, const PointJet& at);
+
+  const ConstraintSystem& system_;
+  const Mechanism& mechanism_;
+  std::string why_not_;
+  std::vector<Stage> stages_;
+  std::vector<LinkJet> links_, saved_;
+  double length_scale_ = 1.0;
+  double input_ = 0.0;
+  double predicted_from_ = 0.0;  // the input of the state the prediction expands about
+  int iterations_ = 0;
+};
+
+}  // namespace koppel

@@ -1,0 +1,452 @@
+#include "koppel/solver/point_schedule.hpp"
+
+#include "koppel/solver/constraints.hpp"
+#include "koppel/solver/taylor.hpp"  // WrapAngle
+
+#include <algorithm>
+#include <cmath>
+
+namespace koppel {
+namespace {
+
+// The left normal: the vector turned by +90 degrees.
+Eigen::Vector2d Perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
+double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// A stage's 2 x 2 Jacobian below this normalised determinant (the sine of the angle between its
+// rows) counts as singular: the general kernel takes over there.
+constexpr double kSingularGauge = 1e-12;
+
+// Joint k's local point on `link`, and the link across it.
+Eigen::Vector2d LocalAt(const Mechanism& m, int k, int link) {
+  const Joint& j = m.joints[k];
+  return j.link_a == link ? m.links[link].points[j.point_a].local : m.links[link].points[j.point_b].local;
+}
+int OtherLink(const Mechanism& m, int k, int link) { return m.joints[k].link_a == link ? m.joints[k].link_b : m.joints[k].link_a; }
+
+// An unused joint of `type` between `link` and a posed link, other than `except` and the drive;
+// -1 when there is none.
+int FreeJointToPosed(const Mechanism& m, int link, int except, JointType type, const std::vector<bool>& posed,
+                     const std::vector<bool>& used) {
+  for (int k = 0; k < static_cast<int>(m.joints.size()); ++k) {
+    const Joint& j = m.joints[k];
+    if (k == except || k == m.drive.joint || used[k] || j.type != type || (j.link_a != link && j.link_b != link)) continue;
+    if (posed[OtherLink(m, k, link)]) return k;
+  }
+  return -1;
+}
+
+}  // namespace
+
+PointSchedule::PointSchedule(const ConstraintSystem& system)
+    : system_(system), mechanism_(system.mechanism()), length_scale_(system.length_scale()) {
+  const Mechanism& m = mechanism_;
+  const int n_links = static_cast<int>(m.links.size());
+  links_.resize(n_links);
+  if (m.FrameLink() < 0 || system.NumEquations() != system.NumCoordinates()) {
+    why_not_ = "the mechanism is not a square system with a frame";
+    return;
+  }
+  std::vector<bool> posed(n_links, false), used(m.joints.size(), false);
+  posed[m.FrameLink()] = true;
+  while (AddDriveStage(posed, used) || AddDyadStage(posed, used)) {
+  }
+  for (int l = 0; l < n_links && why_not_.empty(); ++l) {
+    if (!posed[l]) why_not_ = "link '" + m.links[l].name + "' is not posed by a drive or a dyad";
+  }
+  for (size_t k = 0; k < used.size() && why_not_.empty(); ++k) {
+    if (!used[k]) why_not_ = "joint '" + m.joints[k].name + "' is not part of a drive or a dyad";
+  }
+  if (!why_not_.empty()) stages_.clear();
+}
+
+bool PointSchedule::AddDriveStage(std::vector<bool>& posed, std::vector<bool>& used) {
+  const Mechanism& m = mechanism_;
+  const int d = m.drive.joint;
+  if (d < 0 || used[d]) return false;
+  const Joint& j = m.joints[d];
+  Stage s;
+  s.axis = j.axis;
+  s.angle = j.angle;
+  if (j.type == JointType::kRevolute && posed[j.link_a] != posed[j.link_b]) {
+    s.kind = Kind::kDriveR;
+    s.sign = posed[j.link_a] ? 1.0 : -1.0;
+    s.base = posed[j.link_a] ? j.link_a : j.link_b;
+    s.link = OtherLink(m, d, s.base);
+  } else if (j.type == JointType::kPrismatic && posed[j.link_a] && !posed[j.link_b]) {
+    s.kind = Kind::kDriveP;
+    s.base = j.link_a;
+    s.link = j.link_b;
+  } else {
+    return false;
+  }
+  s.cos_turn = std::cos(s.angle);
+  s.sin_turn = std::sin(s.angle);
+  s.base_point = LocalAt(m, d, s.base);
+  s.link_point = LocalAt(m, d, s.link);
+  used[d] = posed[s.link] = true;
+  stages_.push_back(s);
+  return true;
+}
+
+bool PointSchedule::AddDyadStage(std::vector<bool>& posed, std::vector<bool>& used) {
+  const Mechanism& m = mechanism_;
+  for (int k = 0; k < static_cast<int>(m.joints.size()); ++k) {
+    const Joint& j = m.joints[k];
+    if (used[k] || k == m.drive.joint || j.type != JointType::kRevolute || posed[j.link_a] || posed[j.link_b]) continue;
+    for (const auto& [a, b] : {std::pair{j.link_a, j.link_b}, std::pair{j.link_b, j.link_a}}) {
+      Stage s;
+      const int ka = FreeJointToPosed(m, a, k, JointType::kRevolute, posed, used);
+      if (ka < 0) continue;
+      s.a = a;
+      s.b = b;
+      s.anchor_a = OtherLink(m, ka, a);
+      s.a_at_anchor = LocalAt(m, ka, a);
+      s.anchor_a_point = LocalAt(m, ka, s.anchor_a);
+      s.a_at_j = LocalAt(m, k, a);
+      s.b_at_j = LocalAt(m, k, b);
+      s.length_a = (s.a_at_j - s.a_at_anchor).norm();
+      const int kb = CloseDyad(s, k, posed, used);
+      if (kb < 0 || s.length_a == 0.0) continue;
+      used[k] = used[ka] = used[kb] = true;
+      posed[a] = posed[b] = true;
+      stages_.push_back(s);
+      return true;
+    }
+  }
+  return false;
+}
+
+int PointSchedule::CloseDyad(Stage& s, int k, const std::vector<bool>& posed, const std::vector<bool>& used) const {
+  const Mechanism& m = mechanism_;
+  const int b = s.b;
+  if (const int kb = FreeJointToPosed(m, b, k, JointType::kRevolute, posed, used); kb >= 0) {
+    s.kind = Kind::kDyadRR;
+    s.anchor_b = OtherLink(m, kb, b);
+    s.b_at_anchor = LocalAt(m, kb, b);
+    s.anchor_b_point = LocalAt(m, kb, s.anchor_b);
+    s.length_b = (s.b_at_j - s.b_at_anchor).norm();
+    return s.length_b > 0.0 ? kb : -1;
+  }
+  const int kb = FreeJointToPosed(m, b, k, JointType::kPrismatic, posed, used);
+  if (kb < 0) return -1;
+  const Joint& p = m.joints[kb];
+  s.kind = Kind::kDyadRP;
+  s.anchor_b = OtherLink(m, kb, b);
+  s.block_is_guide_side = (p.link_a == b);
+  s.axis = p.axis;
+  s.angle = p.angle;
+  s.cos_turn = std::cos(p.angle);
+  s.sin_turn = (s.block_is_guide_side ? -1.0 : 1.0) * std::sin(p.angle);
+  // the slide's point on the block (b_at_anchor) and on the guide (anchor_b_point)
+  s.b_at_anchor = LocalAt(m, kb, b);
+  s.anchor_b_point = LocalAt(m, kb, s.anchor_b);
+  return kb;
+}
+
+PointSchedule::PointJet PointSchedule::GlobalPoint(int link, const Eigen::Vector2d& local) const {
+  const LinkJet& l = links_[link];
+  const Eigen::Vector2d r(l.c * local.x() - l.s * local.y(), l.s * local.x() + l.c * local.y());
+  const Eigen::Vector2d turned = Perp(r);
+  PointJet g;
+  g.p[0] = l.origin[0] + r;
+  g.p[1] = l.origin[1] + l.theta[1] * turned;
+  g.p[2] = l.origin[2] + l.theta[2] * turned - l.theta[1] * l.theta[1] * r;
+  return g;
+}
+
+void PointSchedule::PoseByAngle(int link, const double theta[3], double c, double s, const Eigen::Vector2d& local,
+                                const PointJet& where) {
+  LinkJet& l = links_[link];
+  std::copy(theta, theta + 3, l.theta);
+  l.c = c;
+  l.s = s;
+  // origin = where - R(theta) local, differentiated with R' = theta' R perp
+  const Eigen::Vector2d r(l.c * local.x() - l.s * local.y(), l.s * local.x() + l.c * local.y());
+  const Eigen::Vector2d turned = Perp(r);
+  l.origin[0] = where.p[0] - r;
+  l.origin[1] = where.p[1] - theta[1] * turned;
+  l.origin[2] = where.p[2] - theta[2] * turned + theta[1] * theta[1] * r;
+}
+
+double PointSchedule::OnTurn(int link, double angle) const {
+  const double predicted = links_[link].theta[0];
+  return predicted + WrapAngle(angle - predicted);
+}
+
+void PointSchedule::PoseByTwoPoints(int link, const Eigen::Vector2d& local_from, const PointJet& from,
+                                    const Eigen::Vector2d& local_to, const PointJet& to) {
+  const Eigen::Vector2d d = to.p[0] - from.p[0], d1 = to.p[1] - from.p[1], d2 = to.p[2] - from.p[2];
+  const Eigen::Vector2d dl = local_to - local_from;
+  const double r2 = d.squaredNorm();
+  // theta = atan2(d) - atan2(dl), kept on the turn of the predicted angle
+  double theta[3];
+  theta[0] = OnTurn(link, std::atan2(Cross(dl, d), dl.dot(d)));
+  theta[1] = Cross(d, d1) / r2;
+  theta[2] = (Cross(d, d2) - 2.0 * d.dot(d1) * theta[1]) / r2;
+  // cos and sin of theta without trigonometry: d's direction turned back by dl's
+  const Eigen::Vector2d e = d / std::sqrt(r2), el = dl / dl.norm();
+  PoseByAngle(link, theta, e.x() * el.x() + e.y() * el.y(), e.y() * el.x() - e.x() * el.y(), local_from, from);
+}
+
+void PointSchedule::PoseDrive(const Stage& s, double input) {
+  const LinkJet& base = links_[s.base];
+  const double zero = mechanism_.drive.zero;
+  if (s.kind == Kind::kDriveR) {
+    const double turn = s.sign * (zero + input);
+    const double theta[3] = {OnTurn(s.link, base.theta[0] + turn), base.theta[1] + s.sign, base.theta[2]};
+    double st, ct;
+    SinCos(turn, st, ct);  // the one trigonometric call of a step: the input's
+    PoseByAngle(s.link, theta, base.c * ct - base.s * st, base.s * ct + base.c * st, s.link_point, GlobalPoint(s.base, s.base_point));
+    return;
+  }
+  // P: the block's point at zero + input along the guide's axis u from the guide's point
+  const Eigen::Vector2d u(base.c * s.axis.x() - base.s * s.axis.y(), base.s * s.axis.x() + base.c * s.axis.y());
+  const Eigen::Vector2d u1 = base.theta[1] * Perp(u), u2 = base.theta[2] * Perp(u) - base.theta[1] * base.theta[1] * u;
+  const double v = zero + input;
+  PointJet where = GlobalPoint(s.base, s.base_point);
+  where.p[0] += v * u;
+  where.p[2] += 2.0 * u1 + v * u2;
+  where.p[1] += u + v * u1;
+  const double theta[3] = {OnTurn(s.link, base.theta[0] + s.angle), base.theta[1], base.theta[2]};
+  PoseByAngle(s.link, theta, base.c * s.cos_turn - base.s * s.sin_turn, base.s * s.cos_turn + base.c * s.sin_turn, s.link_point, where);
+}
+
+// What a dyad's rows know before its Newton: the first row's posed hinge A and, for the second,
+// RR: the posed hinge B; RP: the slide line's normal n and the point X that J keeps the line's
+// offset from (both known: the block's angle is the guide's), with the block's angle.
+struct PointSchedule::DyadRows {
+  PointJet a, b, x;
+  Eigen::Vector2d n[3] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+  double block_theta[3] = {0, 0, 0};
+  double bc = 1.0, bs = 0.0;  // cos and sin of the block's angle
+  // at the solved J: the Jacobian's rows (unnormalised: J - A, and J - B or n), its determinant
+  Eigen::Vector2d r1, r2;
+  double det = 0.0;
+};
+
+void PointSchedule::PrepareDyad(const Stage& s, DyadRows& d) const {
+  d.a = GlobalPoint(s.anchor_a, s.anchor_a_point);
+  if (s.kind == Kind::kDyadRR) {
+    d.b = GlobalPoint(s.anchor_b, s.anchor_b_point);
+    return;
+  }
+  const LinkJet& guide = links_[s.anchor_b];
+  const double sign = s.block_is_guide_side ? -1.0 : 1.0;
+  d.block_theta[0] = OnTurn(s.b, guide.theta[0] + sign * s.angle);
+  d.block_theta[1] = guide.theta[1];
+  d.block_theta[2] = guide.theta[2];
+  // the block's angle is the guide's turned by the joint's: cos and sin by the sum formulas
+  d.bc = guide.c * s.cos_turn - guide.s * s.sin_turn;
+  d.bs = guide.s * s.cos_turn + guide.c * s.sin_turn;
+  const double t1 = d.block_theta[1], t2 = d.block_theta[2];
+  // the block's slide point relative to J, turned with the block
+  const Eigen::Vector2d local = s.b_at_anchor - s.b_at_j;
+  const Eigen::Vector2d w(d.bc * local.x() - d.bs * local.y(), d.bs * local.x() + d.bc * local.y());
+  const PointJet line = GlobalPoint(s.anchor_b, s.anchor_b_point);
+  d.x.p[0] = line.p[0] - w;
+  d.x.p[1] = line.p[1] - t1 * Perp(w);
+  d.x.p[2] = line.p[2] - (t2 * Perp(w) - t1 * t1 * w);
+  // the normal turns with the line's link: the guide, or the block when the line is on it
+  const double c = s.block_is_guide_side ? d.bc : guide.c, sn = s.block_is_guide_side ? d.bs : guide.s;
+  const Eigen::Vector2d axis(c * s.axis.x() - sn * s.axis.y(), sn * s.axis.x() + c * s.axis.y());
+  d.n[0] = Perp(axis);
+  d.n[1] = t1 * Perp(d.n[0]);
+  d.n[2] = t2 * Perp(d.n[0]) - t1 * t1 * d.n[0];
+}
+
+int PointSchedule::NewtonDyad(const Stage& s, DyadRows& d, Eigen::Vector2d& j, const StepOptions& options) const {
+  const double tolerance = options.tolerance * length_scale_;
+  const bool rr = s.kind == Kind::kDyadRR;
+  for (int it = 0;; ++it) {
+    d.r1 = j - d.a.p[0];
+    const double f1 = (d.r1.squaredNorm() - s.length_a * s.length_a) / (2.0 * s.length_a);
+    d.r2 = rr ? Eigen::Vector2d(j - d.b.p[0]) : d.n[0];
+    const double f2 = rr ? (d.r2.squaredNorm() - s.length_b * s.length_b) / (2.0 * s.length_b) : d.n[0].dot(j - d.x.p[0]);
+    d.det = Cross(d.r1, d.r2);
+    if (!std::isfinite(f1) || !std::isfinite(f2)) return -1;
+    const bool converged = std::max(std::abs(f1), std::abs(f2)) <= tolerance;
+    if (!converged && (it == options.max_iterations || d.det == 0.0)) return -1;
+    // the rows scaled back to r1 . dj = g1, r2 . dj = g2 (RR: [r1 / a; r2 / b], RP: [r1 / a; n])
+    const double g1 = -f1 * s.length_a, g2 = -f2 * (rr ? s.length_b : 1.0);
+    if (d.det != 0.0) j += Eigen::Vector2d(g1 * d.r2.y() - g2 * d.r1.y(), d.r1.x() * g2 - d.r2.x() * g1) / d.det;
+    if (converged) {
+      // One step more from within the tolerance puts the residual at roundoff: the derivatives
+      // carry the pose's error times 1/det, and near a singular position the tolerance's 1e-13 L
+      // would show in them (the general kernel's iterates differ from these).
+      d.r1 = j - d.a.p[0];
+      if (rr) d.r2 = j - d.b.p[0];
+      d.det = Cross(d.r1, d.r2);
+      return it;
+    }
+  }
+}
+
+PointSchedule::PointJet PointSchedule::DyadDerivatives(const Stage& s, const DyadRows& d, const Eigen::Vector2d& j) const {
+  // r1 . J' = r1 . A', r2 . J' = rhs (RR: r2 . B'; RP: n . X' - n' . (J - X)), and so for J''
+  // (the rows differentiated twice)
+  auto solve = [&](double g1, double g2) {
+    return Eigen::Vector2d((g1 * d.r2.y() - g2 * d.r1.y()) / d.det, (d.r1.x() * g2 - d.r2.x() * g1) / d.det);
+  };
+  const PointJet& a = d.a;
+  PointJet jj;
+  jj.p[0] = j;
+  if (s.kind == Kind::kDyadRR) {
+    const PointJet& b = d.b;
+    jj.p[1] = solve(d.r1.dot(a.p[1]), d.r2.dot(b.p[1]));
+    jj.p[2] = solve(d.r1.dot(a.p[2]) - (jj.p[1] - a.p[1]).squaredNorm(), d.r2.dot(b.p[2]) - (jj.p[1] - b.p[1]).squaredNorm());
+  } else {
+    const Eigen::Vector2d off = j - d.x.p[0];
+    jj.p[1] = solve(d.r1.dot(a.p[1]), d.n[0].dot(d.x.p[1]) - d.n[1].dot(off));
+    jj.p[2] = solve(d.r1.dot(a.p[2]) - (jj.p[1] - a.p[1]).squaredNorm(),
+                    d.n[0].dot(d.x.p[2]) - d.n[2].dot(off) - 2.0 * d.n[1].dot(jj.p[1] - d.x.p[1]));
+  }
+  return jj;
+}
+
+bool PointSchedule::SolveDyad(Stage& s, double h, const StepOptions& options) {
+  DyadRows d;
+  PrepareDyad(s, d);
+  const Eigen::Vector2d predicted = s.j.p[0] + h * s.j.p[1] + (0.5 * h * h) * s.j.p[2];
+  Eigen::Vector2d j = predicted;
+  const int it = NewtonDyad(s, d, j, options);
+  if (it < 0) return false;
+  const double norm = s.kind == Kind::kDyadRR ? d.r1.norm() * d.r2.norm() : d.r1.norm();
+  const double gauge = norm > 0.0 ? std::abs(d.det) / norm : 0.0;
+  const int sign = d.det > 0.0 ? 1 : -1;
+  if (!(gauge > std::max(kSingularGauge, options.min_gauge))) return false;
+  if (s.det_sign != 0 && sign != s.det_sign) return false;
+  if ((j - predicted).lpNorm<Eigen::Infinity>() > options.max_correction * length_scale_) return false;
+  const PointJet jj = DyadDerivatives(s, d, j);
+  // the first derivative must continue the predicted one (another branch changes it by O(1))
+  const Eigen::Vector2d tangent = s.j.p[1] + h * s.j.p[2];
+  if ((jj.p[1] - tangent).lpNorm<Eigen::Infinity>() > options.max_tangent_change * (length_scale_ + tangent.lpNorm<Eigen::Infinity>()))
+    return false;
+  iterations_ = std::max(iterations_, it);
+  s.det_sign = sign;
+  s.gauge = gauge;
+  s.j = jj;
+  PoseByTwoPoints(s.a, s.a_at_anchor, d.a, s.a_at_j, jj);
+  if (s.kind == Kind::kDyadRR) {
+    PoseByTwoPoints(s.b, s.b_at_anchor, d.b, s.b_at_j, jj);
+  } else {
+    PoseByAngle(s.b, d.block_theta, d.bc, d.bs, s.b_at_j, jj);
+  }
+  return true;
+}
+
+void PointSchedule::Load(double input, const Eigen::VectorXd& q, const Eigen::MatrixXd& series) {
+  for (int l = 0; l < static_cast<int>(links_.size()); ++l) {
+    LinkJet& jet = links_[l];
+    const int i = system_.CoordinateOf(l);
+    if (i < 0) {
+      jet = LinkJet();
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const double factor = k == 2 ? 2.0 : 1.0;  // the series holds d2/2
+      jet.origin[k] = factor * Eigen::Vector2d(series(i, k), series(i + 1, k));
+      jet.theta[k] = factor * series(i + 2, k);
+    }
+    jet.origin[0] = q.segment<2>(i);
+    jet.theta[0] = q(i + 2);
+    SinCos(jet.theta[0], jet.s, jet.c);
+  }
+  for (Stage& s : stages_) {
+    if (s.kind == Kind::kDyadRR || s.kind == Kind::kDyadRP) {
+      s.j = GlobalPoint(s.a, s.a_at_j);
+      const PointJet a = GlobalPoint(s.anchor_a, s.anchor_a_point);
+      const Eigen::Vector2d r1 = s.j.p[0] - a.p[0];
+      Eigen::Vector2d r2;
+      if (s.kind == Kind::kDyadRR) {
+        r2 = s.j.p[0] - GlobalPoint(s.anchor_b, s.anchor_b_point).p[0];
+      } else {
+        const LinkJet& line_link = links_[s.block_is_guide_side ? s.b : s.anchor_b];
+        r2 = Perp(Eigen::Vector2d(line_link.c * s.axis.x() - line_link.s * s.axis.y(), line_link.s * s.axis.x() + line_link.c * s.axis.y()));
+      }
+      s.det_sign = Cross(r1, r2) > 0.0 ? 1 : -1;
+      const double norm = r1.norm() * r2.norm();
+      s.gauge = norm > 0.0 ? std::abs(Cross(r1, r2)) / norm : 0.0;
+    }
+  }
+  input_ = input;
+}
+
+bool PointSchedule::Step(double input, const StepOptions& options) {
+  const double h = input - input_;
+  saved_ = links_;
+  for (Stage& s : stages_) {
+    s.j_saved = s.j;
+    s.det_sign_saved = s.det_sign;
+  }
+  // the angles' predictions: PoseByTwoPoints keeps each angle on the turn of its prediction
+  for (LinkJet& l : links_) l.theta[0] += h * l.theta[1] + 0.5 * h * h * l.theta[2];
+  iterations_ = 0;
+  for (Stage& s : stages_) {
+    bool ok = true;
+    if (s.kind == Kind::kDriveR || s.kind == Kind::kDriveP) {
+      PoseDrive(s, input);
+    } else {
+      ok = SolveDyad(s, h, options);
+    }
+    if (!ok) {
+      links_ = saved_;
+      for (Stage& t : stages_) {
+        t.j = t.j_saved;
+        t.det_sign = t.det_sign_saved;
+      }
+      return false;
+    }
+  }
+  input_ = input;
+  return true;
+}
+
+void PointSchedule::Pose(Eigen::VectorXd& q) const {
+  q.resize(system_.NumCoordinates());
+  for (int l = 0; l < static_cast<int>(links_.size()); ++l) {
+    const int i = system_.CoordinateOf(l);
+    if (i < 0) continue;
+    q.segment<2>(i) = links_[l].origin[0];
+    q(i + 2) = links_[l].theta[0];
+  }
+}
+
+void PointSchedule::Series(Eigen::MatrixXd& series) const {
+  for (int l = 0; l < static_cast<int>(links_.size()); ++l) {
+    const int i = system_.CoordinateOf(l);
+    if (i < 0) continue;
+    const LinkJet& jet = links_[l];
+    for (int k = 0; k < 3; ++k) {
+      const double factor = k == 2 ? 0.5 : 1.0;
+      series(i, k) = factor * jet.origin[k].x();
+      series(i + 1, k) = factor * jet.origin[k].y();
+      series(i + 2, k) = factor * jet.theta[k];
+    }
+  }
+}
+
+void PointSchedule::Trig(double* trig) const {
+  for (size_t l = 0; l < links_.size(); ++l) {
+    trig[2 * l] = links_[l].c;
+    trig[2 * l + 1] = links_[l].s;
+  }
+}
+
+int PointSchedule::DeterminantSign() const {
+  int sign = 1;
+  for (const Stage& s : stages_) {
+    if (s.kind == Kind::kDyadRR || s.kind == Kind::kDyadRP) sign *= s.det_sign;
+  }
+  return sign;
+}
+
+double PointSchedule::Gauge() const {
+  double gauge = 1.0;
+  for (const Stage& s : stages_) {
+    if (s.kind == Kind::kDyadRR || s.kind == Kind::kDyadRP) gauge = std::min(gauge, s.gauge);
+  }
+  return gauge;
+}
+
+}  // namespace koppel

@@ -1,0 +1,167 @@
+// The page of `koppel edit` in headless Debian Chromium (driven by playwright-core, as the view
+// page's test): its solver is koppel's kernel compiled to WebAssembly, so its numbers are checked
+// against the CLI's, the reference. For the seed mechanisms (000 slider-crank-offset,
+// deadcentre-slider-crank; 001 proportional-linkage; 002 deadcentre-crank-rocker; 003
+// mzc-crank-rocker) and two six-bars (watt-six-bar, stephenson-six-bar): window.koppel.sweep over
+// the file's range equals `koppel analyze --format json` (same columns, same rows, every cell to
+// 1e-9 relative, the same empty cells); toYaml() read back by the CLI gives the page's numbers;
+// no console error, no network request. For slider-crank-offset besides: set("e", 0.3) gives the
+// numbers of `koppel analyze --set e=0.3`; dragging the frame pivot A0 re-solves on the same
+// branch (the slider stays on the side of B the file's hint chose, and the CLI reads the
+// exported YAML to the page's numbers); a change that cannot assemble is refused and says so; the
+// screenshot shows the scheme (ink and colours inside the scheme's box).
+//
+// usage: node editor_page_test.mjs KOPPEL NODE_MODULES_DIR CHROMIUM CATALOG_DIR [SCREENSHOT.png]
+// (SCREENSHOT: where to write the page's screenshot, README's picture; see tools/edit/README).
+import { createRequire } from 'node:module';
+import { spawnSync, execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+
+const [koppel, npmDir, chromium, catalog, screenshotOut] = process.argv.slice(2);
+const require = createRequire(path.resolve(npmDir, 'package.json'));
+const { chromium: browserType } = require('playwright-core');
+const { PNG } = require('pngjs');
+
+// The page solves with the kernel's dense path (no BTF in WebAssembly), the CLI with its block
+// LU: the same Newton iterations to the same tolerance, rounding apart.
+const kTolerance = 1e-9;
+let passed = 0, failed = 0;
+function check(ok, what) {
+  if (ok) { passed++; } else { failed++; console.log('FAILED: ' + what); }
+}
+
+// `koppel analyze --format json` (exit 1 for a partial sweep still prints the table)
+function analyze(file, extra = []) {
+  const r = spawnSync(koppel, ['analyze', file, '--format', 'json', ...extra], { encoding: 'utf8', maxBuffer: 64 << 20 });
+  if (r.status !== 0 && r.status !== 1) throw new Error(`koppel analyze ${file}: exit ${r.status}: ${r.stderr}`);
+  return JSON.parse(r.stdout);
+}
+
+// The first difference between two tables beyond kTolerance, or '' when they agree.
+function difference(page, cli) {
+  if (JSON.stringify(page.columns) !== JSON.stringify(cli.columns)) return `columns ${page.columns} vs ${cli.columns}`;
+  if (page.rows.length !== cli.rows.length) return `${page.rows.length} rows vs ${cli.rows.length}`;
+  for (let r = 0; r < cli.rows.length; ++r) {
+    for (let c = 0; c < cli.columns.length; ++c) {
+      const a = page.rows[r][c], b = cli.rows[r][c];
+      if ((a === null) !== (b === null)) return `row ${r} ${cli.columns[c]}: ${a} vs ${b}`;
+      if (b !== null && !(Math.abs(a - b) <= kTolerance * Math.max(1, Math.abs(b)))) return `row ${r} ${cli.columns[c]}: ${a} vs ${b}`;
+    }
+  }
+  return '';
+}
+
+const work = fs.mkdtempSync(path.join(os.tmpdir(), 'koppel-edit-'));
+const flags = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+  '--disable-background-networking', '--disable-component-update', '--disable-sync'];
+const context = await browserType.launchPersistentContext(fs.mkdtempSync(path.join(work, 'profile-')),
+  { executablePath: chromium, headless: true, args: flags, viewport: { width: 1250, height: 1100 } });
+
+async function open(id) {
+  const html = path.join(work, id + '.html');
+  execFileSync(koppel, ['edit', path.join(catalog, id + '.yaml'), '-o', html]);
+  const page = await context.newPage();
+  const errors = [], requests = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  page.on('request', (r) => { if (!r.url().startsWith('file:') && !r.url().startsWith('data:') && !r.url().startsWith('blob:')) requests.push(r.url()); });
+  await page.route(/^(?!file:|data:|blob:)/, (route) => route.abort());
+  await page.goto('file://' + html);
+  await page.evaluate(() => window.koppel.ready);
+  return { page, errors, requests, html };
+}
+
+// The page's sweep over the CLI's range, against the CLI; then toYaml() read back by the CLI.
+async function compare(page, id, cli, what) {
+  const i = cli.input;
+  const table = await page.evaluate(([a, b, s]) => window.koppel.sweep(a, b, s, 2), [i.from, i.to, i.step]);
+  const diff = difference(table, cli);
+  check(diff === '', `${id} ${what}: the page's sweep differs from koppel analyze: ${diff}`);
+  const yaml = path.join(work, `${id}-${what.replace(/[^a-z0-9]+/gi, '_')}.yaml`);
+  fs.writeFileSync(yaml, await page.evaluate(() => window.koppel.toYaml()));
+  const back = analyze(yaml, ['--from', String(i.from), '--to', String(i.to), '--step', String(i.step)]);
+  const again = difference(table, back);
+  check(again === '', `${id} ${what}: koppel analyze of toYaml() differs from the page: ${again}`);
+  return table;
+}
+
+try {
+  const seeds = ['slider-crank-offset', 'deadcentre-slider-crank', 'proportional-linkage', 'deadcentre-crank-rocker',
+                 'mzc-crank-rocker', 'watt-six-bar', 'stephenson-six-bar'];
+  for (const id of seeds) {
+    const { page, errors, requests, html } = await open(id);
+    const file = path.join(catalog, id + '.yaml');
+    const cli = analyze(file);
+    const table = await compare(page, id, cli, 'as read');
+    console.log(`${id}: page ${(fs.statSync(html).size / 1024).toFixed(0)} KB, ${table.rows.length} rows x ${table.columns.length} columns compared`);
+
+    if (id === 'slider-crank-offset') {
+      // a parameter: the file's formulas (A0 at [0, -e]) evaluated again, as --set e=0.3
+      const set = await page.evaluate(() => window.koppel.set('e', 0.3));
+      check(set.ok, `${id}: set("e", 0.3) failed: ${set.message}`);
+      await compare(page, id, analyze(file, ['--set', 'e=0.3']), 'e=0.3');
+      const unknown = await page.evaluate(() => window.koppel.set('nope', 1));
+      check(!unknown.ok, `${id}: set of an unknown parameter was accepted`);
+
+      // a drag of the frame pivot A0 by 0.05: on the same branch (B stays right of A, s > 0 at
+      // phi = 0 as the hint chose), and the exported YAML carries that branch to the CLI
+      const before = await page.evaluate(() => window.koppel.sweep(0, 0, 1, 0).rows[0]);
+      const moved = await page.evaluate(() => window.koppel.moveJoint('A0', 0.05, -0.3));
+      check(moved.ok, `${id}: moving A0 failed: ${moved.message}`);
+      const after = await page.evaluate(() => window.koppel.sweep(0, 0, 1, 0).rows[0]);
+      const sIndex = cli.columns.indexOf('s');
+      check(after[sIndex] > 0 && Math.abs(after[sIndex] - before[sIndex]) < 0.2,
+        `${id}: after the drag s(0) = ${after[sIndex]} (before ${before[sIndex]}): not the same branch`);
+      const dragged = path.join(work, 'dragged.yaml');
+      fs.writeFileSync(dragged, await page.evaluate(() => window.koppel.toYaml()));
+      const back = analyze(dragged, ['--from', '0', '--to', '360', '--step', '1']);
+      const mine = await page.evaluate(() => window.koppel.sweep(0, 360, 1, 2));
+      check(difference(mine, back) === '', `${id}: the dragged mechanism read back differs: ${difference(mine, back)}`);
+
+      // a change that cannot assemble (e = 5: the crank's end stays 4 or more below the slide
+      // line, the coupler of 2.6 cannot reach it at any input): refused, said, and the numbers
+      // stay those of the last valid mechanism. (A drag cannot fail so: the dragged point moves
+      // on both its links, which fit together at the current pose by construction.)
+      const refused = await page.evaluate(() => window.koppel.set('e', 5));
+      check(!refused.ok && /cannot assemble/.test(refused.message), `${id}: an impossible change was not refused: ${JSON.stringify(refused)}`);
+      const kept = await page.evaluate(() => window.koppel.sweep(0, 360, 1, 2));
+      check(difference(kept, back) === '', `${id}: the numbers changed after a refused change`);
+      check((await page.evaluate(() => window.koppel.parameters().find((p) => p.name === 'e').value)) === 0.3,
+        `${id}: the refused e = 5 shows as the current value`);
+      const shown = await page.textContent('#message');
+      check(/cannot assemble/.test(shown), `${id}: the page does not say that it cannot assemble: '${shown}'`);
+      check(await page.evaluate(() => { document.getElementById('undo').click(); return window.koppel.state().error === false; }),
+        `${id}: undo after the drag failed`);
+
+      // the screenshot shows the scheme: links drawn, ink and colours inside its box
+      check(await page.locator('#scheme g.link line, #scheme g.link polygon').count() >= 2, `${id}: no links drawn`);
+      const png = PNG.sync.read(await page.locator('#scheme').screenshot());
+      let ink = 0;
+      const colours = new Set();
+      for (let i = 0; i < png.data.length; i += 4) {
+        const [r, g, b] = [png.data[i], png.data[i + 1], png.data[i + 2]];
+        if (r < 200 || g < 200 || b < 200) ink++;
+        colours.add((r >> 4) << 8 | (g >> 4) << 4 | (b >> 4));
+      }
+      check(ink / (png.width * png.height) > 0.01 && colours.size > 8,
+        `${id}: the scheme looks blank (${(100 * ink / (png.width * png.height)).toFixed(2)} % ink, ${colours.size} colours)`);
+      const heights = await page.evaluate(() => Array.from(document.querySelectorAll('.chart .u-over')).map((o) => o.getBoundingClientRect().height));
+      check(heights.length >= 2 && heights.every((h) => h >= 240), `${id}: charts' plot areas ${heights} (at least 240 px each)`);
+      if (screenshotOut) {
+        await page.evaluate(() => { window.koppel.set('e', 0.8); });
+        await page.$eval('#input-slider', (el) => { el.value = '60'; el.dispatchEvent(new Event('input')); });
+        await page.screenshot({ path: screenshotOut, fullPage: true });
+      }
+    }
+    check(errors.length === 0, `${id}: console errors: ${errors.join(' | ')}`);
+    check(requests.length === 0, `${id}: network requests: ${requests.join(' ')}`);
+    await page.close();
+  }
+} finally {
+  await context.close();
+  fs.rmSync(work, { recursive: true, force: true });
+}
+console.log(`${passed} passed, ${failed} failed`);
+process.exit(failed === 0 ? 0 : 1);

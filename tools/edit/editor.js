@@ -247,6 +247,10 @@
   function drawCharts() {
     plots.textContent = '';
     charts = [];
+    const key = document.createElement('div');
+    key.className = 'chart-title';
+    key.textContent = 'dashed lines: dead centres (green), limit points (red), branch points (purple); shaded: beyond the branch';
+    plots.appendChild(key);
     const t = solved.table, xs = t.rows.map((r) => r[0]);
     const marks = [];
     for (const s of t.singular_points) marks.push({ x: s.input, colour: s.kind === 'limit' ? '#c0392b' : '#7d3c98', label: s.kind });
@@ -300,7 +304,7 @@
     frame = i;
     slider.value = String(i);
     const row = solved.table.rows[i];
-    $('input-value').textContent = doc.input.name + ' = ' + row[0] + ' ' + doc.input.unit + (row[row.length - 1] ? ' (singular)' : '');
+    $('input-value').textContent = doc.input.name + ' = ' + Number(row[0].toPrecision(10)) + ' ' + doc.input.unit + (row[row.length - 1] ? ' (singular)' : '');
     drawScheme();
     for (const c of charts) {
       c.cursor.style.left = c.u.valToPos(row[0], 'x') + 'px';

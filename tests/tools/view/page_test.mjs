@@ -11,6 +11,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
+import { inkOf } from '../page_ink.mjs';
 
 const [koppel, npmDir, chromium, catalog] = process.argv.slice(2);
 const require = createRequire(path.resolve(npmDir, 'package.json'));
@@ -55,16 +56,8 @@ try {
     check(first !== second, `${id}: the ${link} did not move between two frames (${first})`);
 
     // the screenshot is not blank: many pixels that are not the background, in several colours
-    const png = PNG.sync.read(await page.screenshot());
-    let ink = 0;
-    const colours = new Set();
-    for (let i = 0; i < png.data.length; i += 4) {
-      const [r, g, b] = [png.data[i], png.data[i + 1], png.data[i + 2]];
-      if (r < 240 || g < 240 || b < 240) ink++;
-      colours.add((r >> 4) << 8 | (g >> 4) << 4 | (b >> 4));
-    }
-    const share = ink / (png.width * png.height);
-    check(share > 0.02 && colours.size > 20, `${id}: screenshot looks blank (${(100 * share).toFixed(2)} % ink, ${colours.size} colours)`);
+    const { share, colours } = inkOf(PNG.sync.read(await page.screenshot()), 240);
+    check(share > 0.02 && colours > 20, `${id}: screenshot looks blank (${(100 * share).toFixed(2)} % ink, ${colours} colours)`);
 
     // issue 22 item 15: the charts' plot areas were about 100 px tall; at least 240 px
     const kMinPlotHeight = 240;

@@ -1,7 +1,6 @@
 // What the page's module leaves out, said where a call would need it: muparser (formulas are
 // evaluated by the page, editor.js), yaml-cpp (the page holds the mechanism as JSON) and
-// SuiteSparse's BTF. The API's Model refers to them; in the page no call reaches them but the
-// parameter set's plain values.
+// SuiteSparse's BTF. The API's Model refers to them; in the page no call reaches them.
 #include "koppel/catalog/mechanism_file.hpp"
 #include "koppel/catalog/mechanism_source.hpp"
 #include "koppel/core/expression.hpp"
@@ -16,20 +15,7 @@ namespace {
 }
 }  // namespace
 
-// The parameter set keeps the page's values (the mechanism file's `parameters`, for ToYaml).
-ParameterSet::ParameterSet() = default;
-ParameterSet::~ParameterSet() = default;
-ParameterSet::ParameterSet(const ParameterSet& other) = default;
-ParameterSet& ParameterSet::operator=(const ParameterSet& other) = default;
-void ParameterSet::DefineValue(const std::string& name, double value) {
-  const auto [it, added] = index_.emplace(name, values_.size());
-  if (added) {
-    values_.emplace_back(name, value);
-  } else {
-    values_[it->second].second = value;
-  }
-}
-bool ParameterSet::Has(const std::string& name) const { return index_.count(name) > 0; }
+// The parameter set's values are core/src/parameter_set.cpp's; evaluating a formula is the page's.
 Expected<double> ParameterSet::Evaluate(const std::string&) const {
   return Expected<double>::Error("formulas are evaluated by the page, not by its module");
 }

@@ -8,7 +8,7 @@
 // no console error, no network request. For slider-crank-offset besides: set("e", 0.3) gives the
 // numbers of `koppel analyze --set e=0.3`; dragging the frame pivot A0 re-solves on the same
 // branch (the slider stays on the side of B the file's hint chose, and the CLI reads the
-// exported YAML to the page's numbers); a change that cannot assemble is refused and says so; the
+// exported YAML to the page's numbers), also with the pointer; the exports (YAML, SVG, PNG) download; a change that cannot assemble is refused and says so; the
 // screenshot shows the scheme (ink and colours inside the scheme's box).
 //
 // usage: node editor_page_test.mjs KOPPEL NODE_MODULES_DIR CHROMIUM CATALOG_DIR [SCREENSHOT.png]
@@ -58,7 +58,7 @@ const work = fs.mkdtempSync(path.join(os.tmpdir(), 'koppel-edit-'));
 const flags = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
   '--disable-background-networking', '--disable-component-update', '--disable-sync'];
 const context = await browserType.launchPersistentContext(fs.mkdtempSync(path.join(work, 'profile-')),
-  { executablePath: chromium, headless: true, args: flags, viewport: { width: 1250, height: 1100 } });
+  { executablePath: chromium, headless: true, args: flags, viewport: { width: 1250, height: 1100 }, acceptDownloads: true });
 
 async function open(id) {
   const html = path.join(work, id + '.html');
@@ -143,6 +143,22 @@ try {
       check(share > 0.01 && colours > 8, `${id}: the scheme looks blank (${(100 * share).toFixed(2)} % ink, ${colours} colours)`);
       const heights = await page.evaluate(() => Array.from(document.querySelectorAll('.chart .u-over')).map((o) => o.getBoundingClientRect().height));
       check(heights.length >= 2 && heights.every((h) => h >= 240), `${id}: charts' plot areas ${heights} (at least 240 px each)`);
+      // the pointer: A0's handle dragged 12 px to the right re-solves (a user's drag)
+      const box = await page.locator('#scheme circle[data-joint="A0"]').boundingBox();
+      await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+      await page.mouse.down();
+      await page.mouse.move(box.x + box.width / 2 + 12, box.y + box.height / 2, { steps: 3 });
+      await page.mouse.up();
+      const dragState = await page.evaluate(() => window.koppel.state());
+      check(!dragState.error && /moved A0/.test(dragState.message), `${id}: the pointer drag of A0: '${dragState.message}'`);
+      // the exports: YAML the CLI reads, an SVG, a PNG
+      for (const [button, test] of [['#export-yaml', (b) => /links:/.test(b.toString())],
+                                    ['#export-svg', (b) => /^<svg/.test(b.toString())],
+                                    ['#export-png', (b) => b.subarray(1, 4).toString() === 'PNG']]) {
+        const [download] = await Promise.all([page.waitForEvent('download'), page.click(button)]);
+        const bytes = fs.readFileSync(await download.path());
+        check(bytes.length > 100 && test(bytes), `${id}: ${button} gave ${bytes.length} bytes: ${bytes.subarray(0, 40)}`);
+      }
       if (screenshotOut) {
         await page.evaluate(() => { window.koppel.set('e', 0.8); });
         await page.$eval('#input-slider', (el) => { el.value = '60'; el.dispatchEvent(new Event('input')); });

@@ -8,7 +8,8 @@
 // no console error, no network request. For slider-crank-offset besides: set("e", 0.3) gives the
 // numbers of `koppel analyze --set e=0.3`; dragging the frame pivot A0 re-solves on the same
 // branch (the slider stays on the side of B the file's hint chose, and the CLI reads the
-// exported YAML to the page's numbers), also with the pointer; the exports (YAML, SVG, PNG) download; a change that cannot assemble is refused and says so; the
+// exported YAML to the page's numbers), also with the pointer, and so does the crank-rocker's
+// when its rocker pivot B0 is dragged; the exports (YAML, SVG, PNG) download; a change that cannot assemble is refused and says so; the
 // screenshot shows the scheme (ink and colours inside the scheme's box).
 //
 // usage: node editor_page_test.mjs KOPPEL NODE_MODULES_DIR CHROMIUM CATALOG_DIR [SCREENSHOT.png]
@@ -121,10 +122,10 @@ try {
 
       // a drag of the frame pivot A0 by 0.05: on the same branch (B stays right of A, s > 0 at
       // phi = 0 as the hint chose), and the exported YAML carries that branch to the CLI
-      const before = await page.evaluate(() => window.koppel.sweep(0, 0, 1, 0).rows[0]);
+      const before = await page.evaluate(() => window.koppel.sweep(0, 0, 1, 2).rows[0]);
       const moved = await page.evaluate(() => window.koppel.moveJoint('A0', 0.05, -0.3));
       check(moved.ok, `${id}: moving A0 failed: ${moved.message}`);
-      const after = await page.evaluate(() => window.koppel.sweep(0, 0, 1, 0).rows[0]);
+      const after = await page.evaluate(() => window.koppel.sweep(0, 0, 1, 2).rows[0]);
       const sIndex = cli.columns.indexOf('s');
       check(after[sIndex] > 0 && Math.abs(after[sIndex] - before[sIndex]) < 0.2,
         `${id}: after the drag s(0) = ${after[sIndex]} (before ${before[sIndex]}): not the same branch`);
@@ -164,6 +165,29 @@ try {
         await page.$eval('#input-slider', (el) => { el.value = '60'; el.dispatchEvent(new Event('input')); });
         await page.screenshot({ path: screenshotOut, fullPage: true });
       }
+    }
+    if (id === 'mzc-crank-rocker') {
+      // a four-bar has two assembly branches at every input (the rocker's psi far apart): a drag
+      // of the rocker's pivot B0 by 1 % of the frame keeps psi at the current input within a
+      // degree of where it was, on the branch shown, and the exported YAML keeps that branch
+      const psi = cli.columns.indexOf('psi');
+      const input = await page.evaluate(() => window.koppel.state().input);
+      const at = async () => (await page.evaluate((x) => window.koppel.sweep(x, x, 1, 2), input)).rows[0][psi];
+      const before = await at();
+      const b0 = await page.evaluate(() => {
+        const m = JSON.parse(document.getElementById('koppel-document').textContent).mechanism;
+        const p = m.links.find((l) => l.frame).points.find((q) => q.name === 'B0');
+        return [p.x, p.y];
+      });
+      const moved = await page.evaluate(([x, y]) => window.koppel.moveJoint('B0', x * 1.01, y), b0);
+      check(moved.ok, `${id}: moving B0 failed: ${moved.message}`);
+      const after = await at();
+      check(Math.abs(after - before) < 1, `${id}: psi at ${input} went from ${before} to ${after} deg: another branch`);
+      const yaml = path.join(work, 'rocker-dragged.yaml');
+      fs.writeFileSync(yaml, await page.evaluate(() => window.koppel.toYaml()));
+      const mine = await page.evaluate(() => window.koppel.sweep(0, 360, 1, 2));
+      const diff = difference(mine, analyze(yaml, ['--from', '0', '--to', '360', '--step', '1']));
+      check(diff === '', `${id}: the dragged four-bar read back differs: ${diff}`);
     }
     check(errors.length === 0, `${id}: console errors: ${errors.join(' | ')}`);
     check(requests.length === 0, `${id}: network requests: ${requests.join(' ')}`);

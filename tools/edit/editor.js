@@ -209,6 +209,9 @@
     if (!drag) return;
     const r = svg.getBoundingClientRect();
     drag.to = unpx(e.clientX - r.left, e.clientY - r.top);
+    // the handle follows the pointer; the mechanism is solved when it is let go
+    const handle = svg.querySelector('circle[data-joint="' + state.mechanism.joints[drag.joint].name + '"]');
+    if (handle) { handle.setAttribute('cx', e.clientX - r.left); handle.setAttribute('cy', e.clientY - r.top); }
   });
   svg.addEventListener('pointerup', () => {
     if (drag && drag.to) moveJoint(state.mechanism.joints[drag.joint].name, drag.to[0], drag.to[1]);

@@ -6,20 +6,20 @@
 // the file's range equals `koppel analyze --format json` (same columns, same rows, every cell to
 // 1e-9 relative, the same empty cells); toYaml() read back by the CLI gives the page's numbers;
 // no console error, no network request. For slider-crank-offset besides: set("e", 0.3) gives the
-// numbers of `koppel analyze --set e=0.3`; dragging the frame pivot A0 re-solves on the same
-// branch (the slider stays on the side of B the file's hint chose, and the CLI reads the
-// exported YAML to the page's numbers), also with the pointer, and so does the crank-rocker's
-// when its rocker pivot B0 is dragged; the exports (YAML, SVG, PNG) download; a change that cannot assemble is refused and says so; the
-// screenshot shows the scheme (ink and colours inside the scheme's box).
+// numbers of `koppel analyze --set e=0.3`; a change that cannot assemble (e = 5) is refused and
+// says so; dragging the frame pivot A0 (through the API and with the pointer) re-solves on the
+// same branch, and the CLI reads the exported YAML to the page's numbers, as for the
+// crank-rocker's rocker pivot B0 dragged; the exports (YAML, SVG, PNG) download; the screenshot
+// shows the scheme (ink and colours inside the scheme's box).
 //
 // usage: node editor_page_test.mjs KOPPEL NODE_MODULES_DIR CHROMIUM CATALOG_DIR [SCREENSHOT.png]
-// (SCREENSHOT: where to write the page's screenshot, README's picture; see tools/edit/README).
+// (SCREENSHOT: where to write the page's screenshot, README's picture, README "The editor page").
 import { createRequire } from 'node:module';
 import { spawnSync, execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { inkOf } from '../page_ink.mjs';
+import { checker, launch, watch, checkQuiet, inkOf } from '../page_harness.mjs';
 
 const [koppel, npmDir, chromium, catalog, screenshotOut] = process.argv.slice(2);
 const require = createRequire(path.resolve(npmDir, 'package.json'));
@@ -29,10 +29,7 @@ const { PNG } = require('pngjs');
 // The page solves with the kernel's dense path (no BTF in WebAssembly), the CLI with its block
 // LU: the same Newton iterations to the same tolerance, rounding apart.
 const kTolerance = 1e-9;
-let passed = 0, failed = 0;
-function check(ok, what) {
-  if (ok) { passed++; } else { failed++; console.log('FAILED: ' + what); }
-}
+const { check, finish } = checker();
 
 // `koppel analyze --format json` (exit 1 for a partial sweep still prints the table)
 function analyze(file, extra = []) {
@@ -56,23 +53,16 @@ function difference(page, cli) {
 }
 
 const work = fs.mkdtempSync(path.join(os.tmpdir(), 'koppel-edit-'));
-const flags = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-  '--disable-background-networking', '--disable-component-update', '--disable-sync'];
-const context = await browserType.launchPersistentContext(fs.mkdtempSync(path.join(work, 'profile-')),
-  { executablePath: chromium, headless: true, args: flags, viewport: { width: 1250, height: 1100 }, acceptDownloads: true });
+const context = await launch(browserType, chromium, work, fs, path, { viewport: { width: 1250, height: 1100 }, acceptDownloads: true });
 
 async function open(id) {
   const html = path.join(work, id + '.html');
   execFileSync(koppel, ['edit', path.join(catalog, id + '.yaml'), '-o', html]);
   const page = await context.newPage();
-  const errors = [], requests = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('pageerror', (e) => errors.push(String(e)));
-  page.on('request', (r) => { if (!r.url().startsWith('file:') && !r.url().startsWith('data:') && !r.url().startsWith('blob:')) requests.push(r.url()); });
-  await page.route(/^(?!file:|data:|blob:)/, (route) => route.abort());
+  const watched = await watch(page);
   await page.goto('file://' + html);
   await page.evaluate(() => window.koppel.ready);
-  return { page, errors, requests, html };
+  return { page, watched, html };
 }
 
 // The page's sweep over the CLI's range, against the CLI; then toYaml() read back by the CLI.
@@ -93,7 +83,7 @@ try {
   const seeds = ['slider-crank-offset', 'deadcentre-slider-crank', 'proportional-linkage', 'deadcentre-crank-rocker',
                  'mzc-crank-rocker', 'watt-six-bar', 'stephenson-six-bar'];
   for (const id of seeds) {
-    const { page, errors, requests, html } = await open(id);
+    const { page, watched, html } = await open(id);
     const file = path.join(catalog, id + '.yaml');
     const cli = analyze(file);
     const table = await compare(page, id, cli, 'as read');
@@ -189,13 +179,11 @@ try {
       const diff = difference(mine, analyze(yaml, ['--from', '0', '--to', '360', '--step', '1']));
       check(diff === '', `${id}: the dragged four-bar read back differs: ${diff}`);
     }
-    check(errors.length === 0, `${id}: console errors: ${errors.join(' | ')}`);
-    check(requests.length === 0, `${id}: network requests: ${requests.join(' ')}`);
+    checkQuiet(check, id, watched);
     await page.close();
   }
 } finally {
   await context.close();
   fs.rmSync(work, { recursive: true, force: true });
 }
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed === 0 ? 0 : 1);
+finish();

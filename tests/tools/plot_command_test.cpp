@@ -122,6 +122,10 @@ TEST_CASE("edit writes one self-contained editor page, or says that this build h
     CHECK_THAT(page, Catch::Contains("id=\"koppel-document\"") && Catch::Contains("\"formula\":\"0.3\"") &&
                          Catch::Contains("KoppelModule") && Catch::Contains("Apache License"));
     CHECK(page.find(" href=") == std::string::npos);  // nothing to fetch
+    // a file that does not assemble as given: the page is written (its sliders can fix it), exit 1
+    const bad = test::RunKoppel("edit " + test::CatalogEntryPath("slider-crank-offset") + " --set e=9 -o " + out);
+    CHECK(bad.exit_code == 1);
+    CHECK_THAT(bad.err, Catch::Contains("the page says so"));
   }
   // bad input as every command: an unknown parameter, a file that is not there
   CHECK(test::RunKoppel("edit " + test::CatalogEntryPath("slider-crank-offset") + " --set nope=1 -o " + out).exit_code == 2);

@@ -24,6 +24,13 @@ void Run(const Args& args) {
     throw Exit{kExitFailed};
   }
   WriteOutput(args.out, r.svg);
+  // the page is written either way (its sliders can fix the file); a sweep of the file's range
+  // that does not reach every sample is said here too, and the exit code says it
+  const SweepTable t = model.Sweep(0);
+  if (!t.record.complete()) {
+    Complain(args.file + ": " + (t.message.empty() ? t.sweep_status : t.message) + " (the page says so)");
+    throw Exit{kExitFailed};
+  }
 }
 
 }  // namespace
@@ -42,6 +49,7 @@ void AddEditCommand(CLI::App& app) {
       "Export the edited mechanism as YAML (koppel reads it back to the same numbers), the scheme as SVG or PNG.\n"
       "Scripting: window.koppel.ready (a Promise), sweep(from, to, step, order) -> {columns, rows} as\n"
       "`koppel analyze --format json`, set(name, value), toYaml().\n"
+      "The page is written also when the file's sweep does not reach every sample; the exit code is then 1.\n"
       "Example: koppel edit catalog/entries/slider-crank-offset.yaml -o editor.html");
   cmd->add_option("file", args->file, "Mechanism YAML file")->required();
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE (the page starts from it)");

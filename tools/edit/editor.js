@@ -17,6 +17,7 @@
 
   let module = null;
   let state = null;      // {mechanism, parameters, formulas}: the last state that solved
+  let pending = null;    // the file's state when it did not solve: the sliders start from it
   let solved = null;     // its sweep: {table, frames, deadCentres}
   let undo = [];
   let frame = 0, playing = false, last = null, carry = 0;
@@ -107,8 +108,8 @@
     }
     if (why) {
       if (state) call('koppel_load', ['string'], [JSON.stringify(state.mechanism)]);  // the module back to the last valid model
-      say(what + ': cannot assemble (' + why + '); the page keeps the last valid pose', true);
-      if (state) drawParameters();  // the sliders back to the values that solved
+      say((what || 'the file as read') + ': cannot assemble (' + why + ')' + (state ? '; the page keeps the last valid pose' : ''), true);
+      if (state || pending) drawParameters();  // the sliders back to the values that solved
       return false;
     }
     if (state) undo.push(state);
@@ -331,7 +332,7 @@
   function drawParameters() {
     const table = $('parameters');
     table.textContent = '';
-    for (const p of state.parameters) {
+    for (const p of (state || pending).parameters) {
       const tr = document.createElement('tr');
       const span = Math.max(Math.abs(p.value), 1);
       tr.innerHTML = '<td>' + p.name + '</td><td><input type="range"></td><td><input type="number"></td>';
@@ -417,9 +418,10 @@
     // a parameter to a value, the file's formulas evaluated again; {ok, message}
     set(name, value) {
       if (!formulasTrusted) return { ok: false, message: message.textContent };
-      if (!state.parameters.some((p) => p.name === name)) return { ok: false, message: "'" + name + "' is not a parameter of this file" };
+      const base = state || pending;
+      if (!base.parameters.some((p) => p.name === name)) return { ok: false, message: "'" + name + "' is not a parameter of this file" };
       let next;
-      try { next = evaluated(state, name, +value); } catch (e) { say(name + ' = ' + value + ': ' + e.message, true); return { ok: false, message: e.message }; }
+      try { next = evaluated(base, name, +value); } catch (e) { say(name + ' = ' + value + ': ' + e.message, true); return { ok: false, message: e.message }; }
       const ok = adopt(next, name + ' = ' + value, true);
       return { ok: ok, message: message.textContent };
     },
@@ -429,8 +431,10 @@
       if (!y.ok) throw new Error(y.message);
       return y.yaml;
     },
-    parameters() { return state.parameters.map((p) => ({ name: p.name, value: p.value })); },
-    state() { return { input: solved.table.rows[frame][0], frame: frame, message: message.textContent, error: message.className === 'error' }; },
+    parameters() { return (state || pending).parameters.map((p) => ({ name: p.name, value: p.value })); },
+    state() {
+      return { input: solved ? solved.table.rows[frame][0] : null, frame: frame, message: message.textContent, error: message.className === 'error' };
+    },
     ready: null,
   };
   window.koppel = api;
@@ -440,7 +444,12 @@
     const why = checkFormulas();
     if (why) { formulasTrusted = false; }
     const first = { mechanism: doc.mechanism, parameters: doc.parameters, formulas: doc.formulas };
-    if (!adopt(first, '', true)) throw new Error(message.textContent);
+    if (!adopt(first, '', true)) {
+      // nothing to show but the message: the sliders stay, so that a parameter can fix it
+      pending = first;
+      drawParameters();
+      return api;
+    }
     const notes = [];
     if (why) notes.push('the parameter sliders are off: the page evaluates a formula otherwise than koppel (' + why + ')');
     if (doc.has_loads) notes.push("the file's masses and loads are not part of the page (its YAML export leaves them out)");

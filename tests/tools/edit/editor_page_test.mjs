@@ -10,12 +10,13 @@
 // says so; dragging the frame pivot A0 (through the API and with the pointer) re-solves on the
 // same branch, and the CLI reads the exported YAML to the page's numbers, as for the
 // crank-rocker's rocker pivot B0 dragged; the exports (YAML, SVG, PNG) download; the screenshot
-// shows the scheme (ink and colours inside the scheme's box).
+// shows the scheme (ink and colours inside the scheme's box). A file that does not assemble
+// (--set e=9): koppel edit exits 1, the page says so, shows no number, and a slider fixes it.
 //
 // usage: node editor_page_test.mjs KOPPEL NODE_MODULES_DIR CHROMIUM CATALOG_DIR [SCREENSHOT.png]
 // (SCREENSHOT: where to write the page's screenshot, README's picture, README "The editor page").
 import { createRequire } from 'node:module';
-import { spawnSync, execFileSync } from 'node:child_process';
+import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -55,9 +56,11 @@ function difference(page, cli) {
 const work = fs.mkdtempSync(path.join(os.tmpdir(), 'koppel-edit-'));
 const context = await launch(browserType, chromium, work, fs, path, { viewport: { width: 1250, height: 1100 }, acceptDownloads: true });
 
-async function open(id) {
+// The page of catalog entry `id` (with `extra` flags), koppel edit's exit code checked.
+async function open(id, extra = [], exit = 0) {
   const html = path.join(work, id + '.html');
-  execFileSync(koppel, ['edit', path.join(catalog, id + '.yaml'), '-o', html]);
+  const r = spawnSync(koppel, ['edit', path.join(catalog, id + '.yaml'), ...extra, '-o', html], { encoding: 'utf8' });
+  check(r.status === exit, `koppel edit ${id} ${extra.join(' ')}: exit ${r.status}, expected ${exit}: ${r.stderr}`);
   const page = await context.newPage();
   const watched = await watch(page);
   await page.goto('file://' + html);
@@ -180,6 +183,24 @@ try {
       check(diff === '', `${id}: the dragged four-bar read back differs: ${diff}`);
     }
     checkQuiet(check, id, watched);
+    await page.close();
+  }
+
+  // a file that does not assemble as given (e = 9: the coupler cannot reach the slide line):
+  // koppel edit writes the page and exits 1; the page says so, shows no numbers, and its sliders
+  // fix it (e = 0.8: the file's own numbers)
+  {
+    const id = 'slider-crank-offset';
+    const { page, watched } = await open(id, ['--set', 'e=9'], 1);
+    const s = await page.evaluate(() => window.koppel.state());
+    check(s.error && /cannot assemble/.test(s.message) && s.input === null, `${id} --set e=9: the page says '${s.message}'`);
+    check(await page.locator('#readout tr').count() === 0, `${id} --set e=9: numbers shown for a mechanism that did not assemble`);
+    const fixed = await page.evaluate(() => window.koppel.set('e', 0.8));
+    check(fixed.ok, `${id} --set e=9, then e = 0.8: ${fixed.message}`);
+    const cli = analyze(path.join(catalog, id + '.yaml'));
+    await compare(page, id, cli, 'fixed by the slider');
+    // an unassemblable file logs its failure on the page, not in the console
+    checkQuiet(check, id + ' --set e=9', watched);
     await page.close();
   }
 } finally {

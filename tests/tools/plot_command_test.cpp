@@ -123,7 +123,7 @@ TEST_CASE("edit writes one self-contained editor page, or says that this build h
                          Catch::Contains("KoppelModule") && Catch::Contains("Apache License"));
     CHECK(page.find(" href=") == std::string::npos);  // nothing to fetch
     // a file that does not assemble as given: the page is written (its sliders can fix it), exit 1
-    const bad = test::RunKoppel("edit " + test::CatalogEntryPath("slider-crank-offset") + " --set e=9 -o " + out);
+    const test::RunResult bad = test::RunKoppel("edit " + test::CatalogEntryPath("slider-crank-offset") + " --set e=9 -o " + out);
     CHECK(bad.exit_code == 1);
     CHECK_THAT(bad.err, Catch::Contains("the page says so"));
   }

@@ -83,6 +83,7 @@ class MechanismReader {
             used[i] = overridden = true;
           }
         }
+        out_.formulas.emplace_back(path, *formula);
         if (const Expected<double> v = out_.parameters.Define(e.key, *formula); !v) {
           // an override's error belongs to the command line, the file's to its line; a formula
           // that fails because it names a failed parameter is that one's error, not a second one
@@ -431,8 +432,10 @@ MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file
   out.path = file_name;
   YamlReader reader(file_name, &out.parameters);
   reader.set_fallback(YAML::Mark());  // line 1, column 1 for problems without a place
+  reader.set_formula_log(&out.formulas);
   try {
     MechanismReader(reader, out).Read(root, overrides);
+    reader.set_formula_log(nullptr);  // the card's formulas do not make the model
     if (reader.diagnostics().empty()) {
       for (const std::string& problem : CheckConsistency(out.mechanism)) reader.diagnostics().push_back({file_name, 1, 1, "", problem});
     }

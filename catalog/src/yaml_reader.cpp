@@ -135,6 +135,7 @@ std::optional<double> YamlReader::Number(const YAML::Node& node, const std::stri
     Error(node, path, "expected a number or formula, found " + NodeKind(node));
     return std::nullopt;
   }
+  if (formula_log_) formula_log_->emplace_back(path, node.Scalar());
   const Expected<double> value = parameters.Evaluate(node.Scalar());
   if (!value) {
     if (!NamesFailedParameter(node.Scalar())) Error(node, path, value.error());

@@ -58,6 +58,8 @@ class YamlReader {
   void MarkFailedParameter(const std::string& name) { failed_parameters_.push_back(name); }
   bool NamesFailedParameter(const std::string& formula) const;
   void set_fallback(const YAML::Mark& mark) { fallback_ = mark; }
+  // Where Number records each formula it evaluates, with its key path (null: nowhere).
+  void set_formula_log(std::vector<std::pair<std::string, std::string>>* log) { formula_log_ = log; }
 
  private:
   std::string file_;
@@ -65,6 +67,7 @@ class YamlReader {
   std::vector<std::string> failed_parameters_;
   std::vector<Diagnostic> diagnostics_;
   YAML::Mark fallback_ = YAML::Mark::null_mark();
+  std::vector<std::pair<std::string, std::string>>* formula_log_ = nullptr;
 };
 
 // Joins a key path: Child("joints", "A") = "joints.A"; Index("links", 1) = "links[1]".

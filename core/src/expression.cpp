@@ -36,26 +36,6 @@ mu::Parser& SharedParser() {
 
 }  // namespace
 
-ParameterSet::ParameterSet() = default;
-ParameterSet::~ParameterSet() = default;
-ParameterSet::ParameterSet(const ParameterSet& other) = default;
-ParameterSet& ParameterSet::operator=(const ParameterSet& other) = default;
-
-bool ParameterSet::ValidName(const std::string& name) {
-  if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;
-  for (char c : name) {
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
-  }
-  return name != "pi" && name != "deg";
-}
-
-bool ParameterSet::Has(const std::string& name) const { return index_.count(name) > 0; }
-
-double ParameterSet::Value(const std::string& name) const {
-  const auto it = index_.find(name);
-  return it == index_.end() ? std::nan("") : values_[it->second].second;
-}
-
 // muparser asks for each name a formula uses, once per formula: the cost of a formula is its
 // own length, never the number of parameters defined before it.
 double* ParameterSet::BindName(const char* name, void* data) {
@@ -98,15 +78,6 @@ Expected<double> ParameterSet::Evaluate(const std::string& formula) const {
   parser.ClearVar();
   parser.SetVarFactory(nullptr, nullptr);
   return result;
-}
-
-void ParameterSet::DefineValue(const std::string& name, double value) {
-  const auto [it, added] = index_.emplace(name, values_.size());
-  if (added) {
-    values_.emplace_back(name, value);
-  } else {
-    values_[it->second].second = value;
-  }
 }
 
 Expected<std::vector<double>> ParameterSet::EvaluateList(const std::string& text, size_t count, const std::string& form) const {

@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include <cmath>
 
 namespace koppel::mechanism_file_test {
@@ -143,6 +145,19 @@ TEST_CASE("--set overrides a parameter and what depends on it", "[reader]") {
   CHECK_THAT(d.at(0).message, Catch::Contains("'l9' is not a parameter"));
   CHECK_THROWS_AS(ParseAssignment("l2"), InputError);
   CHECK(ParseAssignment("e=0.8").second == "0.8");
+}
+
+TEST_CASE("every formula of the model part is kept with its key path (the editor page's)", "[reader]") {
+  const MechanismFile f = ParseMechanismText(kGood, "mech.yaml", {{"l2", "5"}});
+  const auto has = [&](const std::string& path, const std::string& formula) {
+    return std::find(f.formulas.begin(), f.formulas.end(), std::make_pair(path, formula)) != f.formulas.end();
+  };
+  CHECK(has("parameters.l1", "1"));
+  CHECK(has("parameters.l2", "5"));  // the override, as it was evaluated
+  CHECK(has("links.coupler.points.K[0]", "l2*cos(kappa)"));
+  CHECK(has("links.frame.points.B0[0]", "4"));
+  // in reading order: the parameters first
+  CHECK(f.formulas.front().first == "parameters.l1");
 }
 
 TEST_CASE("bad input: each problem with its line and a clear message", "[reader]") {

@@ -108,4 +108,28 @@ TEST_CASE("view writes one self-contained page", "[cli]") {
   CHECK(page.find(" href=") == std::string::npos);
 }
 
+// The editor page (its numbers are checked in a browser by tests/tools/edit/editor_page_test.mjs).
+TEST_CASE("edit writes one self-contained editor page, or says that this build has none", "[cli]") {
+  test::TempDir dir;
+  const std::string out = (dir.path() / "editor.html").string();
+  const test::RunResult r = test::RunKoppel("edit " + test::CatalogEntryPath("slider-crank-offset") + " --set e=0.3 -o " + out);
+  if (r.exit_code == 1 && r.err.find("built without emscripten") != std::string::npos) {
+    WARN("this build has no editor page (no em++)");
+  } else {
+    REQUIRE(r.exit_code == 0);
+    const std::string page = test::ReadText(out);
+    // the document with the override as the formula of e, the module, math.js with its licence
+    CHECK_THAT(page, Catch::Contains("id=\"koppel-document\"") && Catch::Contains("\"formula\":\"0.3\"") &&
+                         Catch::Contains("KoppelModule") && Catch::Contains("Apache License"));
+    CHECK(page.find(" href=") == std::string::npos);  // nothing to fetch
+    // a file that does not assemble as given: the page is written (its sliders can fix it), exit 1
+    const test::RunResult bad = test::RunKoppel("edit " + test::CatalogEntryPath("slider-crank-offset") + " --set e=9 -o " + out);
+    CHECK(bad.exit_code == 1);
+    CHECK_THAT(bad.err, Catch::Contains("the page says so"));
+  }
+  // bad input as every command: an unknown parameter, a file that is not there
+  CHECK(test::RunKoppel("edit " + test::CatalogEntryPath("slider-crank-offset") + " --set nope=1 -o " + out).exit_code == 2);
+  CHECK(test::RunKoppel("edit no-such-file.yaml -o " + out).exit_code == 2);
+}
+
 }  // namespace koppel::plot_command_test

@@ -22,6 +22,7 @@ void AddAtlasCommand(CLI::App& app);          // koppel atlas build|merge
 void AddPlotCommand(CLI::App& app);  // plot, draw, view: tools/plot
 void AddDrawCommand(CLI::App& app);
 void AddViewCommand(CLI::App& app);
+void AddEditCommand(CLI::App& app);
 void AddForcesCommand(CLI::App& app);    // forces_command.cpp
 void AddSimulateCommand(CLI::App& app);  // simulate_command.cpp
 void AddBenchCommand(CLI::App& app);     // bench_command.cpp, benchmarks in tools/bench

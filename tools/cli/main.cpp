@@ -34,6 +34,7 @@ int Run(int argc, char** argv) {
   koppel::cli::AddPlotCommand(app);
   koppel::cli::AddDrawCommand(app);
   koppel::cli::AddViewCommand(app);
+  koppel::cli::AddEditCommand(app);
   koppel::cli::AddForcesCommand(app);
   koppel::cli::AddSimulateCommand(app);
   koppel::cli::AddAtlasCommand(app);

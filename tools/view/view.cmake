@@ -8,6 +8,7 @@ find_program(KOPPEL_NPM npm REQUIRED)
 set(KOPPEL_VIEW_NODE_DIR ${CMAKE_BINARY_DIR}/tools/view/npm CACHE INTERNAL "node_modules of the page build")
 file(MAKE_DIRECTORY ${KOPPEL_VIEW_NODE_DIR})
 set(uplot ${KOPPEL_VIEW_NODE_DIR}/node_modules/uplot)
+set(mathjs ${KOPPEL_VIEW_NODE_DIR}/node_modules/mathjs)  # the editor page's formulas (tools/edit/edit.cmake)
 # Without the tests only uPlot is fetched (the browser test's playwright-core and pngjs are
 # devDependencies); the stamp, the rule's first output, names which, so that turning the tests on
 # fetches them.
@@ -19,14 +20,14 @@ else()
   set(npm_stamp ${KOPPEL_VIEW_NODE_DIR}/npm-ci-page-only.stamp)
 endif()
 add_custom_command(
-  OUTPUT ${npm_stamp} ${uplot}/dist/uPlot.iife.min.js ${uplot}/dist/uPlot.min.css ${uplot}/LICENSE
+  OUTPUT ${npm_stamp} ${uplot}/dist/uPlot.iife.min.js ${uplot}/dist/uPlot.min.css ${uplot}/LICENSE ${mathjs}/lib/browser/math.js ${mathjs}/LICENSE
   COMMAND ${CMAKE_COMMAND} -E rm -f ${KOPPEL_VIEW_NODE_DIR}/npm-ci-with-tests.stamp ${KOPPEL_VIEW_NODE_DIR}/npm-ci-page-only.stamp
   COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_CURRENT_LIST_DIR}/package.json ${CMAKE_CURRENT_LIST_DIR}/package-lock.json ${KOPPEL_VIEW_NODE_DIR}
   COMMAND ${KOPPEL_NPM} ci ${npm_omit} --ignore-scripts --no-audit --no-fund --loglevel=error
-  COMMAND ${CMAKE_COMMAND} -E touch ${uplot}/dist/uPlot.iife.min.js ${uplot}/dist/uPlot.min.css ${uplot}/LICENSE ${npm_stamp}
+  COMMAND ${CMAKE_COMMAND} -E touch ${uplot}/dist/uPlot.iife.min.js ${uplot}/dist/uPlot.min.css ${uplot}/LICENSE ${mathjs}/lib/browser/math.js ${mathjs}/LICENSE ${npm_stamp}
   WORKING_DIRECTORY ${KOPPEL_VIEW_NODE_DIR}
   DEPENDS ${CMAKE_CURRENT_LIST_DIR}/package.json ${CMAKE_CURRENT_LIST_DIR}/package-lock.json
-  COMMENT "npm ci: uPlot for the page of koppel view"
+  COMMENT "npm ci: uPlot (and math.js) for the pages of koppel view and koppel edit"
   VERBATIM)
 set(assets ${CMAKE_BINARY_DIR}/tools/view/view_assets.cpp)
 add_custom_command(

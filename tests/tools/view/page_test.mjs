@@ -11,6 +11,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
+import { checker, launch, watch, checkQuiet, inkOf } from '../page_harness.mjs';
 
 const [koppel, npmDir, chromium, catalog] = process.argv.slice(2);
 const require = createRequire(path.resolve(npmDir, 'package.json'));
@@ -19,16 +20,10 @@ const { PNG } = require('pngjs');
 
 // The size the issue allows for a seed mechanism's page.
 const kMaxPageBytes = 300 * 1024;
-let passed = 0, failed = 0;
-function check(ok, what) {
-  if (ok) { passed++; } else { failed++; console.log('FAILED: ' + what); }
-}
+const { check, finish } = checker();
 
 const work = fs.mkdtempSync(path.join(os.tmpdir(), 'koppel-view-'));
-const flags = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-  '--disable-background-networking', '--disable-component-update', '--disable-sync'];
-const context = await browserType.launchPersistentContext(fs.mkdtempSync(path.join(work, 'profile-')),
-  { executablePath: chromium, headless: true, args: flags, viewport: { width: 1250, height: 1000 } });
+const context = await launch(browserType, chromium, work, fs, path, { viewport: { width: 1250, height: 1000 } });
 
 try {
   for (const [id, link] of [['slider-crank-offset', 'crank'], ['proportional-linkage', 'slot'], ['mzc-crank-rocker', 'coupler']]) {
@@ -39,11 +34,7 @@ try {
     check(bytes < kMaxPageBytes, `${id}: page of ${bytes} bytes exceeds ${kMaxPageBytes}`);
 
     const page = await context.newPage();
-    const errors = [], requests = [];
-    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-    page.on('pageerror', (e) => errors.push(String(e)));
-    page.on('request', (r) => { if (!r.url().startsWith('file:')) requests.push(r.url()); });
-    await page.route(/^(?!file:)/, (route) => route.abort());
+    const watched = await watch(page);
     await page.goto('file://' + html);
     await page.waitForSelector(`svg.scheme g.link[data-link="${link}"]`, { state: 'attached' });
 
@@ -55,16 +46,8 @@ try {
     check(first !== second, `${id}: the ${link} did not move between two frames (${first})`);
 
     // the screenshot is not blank: many pixels that are not the background, in several colours
-    const png = PNG.sync.read(await page.screenshot());
-    let ink = 0;
-    const colours = new Set();
-    for (let i = 0; i < png.data.length; i += 4) {
-      const [r, g, b] = [png.data[i], png.data[i + 1], png.data[i + 2]];
-      if (r < 240 || g < 240 || b < 240) ink++;
-      colours.add((r >> 4) << 8 | (g >> 4) << 4 | (b >> 4));
-    }
-    const share = ink / (png.width * png.height);
-    check(share > 0.02 && colours.size > 20, `${id}: screenshot looks blank (${(100 * share).toFixed(2)} % ink, ${colours.size} colours)`);
+    const { share, colours } = inkOf(PNG.sync.read(await page.screenshot()), 240);
+    check(share > 0.02 && colours > 20, `${id}: screenshot looks blank (${(100 * share).toFixed(2)} % ink, ${colours} colours)`);
 
     // issue 22 item 15: the charts' plot areas were about 100 px tall; at least 240 px
     const kMinPlotHeight = 240;
@@ -99,13 +82,11 @@ try {
     await page.waitForTimeout(300);
     check(paused === await transform(), `${id}: the mechanism moved while paused`);
 
-    check(errors.length === 0, `${id}: console errors: ${errors.join(' | ')}`);
-    check(requests.length === 0, `${id}: network requests: ${requests.join(' ')}`);
+    checkQuiet(check, id, watched);
     await page.close();
   }
 } finally {
   await context.close();
   fs.rmSync(work, { recursive: true, force: true });
 }
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed === 0 ? 0 : 1);
+finish();

@@ -69,6 +69,13 @@ Model Model::FromMechanism(const Mechanism& mechanism) {
   return Model(std::move(impl));
 }
 
+Model ModelAccess::FromFile(MechanismFile file) {
+  auto impl = std::make_shared<Model::Impl>();
+  impl->file = std::move(file);
+  impl->notes = AdmitMechanism(impl->file);
+  return Model(std::move(impl));
+}
+
 const std::string& Model::name() const { return impl_->file.id; }
 const std::string& Model::title() const { return impl_->file.title; }
 const std::string& Model::path() const { return impl_->file.path; }

@@ -96,4 +96,29 @@ std::vector<Eigen::Vector2d> ConvexHull(std::vector<Eigen::Vector2d> p) {
   return hull;
 }
 
+// The template with {{NAME}} replaced in one pass (so a value never gets substituted into).
+std::string Fill(const std::string& page, const std::vector<std::pair<std::string, std::string>>& values) {
+  std::string out;
+  size_t at = 0;
+  while (true) {
+    const size_t open = page.find("{{", at);
+    if (open == std::string::npos) break;
+    const size_t close = page.find("}}", open);
+    out += page.substr(at, open - at);
+    const std::string key = page.substr(open + 2, close - open - 2);
+    bool found = false;
+    for (const auto& [name, value] : values)
+      if (name == key) out += value, found = true;
+    if (!found) out += "{{" + key + "}}";
+    at = close + 2;
+  }
+  return out + page.substr(at);
+}
+
+// JSON inside <script>: "</" must not appear.
+std::string ScriptSafe(std::string json) {
+  for (size_t p = json.find("</"); p != std::string::npos; p = json.find("</", p + 3)) json.replace(p, 2, "<\\/");
+  return json;
+}
+
 }  // namespace koppel::plot

@@ -38,4 +38,18 @@ std::vector<Eigen::Vector2d> ConvexHull(std::vector<Eigen::Vector2d> points);
 // The gaps and singular positions of the run marked on a panel (shaded and as rules).
 void MarkGaps(const Mechanism& mechanism, const SampledRun& run, Panel& panel, bool label);
 
+// A page template (koppel view, koppel edit) with {{NAME}} replaced in one pass (so a value never
+// gets substituted into); an unknown NAME stays as it is.
+std::string Fill(const std::string& page, const std::vector<std::pair<std::string, std::string>>& values);
+// JSON made safe inside <script>: "</" never appears.
+std::string ScriptSafe(std::string json);
+
+// uPlot (script, style, licence), embedded by tools/view/view.cmake for the pages of koppel view
+// and koppel edit.
+namespace assets {
+extern const char* const k_uplot_js;
+extern const char* const k_uplot_css;
+extern const char* const k_uplot_license;
+}  // namespace assets
+
 }  // namespace koppel::plot

@@ -14,12 +14,9 @@
 #include <cstdlib>
 
 namespace koppel::plot {
-namespace assets {
+namespace assets {  // tools/view/view.cmake (uPlot's in plot_support.hpp)
 extern const char* const k_template;
 extern const char* const k_script;
-extern const char* const k_uplot_js;
-extern const char* const k_uplot_css;
-extern const char* const k_uplot_license;
 }  // namespace assets
 
 namespace {
@@ -29,31 +26,6 @@ double Rounded(double v) {
   char s[32];
   std::snprintf(s, sizeof s, "%.6g", v);
   return std::strtod(s, nullptr);
-}
-
-// The template with {{NAME}} replaced in one pass (so a value never gets substituted into).
-std::string Fill(const std::string& page, const std::vector<std::pair<std::string, std::string>>& values) {
-  std::string out;
-  size_t at = 0;
-  while (true) {
-    const size_t open = page.find("{{", at);
-    if (open == std::string::npos) break;
-    const size_t close = page.find("}}", open);
-    out += page.substr(at, open - at);
-    const std::string key = page.substr(open + 2, close - open - 2);
-    bool found = false;
-    for (const auto& [name, value] : values)
-      if (name == key) out += value, found = true;
-    if (!found) out += "{{" + key + "}}";
-    at = close + 2;
-  }
-  return out + page.substr(at);
-}
-
-// JSON inside <script>: "</" must not appear.
-std::string ScriptSafe(std::string json) {
-  for (size_t p = json.find("</"); p != std::string::npos; p = json.find("</", p + 3)) json.replace(p, 2, "<\\/");
-  return json;
 }
 
 // Each output's page data: a point's trace in the scheme and its x and y in the readout; any

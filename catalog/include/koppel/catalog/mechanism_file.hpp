@@ -33,6 +33,11 @@ struct MechanismFile {
   SweepDefaults sweep;
   std::optional<CatalogCard> card;  // the `catalog` section, when present
   Loads loads;  // masses, units, gravity and loads (loads.hpp); none when the file gives none
+  // The text of every number of the model part (parameters, links .. sweep) as it was evaluated,
+  // by key path in reading order: {"parameters.e", "0.3"} (the override when one was given),
+  // {"links.frame.points.A0[1]", "-e"}, {"joints.S.angle", "90"} [the file's units, degrees for
+  // angles]. The editor page (koppel edit) re-evaluates them after a parameter changes.
+  std::vector<std::pair<std::string, std::string>> formulas;
 };
 
 using Overrides = std::vector<std::pair<std::string, std::string>>;

@@ -1,0 +1,460 @@
+// The page of `koppel edit`: the mechanism the CLI handed over (koppel/api/editor.hpp) solved by
+// koppel's own kernel in WebAssembly. Every edit (a parameter, a dragged point) makes a new
+// mechanism; the module checks, admits and sweeps it. When it cannot (not assemblable, not
+// admitted, no pose at the current input) the page says so and keeps the last valid state: it
+// never shows numbers of a mechanism that was not solved.
+(function () {
+  'use strict';
+  const doc = JSON.parse(document.getElementById('koppel-document').textContent);
+  const $ = (id) => document.getElementById(id);
+  const svg = $('scheme'), slider = $('input-slider'), message = $('message');
+  const SVGNS = 'http://www.w3.org/2000/svg';
+  const kWidth = 560, kHeight = 440;
+  // math.js with plain numbers; `predictable`: sqrt(-1) is NaN, never a complex number
+  const mathjs = math.create(math.all, { number: 'number', predictable: true });
+  // muparser's names that math.js spells otherwise (koppel/core/expression.hpp)
+  const kBuiltins = { pi: Math.PI, deg: Math.PI / 180, ln: Math.log };
+
+  let module = null;
+  let state = null;      // {mechanism, parameters, formulas}: the last state that solved
+  let pending = null;    // the file's state when it did not solve: the sliders start from it
+  let solved = null;     // its sweep: {table, frames, deadCentres}
+  let undo = [];
+  let frame = 0, playing = false, last = null, carry = 0;
+  let view = null;       // the scheme's scale and origin, fixed until the mechanism is loaded anew
+  let atBranchPoint = '';
+  let formulasTrusted = true;
+
+  function say(text, error) {
+    message.textContent = text || '';
+    message.className = error ? 'error' : '';
+  }
+  function call(name, types, args) {
+    const answer = JSON.parse(module.ccall(name, 'string', types, args));
+    return answer;
+  }
+  const clone = (o) => JSON.parse(JSON.stringify(o));
+
+  // ---- formulas: the file's parameters in file order, then every formula of the model part
+  function evaluate(formula, scope) {
+    const v = mathjs.evaluate(String(formula), Object.assign({}, kBuiltins, scope));
+    if (typeof v !== 'number' || !isFinite(v)) throw new Error("formula '" + formula + "' does not give a finite number");
+    return v;
+  }
+  function setAt(object, pointer, value) {
+    const keys = pointer.split('/').slice(1);
+    let o = object;
+    for (let i = 0; i + 1 < keys.length; ++i) o = o[keys[i]];
+    o[keys[keys.length - 1]] = value;
+  }
+  function evaluated(s, name, value) {
+    const scope = {};
+    const parameters = s.parameters.map((p) => Object.assign({}, p));
+    for (const p of parameters) {
+      if (p.name === name) p.formula = String(value);
+      p.value = p.name === name ? value : evaluate(p.formula, scope);
+      scope[p.name] = p.value;
+    }
+    const mechanism = clone(s.mechanism);
+    for (const f of s.formulas) setAt(mechanism, f.target, evaluate(f.formula, scope) * f.scale);
+    mechanism.parameters = parameters.map((p) => [p.name, p.value]);
+    return { mechanism: mechanism, parameters: parameters, formulas: s.formulas };
+  }
+  // The page's evaluation against muparser's values for the file as read: where they differ the
+  // sliders are off (a formula math.js reads otherwise would give other numbers than the CLI).
+  function checkFormulas() {
+    const scope = {};
+    try {
+      for (const p of doc.parameters) {
+        const v = evaluate(p.formula, scope);
+        if (Math.abs(v - p.value) > 1e-12 * Math.max(1, Math.abs(p.value))) throw new Error("parameter '" + p.name + "': " + v + ' here, ' + p.value + ' in koppel');
+        scope[p.name] = p.value;
+      }
+      for (const f of doc.formulas) {
+        const v = evaluate(f.formula, scope);
+        if (f.value === null || Math.abs(v - f.value) > 1e-12 * Math.max(1, Math.abs(f.value))) throw new Error(f.path + ': ' + v + ' here, ' + f.value + ' in koppel');
+      }
+      return '';
+    } catch (e) {
+      return String(e.message || e);
+    }
+  }
+
+  // ---- solving: load, sweep the file's range, take the points along the same walk
+  function solve(s) {
+    const loaded = call('koppel_load', ['string'], [JSON.stringify(s.mechanism)]);
+    if (!loaded.ok) return { error: loaded.message };
+    const sw = s.mechanism.sweep;
+    const table = call('koppel_sweep', ['number', 'number', 'number', 'number', 'string'], [sw.from, sw.to, sw.step, 2, atBranchPoint]);
+    if (!table.ok) return { error: table.message };
+    const frames = call('koppel_points', ['number', 'number', 'number', 'string'], [sw.from, sw.to, sw.step, atBranchPoint]);
+    if (!frames.ok) return { error: frames.message };
+    if (table.rows.length === 0) return { error: 'not assemblable: ' + (table.message || table.status) };
+    if (frames.inputs.length !== table.rows.length || frames.inputs.some((x, i) => x !== table.rows[i][0]))
+      return { error: 'the drawing and the table did not walk the same samples' };
+    const dead = doc.mechanism.outputs.length ? call('koppel_dead_centres', ['number', 'number'], [Math.min(sw.from, sw.to), Math.max(sw.from, sw.to)]) : { ok: false };
+    return { table: table, frames: frames, deadCentres: dead.ok ? dead : null, notes: loaded.notes };
+  }
+  // Makes `next` current when it solves with a pose at the current input (or anywhere, `anywhere`);
+  // otherwise says why and keeps the last valid state. True when it was taken.
+  function adopt(next, what, anywhere) {
+    const input = solved ? solved.table.rows[frame][0] : null;
+    const result = solve(next);
+    let why = result.error;
+    let index = 0;
+    if (!why && input !== null && !anywhere) {
+      index = result.table.rows.findIndex((r) => r[0] === input);
+      if (index < 0) why = 'no pose at ' + doc.input.name + ' = ' + input + ' on this branch';
+    }
+    if (why) {
+      if (state) call('koppel_load', ['string'], [JSON.stringify(state.mechanism)]);  // the module back to the last valid model
+      say((what || 'the file as read') + ': cannot assemble (' + why + ')' + (state ? '; the page keeps the last valid pose' : ''), true);
+      if (state || pending) drawParameters();  // the sliders back to the values that solved
+      return false;
+    }
+    if (state) undo.push(state);
+    $('undo').disabled = undo.length === 0;
+    state = next;
+    solved = result;
+    frame = Math.max(0, index);
+    const t = result.table;
+    say(t.complete ? (what ? what + ': solved' : '') : 'partial: ' + t.message, !t.complete);
+    redraw();
+    return true;
+  }
+
+  // ---- the scheme
+  function pointsAt(i) {
+    const out = [], p = solved.frames.points, links = state.mechanism.links;
+    let k = i * solved.frames.points.length / solved.frames.inputs.length;
+    for (const l of links) out.push(l.points.map(() => { const xy = [p[k], p[k + 1]]; k += 2; return xy; }));
+    return out;
+  }
+  function fitView() {
+    let lo = [Infinity, Infinity], hi = [-Infinity, -Infinity];
+    for (let i = 0; i < solved.frames.inputs.length; ++i)
+      for (const l of pointsAt(i)) for (const [x, y] of l) { lo = [Math.min(lo[0], x), Math.min(lo[1], y)]; hi = [Math.max(hi[0], x), Math.max(hi[1], y)]; }
+    const scale = 0.8 * Math.min(kWidth / Math.max(hi[0] - lo[0], 1e-9), kHeight / Math.max(hi[1] - lo[1], 1e-9));
+    view = { scale: scale, ox: kWidth / 2 - scale * (lo[0] + hi[0]) / 2, oy: kHeight / 2 + scale * (lo[1] + hi[1]) / 2 };
+  }
+  const px = ([x, y]) => [view.ox + view.scale * x, view.oy - view.scale * y];
+  const unpx = (X, Y) => [(X - view.ox) / view.scale, (view.oy - Y) / view.scale];
+  function el(name, attrs, parent) {
+    const e = document.createElementNS(SVGNS, name);
+    for (const k in attrs) e.setAttribute(k, attrs[k]);
+    (parent || svg).appendChild(e);
+    return e;
+  }
+  const palette = ['#1f5fa8', '#c0392b', '#2e8b57', '#7d3c98', '#b9770e', '#117a65'];
+  function drawScheme() {
+    svg.textContent = '';
+    const m = state.mechanism, pts = pointsAt(frame);
+    // coupler curves of the point outputs: the traced point over every sample
+    for (const o of m.outputs.filter((o) => o.kind === 'point')) {
+      const d = solved.frames.inputs.map((_, i) => px(pointsAt(i)[o.p[0]][o.p[1]]).map((v) => v.toFixed(1)).join(',')).join(' L');
+      el('path', { d: 'M' + d, fill: 'none', stroke: '#7d3c98', 'stroke-width': 1.2, 'stroke-dasharray': '4 2', class: 'coupler-curve' });
+    }
+    m.links.forEach((l, li) => {
+      const g = el('g', { class: 'link', 'data-link': l.name });
+      const xy = pts[li].map(px);
+      if (l.frame) return;
+      const colour = palette[li % palette.length];
+      if (xy.length >= 3) el('polygon', { points: xy.map((p) => p.join(',')).join(' '), fill: colour, 'fill-opacity': 0.15, stroke: colour, 'stroke-width': 3 }, g);
+      else if (xy.length === 2) el('line', { x1: xy[0][0], y1: xy[0][1], x2: xy[1][0], y2: xy[1][1], stroke: colour, 'stroke-width': 4, 'stroke-linecap': 'round' }, g);
+    });
+    m.joints.forEach((j, ji) => {
+      const a = px(pts[j.link_a][j.point_a]), b = px(pts[j.link_b][j.point_b]);
+      const frameJoint = m.links[j.link_a].frame || m.links[j.link_b].frame;
+      if (j.type === 'P') {
+        // the guide's line through its point along the axis, the block on it
+        const dir = guideDirection(j, pts);
+        const L = 2000;
+        el('line', { x1: a[0] - L * dir[0], y1: a[1] + L * dir[1], x2: a[0] + L * dir[0], y2: a[1] - L * dir[1], stroke: '#555', 'stroke-width': 1, class: 'guide' });
+        const angle = -Math.atan2(dir[1], dir[0]) * 180 / Math.PI;
+        el('rect', { x: -14, y: -8, width: 28, height: 16, fill: '#fff', stroke: '#1d2b3a', 'stroke-width': 2, transform: 'translate(' + b[0] + ',' + b[1] + ') rotate(' + angle + ')', class: 'block' });
+        return;
+      }
+      if (frameJoint) el('path', { d: 'M' + a[0] + ',' + a[1] + ' l-10,16 h20 z', fill: '#d5dbe1', stroke: '#1d2b3a', 'stroke-width': 1.5, class: 'pivot' });
+      const c = el('circle', { cx: a[0], cy: a[1], r: 6, fill: '#fff', stroke: '#1d2b3a', 'stroke-width': 2, class: 'handle joint', 'data-joint': j.name });
+      c.addEventListener('pointerdown', (e) => startDrag(e, ji));
+      el('text', { x: a[0] + 9, y: a[1] - 9, 'font-size': 12, fill: '#1d2b3a' }).textContent = j.name;
+    });
+  }
+  function linkAngle(li, pts) {
+    // a link's rotation: from its body frame's points (two points not coinciding) to their global positions
+    const l = state.mechanism.links[li];
+    if (l.frame || l.points.length < 2) return 0;
+    for (let k = 1; k < l.points.length; ++k) {
+      const dl = [l.points[k].x - l.points[0].x, l.points[k].y - l.points[0].y];
+      const dg = [pts[li][k][0] - pts[li][0][0], pts[li][k][1] - pts[li][0][1]];
+      if (Math.hypot(dl[0], dl[1]) > 1e-12) return Math.atan2(dg[1], dg[0]) - Math.atan2(dl[1], dl[0]);
+    }
+    return 0;
+  }
+  function guideDirection(j, pts) {
+    const t = linkAngle(j.link_a, pts), n = Math.hypot(j.axis[0], j.axis[1]);
+    const ax = j.axis[0] / n, ay = j.axis[1] / n;
+    return [Math.cos(t) * ax - Math.sin(t) * ay, Math.sin(t) * ax + Math.cos(t) * ay];
+  }
+
+  // ---- dragging an R joint: its point moves on both links (their lengths change), the frame's
+  // pivots move in the frame; then the mechanism is solved from the current pose (the hint), so
+  // it stays on its branch
+  let drag = null;
+  function startDrag(e, ji) {
+    e.preventDefault();
+    drag = { joint: ji };
+    svg.setPointerCapture(e.pointerId);
+  }
+  svg.addEventListener('pointermove', (e) => {
+    if (!drag) return;
+    const r = svg.getBoundingClientRect();
+    drag.to = unpx(e.clientX - r.left, e.clientY - r.top);
+    // the handle follows the pointer; the mechanism is solved when it is let go
+    const handle = svg.querySelector('circle[data-joint="' + state.mechanism.joints[drag.joint].name + '"]');
+    if (handle) { handle.setAttribute('cx', e.clientX - r.left); handle.setAttribute('cy', e.clientY - r.top); }
+  });
+  svg.addEventListener('pointerup', () => {
+    if (drag && drag.to) moveJoint(state.mechanism.joints[drag.joint].name, drag.to[0], drag.to[1]);
+    drag = null;
+  });
+  function moveJoint(name, x, y) {
+    const m = clone(state.mechanism), pts = pointsAt(frame);
+    const ji = m.joints.findIndex((j) => j.name === name);
+    if (ji < 0 || m.joints[ji].type !== 'R') throw new Error("no R joint '" + name + "'");
+    const j = m.joints[ji];
+    const moved = [[j.link_a, j.point_a], [j.link_b, j.point_b]];
+    let formulas = state.formulas;
+    for (const [li, pi] of moved) {
+      const t = linkAngle(li, pts), o = pts[li][0], l0 = m.links[li].points[0];
+      // global -> the link's body frame at the current pose
+      const gx = x - o[0], gy = y - o[1];
+      const lx = Math.cos(t) * gx + Math.sin(t) * gy + l0.x, ly = -Math.sin(t) * gx + Math.cos(t) * gy + l0.y;
+      m.links[li].points[pi].x = lx;
+      m.links[li].points[pi].y = ly;
+      const base = '/links/' + li + '/points/' + pi + '/';
+      formulas = formulas.filter((f) => f.target !== base + 'x' && f.target !== base + 'y');  // a number now, no longer a formula
+    }
+    // the current pose is the hint: the solver assembles next to it
+    m.hint.input = (doc.input.angle ? Math.PI / 180 : 1) * solved.table.rows[frame][0];
+    m.hint.points = [];
+    m.links.forEach((l, li) => { if (!l.frame) l.points.forEach((p, pi) => m.hint.points.push({ link: li, point: pi, x: pts[li][pi][0], y: pts[li][pi][1] })); });
+    for (const h of m.hint.points) if ((h.link === j.link_a && h.point === j.point_a) || (h.link === j.link_b && h.point === j.point_b)) { h.x = x; h.y = y; }
+    formulas = formulas.filter((f) => !f.target.startsWith('/hint/'));
+    return adopt({ mechanism: m, parameters: state.parameters, formulas: formulas }, 'moved ' + name);
+  }
+
+  // ---- charts: every scalar output with its 1st and 2nd order transfer functions; the
+  // transmission angle alone; dead centres and singular points marked, gaps shaded
+  const plots = $('plots');
+  let charts = [];
+  function drawCharts() {
+    plots.textContent = '';
+    charts = [];
+    const key = document.createElement('div');
+    key.className = 'chart-title';
+    key.textContent = 'dashed lines: dead centres (green), limit points (red), branch points (purple); shaded: beyond the branch';
+    plots.appendChild(key);
+    const t = solved.table, xs = t.rows.map((r) => r[0]);
+    const marks = [];
+    for (const s of t.singular_points) marks.push({ x: s.input, colour: s.kind === 'limit' ? '#c0392b' : '#7d3c98', label: s.kind });
+    if (solved.deadCentres) for (const p of solved.deadCentres.points) marks.push({ x: p.input, colour: '#2e8b57', label: 'dead centre (' + p.kind + ')' });
+    for (const o of state.mechanism.outputs) {
+      if (o.kind === 'point') continue;
+      const names = o.kind === 'transmission' ? [o.name] : [o.name, o.name + '_d1', o.name + '_d2'];
+      const columns = [xs];
+      const series = [{ label: doc.input.name + ' [' + doc.input.unit + ']' }];
+      names.forEach((n, k) => {
+        const c = t.columns.indexOf(n);
+        columns.push(t.rows.map((r) => r[c]));
+        series.push({ label: n + ' [' + t.units[c] + ']', stroke: palette[k], width: 1.6, scale: k === 0 ? 'y' : 'd' });
+      });
+      const title = document.createElement('div');
+      title.className = 'chart-title';
+      title.textContent = o.kind === 'transmission' ? o.name + ': transmission angle' : o.name + ' and its transfer functions';
+      plots.appendChild(title);
+      const box = document.createElement('div');
+      box.className = 'chart';
+      plots.appendChild(box);
+      const axes = [{ label: series[0].label }, { scale: 'y', label: series[1].label }];
+      if (names.length > 1) axes.push({ scale: 'd', side: 1, grid: { show: false }, label: 'derivatives' });
+      const u = new uPlot({
+        // the plot area about 260 px tall (at least 240)
+        width: 560, height: 360, series: series, axes: axes, scales: { x: { time: false } }, cursor: { drag: { x: false, y: false } },
+        hooks: { draw: [(u) => {
+          const ctx = u.ctx, top = u.bbox.top, h = u.bbox.height;
+          ctx.save();
+          for (const g of t.gaps) {  // the parts of the range the branch cannot be driven through
+            const a = u.valToPos(Math.min(g[0], g[1]), 'x', true), b = u.valToPos(Math.max(g[0], g[1]), 'x', true);
+            ctx.fillStyle = 'rgba(192,57,43,0.12)';
+            ctx.fillRect(a, top, Math.max(b - a, 2), h);
+          }
+          for (const mk of marks) {
+            const x = u.valToPos(mk.x, 'x', true);
+            ctx.strokeStyle = mk.colour; ctx.setLineDash([5, 3]); ctx.lineWidth = 1.5;
+            ctx.beginPath(); ctx.moveTo(x, top); ctx.lineTo(x, top + h); ctx.stroke();
+          }
+          ctx.restore();
+        }] },
+      }, columns, box);
+      const cursor = document.createElement('div');
+      cursor.className = 'koppel-cursor';
+      u.over.appendChild(cursor);
+      charts.push({ u: u, cursor: cursor });
+    }
+  }
+
+  function show(i) {
+    frame = i;
+    slider.value = String(i);
+    const row = solved.table.rows[i];
+    $('input-value').textContent = doc.input.name + ' = ' + Number(row[0].toPrecision(10)) + ' ' + doc.input.unit + (row[row.length - 1] ? ' (singular)' : '');
+    drawScheme();
+    for (const c of charts) {
+      c.cursor.style.left = c.u.valToPos(row[0], 'x') + 'px';
+      c.u.setLegend({ idx: i });
+    }
+    let html = '';
+    solved.table.columns.forEach((c, k) => { if (k > 0 && k + 1 < row.length) html += '<tr><td>' + c + '</td><td>' + (row[k] === null ? '–' : Number(row[k]).toPrecision(8)) + '</td></tr>'; });
+    $('readout').innerHTML = html;
+    // at a branch point the other branch is offered
+    $('branch').hidden = !solved.table.singular_points.some((s) => s.kind === 'branch-point' && Math.abs(s.input - row[0]) <= Math.abs(state.mechanism.sweep.step));
+  }
+  function redraw() {
+    if (!view) fitView();
+    slider.max = String(solved.table.rows.length - 1);
+    drawCharts();
+    drawParameters();
+    show(Math.min(frame, solved.table.rows.length - 1));
+  }
+
+  // ---- parameter sliders
+  function drawParameters() {
+    const table = $('parameters');
+    table.textContent = '';
+    for (const p of (state || pending).parameters) {
+      const tr = document.createElement('tr');
+      const span = Math.max(Math.abs(p.value), 1);
+      tr.innerHTML = '<td>' + p.name + '</td><td><input type="range"></td><td><input type="number"></td>';
+      const range = tr.querySelector('input[type=range]'), box = tr.querySelector('input[type=number]');
+      range.min = String(p.value - span); range.max = String(p.value + span); range.step = String(span / 200); range.value = String(p.value);
+      box.value = String(p.value); box.step = 'any';
+      range.disabled = box.disabled = !formulasTrusted;
+      range.addEventListener('change', () => api.set(p.name, +range.value));
+      box.addEventListener('change', () => api.set(p.name, +box.value));
+      table.appendChild(tr);
+    }
+  }
+
+  // ---- play and scrub
+  function tick(now) {
+    if (last === null) last = now;
+    const dt = Math.min(0.1, (now - last) / 1000);
+    last = now;
+    const n = solved ? solved.table.rows.length : 0;
+    if (playing && n > 1) {
+      carry += dt * n / 6;  // the range in about six seconds
+      const steps = Math.floor(carry);
+      carry -= steps;
+      if (steps) show((frame + steps) % n);
+    }
+    requestAnimationFrame(tick);
+  }
+  $('play').addEventListener('click', function () { playing = !playing; this.textContent = playing ? 'Pause' : 'Play'; });
+  slider.addEventListener('input', () => show(+slider.value));
+  $('undo').addEventListener('click', () => {
+    const previous = undo.pop();
+    if (!previous) return;
+    const result = solve(previous);
+    if (result.error) { say('undo: ' + result.error, true); return; }
+    state = previous; solved = result;
+    frame = Math.min(frame, result.table.rows.length - 1);
+    $('undo').disabled = undo.length === 0;
+    say('undone');
+    redraw();
+  });
+  $('branch').addEventListener('click', () => {
+    atBranchPoint = atBranchPoint === 'switch' ? '' : 'switch';
+    const result = solve(state);
+    if (result.error) { say('switching branch: ' + result.error, true); atBranchPoint = atBranchPoint ? '' : 'switch'; return; }
+    solved = result;
+    say(atBranchPoint ? 'switched branch at the branch points' : 'through the branch points on the same branch');
+    redraw();
+  });
+
+  // ---- exports
+  function download(name, blob) {
+    const a = document.createElement('a');
+    a.href = URL.createObjectURL(blob);
+    a.download = name;
+    a.click();
+    setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+  }
+  const base = state => state.mechanism.name || 'mechanism';
+  const schemeSvg = () => new XMLSerializer().serializeToString(svg);
+  $('export-yaml').addEventListener('click', () => download(base(state) + '.yaml', new Blob([api.toYaml()], { type: 'text/yaml' })));
+  $('export-svg').addEventListener('click', () => download(base(state) + '.svg', new Blob([schemeSvg()], { type: 'image/svg+xml' })));
+  $('export-png').addEventListener('click', () => {
+    const img = new Image();
+    img.onload = () => {
+      const c = document.createElement('canvas');
+      c.width = kWidth; c.height = kHeight;
+      const ctx = c.getContext('2d');
+      ctx.fillStyle = '#fff'; ctx.fillRect(0, 0, kWidth, kHeight);
+      ctx.drawImage(img, 0, 0);
+      c.toBlob((b) => download(base(state) + '.png', b), 'image/png');
+    };
+    img.src = 'data:image/svg+xml;charset=utf-8,' + encodeURIComponent(schemeSvg());
+  });
+
+  // ---- the scripting API
+  const api = {
+    // the table of `koppel analyze --format json` for the current mechanism
+    sweep(from, to, step, order) {
+      const t = call('koppel_sweep', ['number', 'number', 'number', 'number', 'string'], [from, to, step, order === undefined ? 2 : order, atBranchPoint]);
+      if (!t.ok) throw new Error(t.message);
+      return { columns: t.columns, rows: t.rows, complete: t.complete, status: t.status, message: t.message };
+    },
+    // a parameter to a value, the file's formulas evaluated again; {ok, message}
+    set(name, value) {
+      if (!formulasTrusted) return { ok: false, message: message.textContent };
+      const base = state || pending;
+      if (!base.parameters.some((p) => p.name === name)) return { ok: false, message: "'" + name + "' is not a parameter of this file" };
+      let next;
+      try { next = evaluated(base, name, +value); } catch (e) { say(name + ' = ' + value + ': ' + e.message, true); return { ok: false, message: e.message }; }
+      const ok = adopt(next, name + ' = ' + value, true);
+      return { ok: ok, message: message.textContent };
+    },
+    moveJoint(name, x, y) { return { ok: moveJoint(name, x, y), message: message.textContent }; },
+    toYaml() {
+      const y = call('koppel_yaml', [], []);
+      if (!y.ok) throw new Error(y.message);
+      return y.yaml;
+    },
+    parameters() { return (state || pending).parameters.map((p) => ({ name: p.name, value: p.value })); },
+    state() {
+      return { input: solved ? solved.table.rows[frame][0] : null, frame: frame, message: message.textContent, error: message.className === 'error' };
+    },
+    ready: null,
+  };
+  window.koppel = api;
+  api.ready = KoppelModule().then((m) => {
+    module = m;
+    $('title').textContent = doc.title;
+    const why = checkFormulas();
+    if (why) { formulasTrusted = false; }
+    const first = { mechanism: doc.mechanism, parameters: doc.parameters, formulas: doc.formulas };
+    if (!adopt(first, '', true)) {
+      // nothing to show but the message: the sliders stay, so that a parameter can fix it
+      pending = first;
+      drawParameters();
+      return api;
+    }
+    const notes = [];
+    if (why) notes.push('the parameter sliders are off: the page evaluates a formula otherwise than koppel (' + why + ')');
+    if (doc.has_loads) notes.push("the file's masses and loads are not part of the page (its YAML export leaves them out)");
+    if (notes.length) say(notes.join('; '), false);
+    requestAnimationFrame(tick);
+    return api;
+  });
+})();

@@ -4,12 +4,14 @@
 #include "koppel/core/limits.hpp"
 #include "koppel/core/memory.hpp"
 #include "koppel/synthesis/atlas_file.hpp"
+#include "atlas_trace.hpp"
 #include "worker_threads.hpp"
 
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <thread>
 
@@ -41,58 +43,21 @@ struct Draw {
   }
 };
 
-// The crank angles at which the loop closes: [lo, hi] (hi - lo < 2 pi) or the full turn.
-struct Feasible {
-  bool any = false, full = false;
-  double lo = 0, hi = 0;
-};
-
-// |A - B0|^2 = a^2 + 1 - 2 a cos(phi) must lie in [(b - c)^2, (b + c)^2].
-Feasible CrankAngles(double a, double b, double c, int side) {
-  Feasible f;
-  const double cmin = (a * a + 1 - (b + c) * (b + c)) / (2 * a), cmax = (a * a + 1 - (b - c) * (b - c)) / (2 * a);
-  if (cmin > cmax || cmin > 1 || cmax < -1) return f;
-  f.any = true;
-  if (cmin <= -1 && cmax >= 1) {
-    f.full = true;
-    f.lo = 0;
-    f.hi = 2 * kPi;
-  } else if (cmin > -1 && cmax < 1) {  // two intervals, mirror images in the frame line
-    f.lo = std::acos(cmax);
-    f.hi = std::acos(cmin);
-    if (side < 0) {
-      f.lo = -std::acos(cmin);
-      f.hi = -std::acos(cmax);
-    }
-  } else if (cmin <= -1) {  // one interval through pi
-    f.lo = std::acos(cmax);
-    f.hi = 2 * kPi - f.lo;
-  } else {  // one interval through 0
-    f.hi = std::acos(cmin);
-    f.lo = -f.hi;
-  }
-  return f;
-}
-
-// B for crank angle phi on `branch`; the triangle's angle clamped at the limit positions, where
-// rounding may leave |cos| a few ulps above 1.
-bool JointB(double a, double b, double c, double phi, int branch, Eigen::Vector2d* pa, Eigen::Vector2d* pb) {
-  *pa = a * Eigen::Vector2d(std::cos(phi), std::sin(phi));
-  const Eigen::Vector2d d = Eigen::Vector2d(1, 0) - *pa;
-  const double r = d.norm();
-  double cos_gamma = (b * b + r * r - c * c) / (2 * b * r);
-  if (!(std::abs(cos_gamma) <= 1 + 1e-9)) return false;
-  cos_gamma = std::clamp(cos_gamma, -1.0, 1.0);
-  const double gamma = std::atan2(d.y(), d.x()) + branch * std::acos(cos_gamma);
-  *pb = *pa + b * Eigen::Vector2d(std::cos(gamma), std::sin(gamma));
+// The coupler points of n <= kAtlasTraceBlock samples (TraceAtlasCurve without the joints, into `k`).
+bool TraceCouplerPoints(const AtlasEntry& e, const AtlasCrankRange& f, int n, Eigen::Vector2d* k) {
+  AtlasTraceBlock t;
+  if (!TraceAtlasSamples(e, f, 0, n, n, &t)) return false;
+  for (int i = 0; i < n; ++i) k[i] = Eigen::Vector2d(t.kx[i], t.ky[i]);
   return true;
 }
+
+bool DescribePath(const Eigen::Vector2d* path, int n, CurveDescriptor* d);
 
 }  // namespace
 
 AtlasEntry DrawAtlasEntry(std::uint64_t seed, std::uint64_t index) {
   Draw draw{Mix(seed) ^ Mix(index + 0x632be59bd9b4e019ULL)};
-  AtlasCurve curve;
+  std::array<Eigen::Vector2d, kTraceSamples> curve;  // on the stack: a build allocates nothing per curve
   for (;;) {
     AtlasEntry e;
     e.seed = seed;
@@ -104,50 +69,74 @@ AtlasEntry DrawAtlasEntry(std::uint64_t seed, std::uint64_t index) {
     e.q = -1.5 + 3 * draw.Next();
     e.branch = draw.Next() < 0.5 ? 1 : -1;
     e.side = draw.Next() < 0.5 ? 1 : -1;
-    const Feasible f = CrankAngles(e.crank, e.coupler, e.rocker, e.side);
+    const AtlasCrankRange f = AtlasCrankAngles(e.crank, e.coupler, e.rocker, e.side);
     if (!f.any || f.hi - f.lo < kShortestArc) continue;
     e.closed = f.full ? 1 : 0;
     CurveDescriptor d;
-    if (!TraceAtlasCurve(e, kTraceSamples, &curve) || !DescribeCurve(curve.coupler_point, &d)) continue;
+    if (!TraceCouplerPoints(e, f, kTraceSamples, curve.data()) || !DescribePath(curve.data(), kTraceSamples, &d)) continue;
     for (int k = 0; k < kAtlasFeatures; ++k) e.descriptor[k] = static_cast<float>(d.features[k]);
     return e;
   }
 }
 
 bool TraceAtlasCurve(const AtlasEntry& e, int samples, AtlasCurve* curve) {
-  const Feasible f = CrankAngles(e.crank, e.coupler, e.rocker, e.side);
+  const AtlasCrankRange f = AtlasCrankAngles(e.crank, e.coupler, e.rocker, e.side);
   if (!f.any || samples < 3) return false;
   curve->coupler_point.resize(samples);
   curve->a.resize(samples);
   curve->b.resize(samples);
   curve->crank_angle.resize(samples);
-  const double mid = 0.5 * (f.lo + f.hi), half = 0.5 * (f.hi - f.lo);
-  for (int i = 0; i < samples; ++i) {
-    const double t = 2 * kPi * i / samples;
-    // a full turn: phi = t; an interval: there and back, phi = mid - half cos t (smooth at the limits)
-    const double phi = f.full ? t : mid - half * std::cos(t);
-    Eigen::Vector2d a, b;
-    if (!JointB(e.crank, e.coupler, e.rocker, phi, e.branch, &a, &b)) return false;
-    const Eigen::Vector2d ab = b - a, normal(-ab.y(), ab.x());
-    curve->a[i] = a;
-    curve->b[i] = b;
-    curve->crank_angle[i] = phi;
-    curve->coupler_point[i] = a + e.p * ab + e.q * normal;
+  AtlasTraceBlock t;  // the same points as the build's TraceCouplerPoints, a block at a time
+  for (int first = 0; first < samples; first += kAtlasTraceBlock) {
+    const int count = std::min(kAtlasTraceBlock, samples - first);
+    if (!TraceAtlasSamples(e, f, first, count, samples, &t)) return false;
+    for (int i = 0; i < count; ++i) {
+      curve->crank_angle[first + i] = t.phi[i];
+      curve->a[first + i] = Eigen::Vector2d(t.ax[i], t.ay[i]);
+      curve->b[first + i] = Eigen::Vector2d(t.bx[i], t.by[i]);
+      curve->coupler_point[first + i] = Eigen::Vector2d(t.kx[i], t.ky[i]);
+    }
   }
   return true;
 }
 
 bool DescribeCurve(const std::vector<Eigen::Vector2d>& path, CurveDescriptor* d) {
-  const int n = static_cast<int>(path.size());
+  return DescribePath(path.data(), static_cast<int>(path.size()), d);
+}
+
+namespace {
+
+// e^{-2 pi i k j / kResample} for k = -K..K (row k + K), j = 0..kResample-1: the very numbers
+// std::polar gave in the sum (made once, the same expression), 704 sines and cosines a curve fewer.
+using Twiddles = std::array<std::array<Complex, kResample>, 2 * kAtlasHarmonics + 1>;
+const Twiddles& FourierTwiddles() {
+  static const Twiddles table = [] {
+    Twiddles t;
+    for (int k = -kAtlasHarmonics; k <= kAtlasHarmonics; ++k) {
+      for (int j = 0; j < kResample; ++j) t[k + kAtlasHarmonics][j] = std::polar(1.0, -2 * kPi * k * j / kResample);
+    }
+    return t;
+  }();
+  return table;
+}
+
+bool DescribePath(const Eigen::Vector2d* path, int n, CurveDescriptor* d) {
   if (n < 3) return false;
   // resample at equal arc length along the closed polygon
-  std::vector<double> s(n + 1, 0.0);
+  std::array<double, kTraceSamples + 1> s_small;  // the build's curves need no allocation
+  std::vector<double> s_large;
+  double* s = s_small.data();
+  if (n > kTraceSamples) {
+    s_large.resize(n + 1);
+    s = s_large.data();
+  }
+  s[0] = 0.0;
   for (int i = 0; i < n; ++i) s[i + 1] = s[i] + (path[(i + 1) % n] - path[i]).norm();
   const double total = s[n];
   double extent = 0;
-  for (const Eigen::Vector2d& p : path) extent = std::max(extent, (p - path[0]).norm());
+  for (int i = 0; i < n; ++i) extent = std::max(extent, (path[i] - path[0]).norm());
   if (!(total > 0) || !(extent > 1e-12 * total) || !std::isfinite(total)) return false;
-  std::vector<Complex> z(kResample);
+  std::array<Complex, kResample> z;
   int seg = 0;
   for (int j = 0; j < kResample; ++j) {
     const double at = total * j / kResample;
@@ -156,10 +145,11 @@ bool DescribeCurve(const std::vector<Eigen::Vector2d>& path, CurveDescriptor* d)
     const Eigen::Vector2d p = (1 - w) * path[seg] + w * path[(seg + 1) % n];
     z[j] = {p.x(), p.y()};
   }
+  const Twiddles& twiddles = FourierTwiddles();
   std::array<Complex, 2 * kAtlasHarmonics + 1> c{};  // c[k + K] = c_k
   for (int k = -kAtlasHarmonics; k <= kAtlasHarmonics; ++k) {
     Complex sum = 0;
-    for (int j = 0; j < kResample; ++j) sum += z[j] * std::polar(1.0, -2 * kPi * k * j / kResample);
+    for (int j = 0; j < kResample; ++j) sum += z[j] * twiddles[k + kAtlasHarmonics][j];
     c[k + kAtlasHarmonics] = sum / static_cast<double>(kResample);
   }
   auto at = [&](int k) -> Complex& { return c[k + kAtlasHarmonics]; };
@@ -180,6 +170,8 @@ bool DescribeCurve(const std::vector<Eigen::Vector2d>& path, CurveDescriptor* d)
   }
   return true;
 }
+
+}  // namespace
 
 CurveDescriptor OtherBranchOfAmbiguity(const CurveDescriptor& d) {
   CurveDescriptor o = d;

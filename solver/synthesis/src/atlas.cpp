@@ -4,7 +4,7 @@
 #include "koppel/core/limits.hpp"
 #include "koppel/core/memory.hpp"
 #include "koppel/synthesis/atlas_file.hpp"
-#include "atlas_trace.hpp"
+#include "atlas_curve.hpp"
 #include "worker_threads.hpp"
 
 #include <fmt/core.h>
@@ -18,12 +18,10 @@
 namespace koppel {
 namespace {
 
-constexpr int kResample = 64;       // points of equal arc length the descriptor is taken from
 constexpr int kTraceSamples = 256;  // points of a curve for its descriptor
 constexpr double kLogLength = 1.6094379124341003;  // log 5: lengths in [1/5, 5]
 constexpr double kShortestArc = kPi / 18;  // 10 deg of crank travel at least
 
-using Complex = std::complex<double>;
 
 // SplitMix64 (Steele, Lea, Flood 2014): a counter-based seed for entry `index`, so that any
 // shard or thread draws the same entry.
@@ -51,8 +49,6 @@ bool TraceCouplerPoints(const AtlasEntry& e, const AtlasCrankRange& f, int n, Ei
   return true;
 }
 
-bool DescribePath(const Eigen::Vector2d* path, int n, CurveDescriptor* d);
-
 }  // namespace
 
 AtlasEntry DrawAtlasEntry(std::uint64_t seed, std::uint64_t index) {
@@ -73,7 +69,7 @@ AtlasEntry DrawAtlasEntry(std::uint64_t seed, std::uint64_t index) {
     if (!f.any || f.hi - f.lo < kShortestArc) continue;
     e.closed = f.full ? 1 : 0;
     CurveDescriptor d;
-    if (!TraceCouplerPoints(e, f, kTraceSamples, curve.data()) || !DescribePath(curve.data(), kTraceSamples, &d)) continue;
+    if (!TraceCouplerPoints(e, f, kTraceSamples, curve.data()) || !DescribeAtlasPath(curve.data(), kTraceSamples, &d)) continue;
     for (int k = 0; k < kAtlasFeatures; ++k) e.descriptor[k] = static_cast<float>(d.features[k]);
     return e;
   }
@@ -101,77 +97,8 @@ bool TraceAtlasCurve(const AtlasEntry& e, int samples, AtlasCurve* curve) {
 }
 
 bool DescribeCurve(const std::vector<Eigen::Vector2d>& path, CurveDescriptor* d) {
-  return DescribePath(path.data(), static_cast<int>(path.size()), d);
+  return DescribeAtlasPath(path.data(), static_cast<int>(path.size()), d);
 }
-
-namespace {
-
-// e^{-2 pi i k j / kResample} for k = -K..K (row k + K), j = 0..kResample-1: the very numbers
-// std::polar gave in the sum (made once, the same expression), 704 sines and cosines a curve fewer.
-using Twiddles = std::array<std::array<Complex, kResample>, 2 * kAtlasHarmonics + 1>;
-const Twiddles& FourierTwiddles() {
-  static const Twiddles table = [] {
-    Twiddles t;
-    for (int k = -kAtlasHarmonics; k <= kAtlasHarmonics; ++k) {
-      for (int j = 0; j < kResample; ++j) t[k + kAtlasHarmonics][j] = std::polar(1.0, -2 * kPi * k * j / kResample);
-    }
-    return t;
-  }();
-  return table;
-}
-
-bool DescribePath(const Eigen::Vector2d* path, int n, CurveDescriptor* d) {
-  if (n < 3) return false;
-  // resample at equal arc length along the closed polygon
-  std::array<double, kTraceSamples + 1> s_small;  // the build's curves need no allocation
-  std::vector<double> s_large;
-  double* s = s_small.data();
-  if (n > kTraceSamples) {
-    s_large.resize(n + 1);
-    s = s_large.data();
-  }
-  s[0] = 0.0;
-  for (int i = 0; i < n; ++i) s[i + 1] = s[i] + (path[(i + 1) % n] - path[i]).norm();
-  const double total = s[n];
-  double extent = 0;
-  for (int i = 0; i < n; ++i) extent = std::max(extent, (path[i] - path[0]).norm());
-  if (!(total > 0) || !(extent > 1e-12 * total) || !std::isfinite(total)) return false;
-  std::array<Complex, kResample> z;
-  int seg = 0;
-  for (int j = 0; j < kResample; ++j) {
-    const double at = total * j / kResample;
-    while (seg < n - 1 && s[seg + 1] <= at) ++seg;
-    const double w = s[seg + 1] > s[seg] ? (at - s[seg]) / (s[seg + 1] - s[seg]) : 0.0;
-    const Eigen::Vector2d p = (1 - w) * path[seg] + w * path[(seg + 1) % n];
-    z[j] = {p.x(), p.y()};
-  }
-  const Twiddles& twiddles = FourierTwiddles();
-  std::array<Complex, 2 * kAtlasHarmonics + 1> c{};  // c[k + K] = c_k
-  for (int k = -kAtlasHarmonics; k <= kAtlasHarmonics; ++k) {
-    Complex sum = 0;
-    for (int j = 0; j < kResample; ++j) sum += z[j] * twiddles[k + kAtlasHarmonics][j];
-    c[k + kAtlasHarmonics] = sum / static_cast<double>(kResample);
-  }
-  auto at = [&](int k) -> Complex& { return c[k + kAtlasHarmonics]; };
-  // traverse so that |c_1| >= |c_-1| (reversing time swaps c_k and c_-k)
-  if (std::abs(at(-1)) > std::abs(at(1))) std::reverse(c.begin(), c.end());
-  d->centre = at(0);
-  d->scale = std::abs(at(1));
-  if (!(d->scale > 1e-12 * total)) return false;
-  // turn by alpha and shift time by tau: c_k -> c_k e^{i(alpha + k tau)}; c_1 and c_-1 real
-  const double alpha = -0.5 * (std::arg(at(1)) + std::arg(at(-1))), tau = -0.5 * (std::arg(at(1)) - std::arg(at(-1)));
-  d->turn = alpha;
-  int f = 0;
-  for (int k = -kAtlasHarmonics; k <= kAtlasHarmonics; ++k) {
-    if (k == 0 || k == 1) continue;
-    const Complex v = at(k) * std::polar(1.0, alpha + k * tau) / d->scale;
-    d->features[f++] = v.real();
-    d->features[f++] = v.imag();
-  }
-  return true;
-}
-
-}  // namespace
 
 CurveDescriptor OtherBranchOfAmbiguity(const CurveDescriptor& d) {
   CurveDescriptor o = d;

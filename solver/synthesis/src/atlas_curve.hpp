@@ -1,6 +1,7 @@
-// The atlas's tracing of a four-bar's coupler curve (atlas.cpp): private to synthesis. Compiled
-// on its own with -fno-math-errno (CMakeLists.txt), so that its loops vectorise: std::sqrt need
-// not call the C library to set errno for a negative argument, which none of these can be.
+// An atlas entry's curve (atlas.cpp): the four-bar's coupler curve traced, and a closed path
+// described. Private to synthesis. Compiled on its own with -fno-math-errno (CMakeLists.txt), so
+// that its loops vectorise: std::sqrt need not call the C library to set errno for a negative
+// argument, which none of these can be (the numbers are those of IEEE sqrt either way).
 #pragma once
 
 #include "koppel/synthesis/atlas.hpp"
@@ -30,6 +31,9 @@ struct AtlasTraceBlock {
 // arithmetic (no libm call): the same numbers on every machine and C library. False when the
 // loop does not close at a sample.
 bool TraceAtlasSamples(const AtlasEntry& e, const AtlasCrankRange& range, int first, int count, int n, AtlasTraceBlock* t);
+
+// DescribeCurve (atlas.hpp) of the closed path path[0..n).
+bool DescribeAtlasPath(const Eigen::Vector2d* path, int n, CurveDescriptor* descriptor);
 
 // sin and cos of |x| <= 8 to within an ulp or two (TraceAtlasSamples' own, tested against libm).
 void AtlasSinCos(double x, double& sine, double& cosine);

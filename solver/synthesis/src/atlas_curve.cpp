@@ -1,11 +1,14 @@
-#include "atlas_trace.hpp"
+#include "atlas_curve.hpp"
 
 #include "koppel/core/angles.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
+#include <complex>
 #include <cstdint>
+#include <vector>
 
 namespace koppel {
 
@@ -110,5 +113,95 @@ bool TraceAtlasSamples(const AtlasEntry& e, const AtlasCrankRange& f, int first,
   return open == 0;
 }
 
+
+namespace {
+
+using Complex = std::complex<double>;
+constexpr int kResample = 64;  // points of equal arc length the descriptor is taken from
+constexpr int kHarmonicCount = 2 * kAtlasHarmonics + 1;
+
+// e^{-2 pi i k j / kResample} at [j][k + K] for j = 0..kResample-1, k = -K..K: the very numbers
+// std::polar gave in the sum (made once, the same expression), 704 sines and cosines a curve fewer.
+using Twiddles = std::array<std::array<Complex, kHarmonicCount>, kResample>;
+const Twiddles& FourierTwiddles() {
+  static const Twiddles table = [] {
+    Twiddles t;
+    for (int k = -kAtlasHarmonics; k <= kAtlasHarmonics; ++k) {
+      for (int j = 0; j < kResample; ++j) t[j][k + kAtlasHarmonics] = std::polar(1.0, -2 * kPi * k * j / kResample);
+    }
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace
+
+bool DescribeAtlasPath(const Eigen::Vector2d* path, int n, CurveDescriptor* d) {
+  if (n < 3) return false;
+  // resample at equal arc length along the closed polygon
+  std::array<double, kAtlasTraceBlock + 1> s_small;  // the build's curves need no allocation
+  std::vector<double> s_large;
+  double* s = s_small.data();
+  if (n > kAtlasTraceBlock) {
+    s_large.resize(n + 1);
+    s = s_large.data();
+  }
+  // the sides' lengths first (a loop that vectorises), then their running sum
+  for (int i = 0; i + 1 < n; ++i) s[i + 1] = (path[i + 1] - path[i]).norm();
+  s[n] = (path[0] - path[n - 1]).norm();
+  s[0] = 0.0;
+  for (int i = 0; i < n; ++i) s[i + 1] += s[i];
+  const double total = s[n];
+  // the largest distance from the first point: sqrt is monotonic and correctly rounded, so the
+  // root of the largest square is the largest root
+  double extent2 = 0;
+  for (int i = 0; i < n; ++i) {
+    const double e2 = (path[i] - path[0]).squaredNorm();
+    extent2 = e2 > extent2 ? e2 : extent2;
+  }
+  const double extent = std::sqrt(extent2);
+  if (!(total > 0) || !(extent > 1e-12 * total) || !std::isfinite(total)) return false;
+  std::array<Complex, kResample> z;
+  int seg = 0;
+  for (int j = 0; j < kResample; ++j) {
+    const double at = total * j / kResample;
+    while (seg < n - 1 && s[seg + 1] <= at) ++seg;
+    const double w = s[seg + 1] > s[seg] ? (at - s[seg]) / (s[seg + 1] - s[seg]) : 0.0;
+    const Eigen::Vector2d p = (1 - w) * path[seg] + w * path[seg + 1 < n ? seg + 1 : 0];
+    z[j] = {p.x(), p.y()};
+  }
+  // c_k = sum_j z_j w_kj / kResample, each sum in the order of j as before, but the 11 sums side
+  // by side (independent chains the processor overlaps); the products written out as
+  // std::complex forms them for finite numbers, (ac - bd) + (ad + bc) i
+  const Twiddles& twiddles = FourierTwiddles();
+  std::array<double, kHarmonicCount> re{}, im{};
+  for (int j = 0; j < kResample; ++j) {
+    const double zr = z[j].real(), zi = z[j].imag();
+    for (int k = 0; k < kHarmonicCount; ++k) {
+      const double wr = twiddles[j][k].real(), wi = twiddles[j][k].imag();
+      re[k] += zr * wr - zi * wi;
+      im[k] += zr * wi + zi * wr;
+    }
+  }
+  std::array<Complex, kHarmonicCount> c{};  // c[k + K] = c_k
+  for (int k = 0; k < kHarmonicCount; ++k) c[k] = Complex(re[k], im[k]) / static_cast<double>(kResample);
+  auto at = [&](int k) -> Complex& { return c[k + kAtlasHarmonics]; };
+  // traverse so that |c_1| >= |c_-1| (reversing time swaps c_k and c_-k)
+  if (std::abs(at(-1)) > std::abs(at(1))) std::reverse(c.begin(), c.end());
+  d->centre = at(0);
+  d->scale = std::abs(at(1));
+  if (!(d->scale > 1e-12 * total)) return false;
+  // turn by alpha and shift time by tau: c_k -> c_k e^{i(alpha + k tau)}; c_1 and c_-1 real
+  const double alpha = -0.5 * (std::arg(at(1)) + std::arg(at(-1))), tau = -0.5 * (std::arg(at(1)) - std::arg(at(-1)));
+  d->turn = alpha;
+  int f = 0;
+  for (int k = -kAtlasHarmonics; k <= kAtlasHarmonics; ++k) {
+    if (k == 0 || k == 1) continue;
+    const Complex v = at(k) * std::polar(1.0, alpha + k * tau) / d->scale;
+    d->features[f++] = v.real();
+    d->features[f++] = v.imag();
+  }
+  return true;
+}
 
 }  // namespace koppel

@@ -50,29 +50,28 @@ char* General(char* out, double value) {
   return std::to_chars(out, out + kG12Chars, value, std::chars_format::general, kDigits).ptr;
 }
 
-}  // namespace
-
-char* WriteG12(char* out, double value) {
-  const std::uint64_t bits = std::bit_cast<std::uint64_t>(value);
+// The 12 significant digits of |value| = m 2^q exactly (the digits' decimal exponent in *e),
+// rounded half to even; false where this range's arithmetic does not reach (then to_chars).
+bool RoundTo12Digits(std::uint64_t bits, std::uint64_t* rounded, int* exponent) {
   const int biased = static_cast<int>((bits >> 52) & 0x7ff);
-  if (biased == 0 || biased == 0x7ff) return General(out, value);  // zero, subnormal, inf, nan
+  if (biased == 0 || biased == 0x7ff) return false;  // zero, subnormal, inf, nan
   // value = +-m 2^q exactly, 2^52 <= m < 2^53
   const std::uint64_t m = (bits & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
   const int q = biased - 1075;
   // the decimal exponent e of |value| is floor(log10 2^(q+52)) or one more (78913 / 2^18 ~ log10 2)
   int e = ((q + 52) * 78913) >> 18;
   int k = kDigits - 1 - e;  // |value| 10^k has 12 digits before the point (or 13, then e is one more)
-  if (k < 0 || k > kMaxScale || q >= 0) return General(out, value);
+  if (k < 0 || k > kMaxScale || q >= 0) return false;
   const int shift = -q;  // 12 <= shift <= 127 in this range
   U128 product = static_cast<U128>(m) * kPowerOf10[k];
   std::uint64_t digits = static_cast<std::uint64_t>(product >> shift);
   if (digits >= kHigh) {
     ++e;
-    if (--k < 0) return General(out, value);
+    if (--k < 0) return false;
     product = static_cast<U128>(m) * kPowerOf10[k];
     digits = static_cast<std::uint64_t>(product >> shift);
   }
-  if (digits < kLow || digits >= kHigh) return General(out, value);  // never: the estimate is off by at most one
+  if (digits < kLow || digits >= kHigh) return false;  // never: the estimate is off by at most one
   // round the exact remainder half to even
   const U128 remainder = product & ((U128{1} << shift) - 1), half = U128{1} << (shift - 1);
   if (remainder > half || (remainder == half && (digits & 1) != 0)) ++digits;
@@ -80,13 +79,15 @@ char* WriteG12(char* out, double value) {
     digits = kLow;
     ++e;
   }
-  char d[kDigits];
-  WriteSixDigits(d, static_cast<std::uint32_t>(digits / 1'000'000));
-  WriteSixDigits(d + 6, static_cast<std::uint32_t>(digits % 1'000'000));
-  int n = kDigits;  // significant digits without the trailing zeros (%g drops them)
-  while (n > 1 && d[n - 1] == '0') --n;
-  if (bits >> 63) *out++ = '-';
-  if (e < -4 || e >= kDigits) {  // d.ddde-XX, at least two exponent digits
+  *rounded = digits;
+  *exponent = e;
+  return true;
+}
+
+// %g's layout of the n significant digits d (trailing zeros dropped) with decimal exponent e:
+// d.ddde-XX (at least two exponent digits) below 1e-4 or from 1e12, else fixed.
+char* LayOut(char* out, const char* d, int n, int e) {
+  if (e < -4 || e >= kDigits) {
     *out++ = d[0];
     if (n > 1) {
       *out++ = '.';
@@ -112,6 +113,22 @@ char* WriteG12(char* out, double value) {
     for (int i = e + 1; i < n; ++i) *out++ = d[i];
   }
   return out;
+}
+
+}  // namespace
+
+char* WriteG12(char* out, double value) {
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(value);
+  std::uint64_t digits = 0;
+  int e = 0;
+  if (!RoundTo12Digits(bits, &digits, &e)) return General(out, value);
+  char d[kDigits];
+  WriteSixDigits(d, static_cast<std::uint32_t>(digits / 1'000'000));
+  WriteSixDigits(d + 6, static_cast<std::uint32_t>(digits % 1'000'000));
+  int n = kDigits;  // significant digits without the trailing zeros (%g drops them)
+  while (n > 1 && d[n - 1] == '0') --n;
+  if (bits >> 63) *out++ = '-';
+  return LayOut(out, d, n, e);
 }
 
 }  // namespace koppel

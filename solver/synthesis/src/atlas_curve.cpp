@@ -113,7 +113,6 @@ bool TraceAtlasSamples(const AtlasEntry& e, const AtlasCrankRange& f, int first,
   return open == 0;
 }
 
-
 namespace {
 
 using Complex = std::complex<double>;
@@ -134,11 +133,9 @@ const Twiddles& FourierTwiddles() {
   return table;
 }
 
-}  // namespace
-
-bool DescribeAtlasPath(const Eigen::Vector2d* path, int n, CurveDescriptor* d) {
-  if (n < 3) return false;
-  // resample at equal arc length along the closed polygon
+// The closed polygon path[0..n) resampled at kResample points of equal arc length, starting at
+// path[0]; false when it has no length or no extent. *total_length: its length.
+bool ResampleClosed(const Eigen::Vector2d* path, int n, std::array<Complex, kResample>* z, double* total_length) {
   std::array<double, kAtlasTraceBlock + 1> s_small;  // the build's curves need no allocation
   std::vector<double> s_large;
   double* s = s_small.data();
@@ -161,15 +158,25 @@ bool DescribeAtlasPath(const Eigen::Vector2d* path, int n, CurveDescriptor* d) {
   }
   const double extent = std::sqrt(extent2);
   if (!(total > 0) || !(extent > 1e-12 * total) || !std::isfinite(total)) return false;
-  std::array<Complex, kResample> z;
   int seg = 0;
   for (int j = 0; j < kResample; ++j) {
     const double at = total * j / kResample;
     while (seg < n - 1 && s[seg + 1] <= at) ++seg;
     const double w = s[seg + 1] > s[seg] ? (at - s[seg]) / (s[seg + 1] - s[seg]) : 0.0;
     const Eigen::Vector2d p = (1 - w) * path[seg] + w * path[seg + 1 < n ? seg + 1 : 0];
-    z[j] = {p.x(), p.y()};
+    (*z)[j] = {p.x(), p.y()};
   }
+  *total_length = total;
+  return true;
+}
+
+}  // namespace
+
+bool DescribeAtlasPath(const Eigen::Vector2d* path, int n, CurveDescriptor* d) {
+  if (n < 3) return false;
+  std::array<Complex, kResample> z;
+  double total = 0;
+  if (!ResampleClosed(path, n, &z, &total)) return false;
   // c_k = sum_j z_j w_kj / kResample, each sum in the order of j as before, but the 11 sums side
   // by side (independent chains the processor overlaps); the products written out as
   // std::complex forms them for finite numbers, (ac - bd) + (ad + bc) i

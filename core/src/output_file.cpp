@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
+#include <string_view>
 #include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -91,7 +93,7 @@ void ProbeFolder(const fs::path& folder, const std::string& target) {
 }
 
 // Writes all of `text` to fd; errno of the first failure, 0 on success.
-int WriteAll(int fd, const std::string& text) {
+int WriteAll(int fd, std::string_view text) {
   size_t done = 0;
   while (done < text.size()) {
     const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
@@ -152,6 +154,12 @@ void MakeOutputDirectory(const std::string& path) {
 }
 
 void WriteFileAtomically(const std::string& path, const std::string& text) {
+  AtomicFileWriter file(path);
+  file.Write(text);
+  file.Commit();
+}
+
+AtomicFileWriter::AtomicFileWriter(const std::string& path) : path_(path) {
   const fs::path target(path);
   if (!target.has_filename()) Refuse(path, "it names a folder, not a file");
   struct stat existing {};
@@ -160,19 +168,45 @@ void WriteFileAtomically(const std::string& path, const std::string& text) {
     if (const std::string why = RefusalFor(path, existing); !why.empty()) Refuse(path, why);
   }
   Temporary t = MakeTemporary(FolderOf(path), target.filename().string(), path);
+  fd_ = t.fd;
+  slot_ = t.slot;
+  temporary_ = std::move(t.path);
+  open_ = true;
   // an existing file keeps its permissions; a new one gets the usual 0666 less the umask
-  const mode_t mode = exists ? existing.st_mode & 0777 : NewFileMode();
-  int error = WriteAll(t.fd, text);
-  if (error == 0 && ::fchmod(t.fd, mode) != 0) error = errno;
-  if (error == 0 && ::fsync(t.fd) != 0) error = errno;
-  if (::close(t.fd) != 0 && error == 0) error = errno;
-  t.fd = -1;
-  if (error == 0 && ::rename(t.path.c_str(), path.c_str()) != 0) error = errno;
+  mode_ = exists ? existing.st_mode & 0777 : NewFileMode();
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+  if (!open_) return;
+  Temporary t{fd_, slot_, temporary_};
+  Discard(t);
+}
+
+void AtomicFileWriter::Write(std::string_view bytes) {
+  if (!open_) throw std::logic_error("koppel: AtomicFileWriter::Write after Commit or a failure");
+  if (const int error = WriteAll(fd_, bytes); error != 0) {
+    Temporary t{fd_, slot_, temporary_};
+    open_ = false;
+    Discard(t);
+    WriteFailed(path_, error);
+  }
+}
+
+void AtomicFileWriter::Commit() {
+  if (!open_) throw std::logic_error("koppel: AtomicFileWriter::Commit after Commit or a failure");
+  int error = 0;
+  if (::fchmod(fd_, static_cast<mode_t>(mode_)) != 0) error = errno;
+  if (error == 0 && ::fsync(fd_) != 0) error = errno;
+  if (::close(fd_) != 0 && error == 0) error = errno;
+  fd_ = -1;
+  if (error == 0 && ::rename(temporary_.c_str(), path_.c_str()) != 0) error = errno;
+  open_ = false;
+  Temporary t{-1, slot_, temporary_};
   if (error != 0) {
     Discard(t);
-    WriteFailed(path, error);
+    WriteFailed(path_, error);
   }
-  ForgetTemporaryFile(t.slot);
+  ForgetTemporaryFile(slot_);
 }
 
 }  // namespace koppel::io

@@ -136,3 +136,45 @@ TEST_CASE("an atomic write makes a new file, replaces one keeping its mode, and 
 }
 
 }  // namespace koppel::output_file_test
+
+namespace koppel::output_file_test {
+
+TEST_CASE("a write in pieces replaces the file only at Commit; abandoned, it leaves the old file and no temporary", "[io][output]") {
+  test::TempDir dir;
+  const std::string out = (dir.path() / "table.csv").string();
+  io::WriteFileAtomically(out, "old\n");
+  {
+    io::AtomicFileWriter file(out);
+    file.Write("a,b\n");
+    file.Write("1,2\n");
+    CHECK(test::ReadText(out) == "old\n");  // the target is untouched until Commit
+    CHECK(Listing(dir.path()).size() == 2);  // the target and the temporary
+    file.Commit();
+  }
+  CHECK(test::ReadText(out) == "a,b\n1,2\n");
+  CHECK(Listing(dir.path()) == std::vector<std::string>{"table.csv"});
+  // an exception between the pieces: the writer is destroyed without Commit
+  try {
+    io::AtomicFileWriter file(out);
+    file.Write("half a table");
+    throw std::runtime_error("the sweep failed");
+  } catch (const std::runtime_error&) {
+  }
+  CHECK(test::ReadText(out) == "a,b\n1,2\n");
+  CHECK(Listing(dir.path()) == std::vector<std::string>{"table.csv"});
+  // a write after Commit is a programming error, not a silent no-op
+  io::AtomicFileWriter file(out);
+  file.Commit();
+  CHECK_THROWS_AS(file.Write("late"), std::logic_error);
+  CHECK(test::ReadText(out).empty());
+}
+
+TEST_CASE("a write in pieces refuses what a whole write refuses, before any temporary is made", "[io][output]") {
+  test::TempDir dir;
+  const fs::path link = dir.path() / "link.csv";
+  fs::create_symlink(dir.path() / "elsewhere.csv", link);
+  CHECK_THAT(ErrorOf([&] { io::AtomicFileWriter file(link.string()); }), Catch::Contains("symbolic link"));
+  CHECK(Listing(dir.path()) == std::vector<std::string>{"link.csv"});
+}
+
+}  // namespace koppel::output_file_test

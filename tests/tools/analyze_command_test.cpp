@@ -6,6 +6,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 namespace koppel::analyze_command_test {
@@ -92,6 +94,51 @@ TEST_CASE("analyze: a sweep through a dead centre of the drive stops with exit 1
   CHECK_THAT(r.err, Catch::Contains("singular") && Catch::Contains("133.0795"));
   CHECK(Lines(r.out).size() == 25);  // header + 110 .. 133 deg: the rows that exist, no NaN
   CHECK(r.out.find("nan") == std::string::npos);
+}
+
+TEST_CASE("analyze -o writes, piece by piece, the very bytes it prints, every cell in printf's %.12g", "[cli]") {
+  test::TempDir dir;
+  const std::string out = (dir.path() / "long.csv").string();
+  // 36 001 rows, about 3.5 MB: several of the 1 MB pieces the file is written in
+  const std::string args = "analyze " + test::CatalogEntryPath("slider-crank-offset") + " --from 0 --to 360 --step 0.01";
+  const test::RunResult to_file = test::RunKoppel(args + " -o " + out), printed = test::RunKoppel(args);
+  REQUIRE(to_file.exit_code == 0);
+  REQUIRE(printed.exit_code == 0);
+  const std::string text = test::ReadText(out);
+  CHECK(text.size() > 3'000'000);
+  CHECK(text == printed.out);
+  std::vector<std::string> listing;
+  for (const auto& item : std::filesystem::directory_iterator(dir.path())) listing.push_back(item.path().filename().string());
+  CHECK(listing == std::vector<std::string>{"long.csv"});  // no temporary left
+  // the reference: the C library's printf of the number each cell reads as
+  const std::vector<std::string> lines = Lines(text);
+  REQUIRE(lines.size() == 36002);
+  int cells = 0, differ = 0;
+  for (size_t i = 1; i < lines.size(); ++i) {
+    std::istringstream row(lines[i]);
+    for (std::string cell; std::getline(row, cell, ',');) {
+      char reference[32];
+      std::snprintf(reference, sizeof reference, "%.12g", std::stod(cell));
+      ++cells;
+      if (cell != reference && cell != "0" && ++differ <= 3) FAIL_CHECK("row " << i << ": " << cell << " is " << reference << " in %.12g");
+    }
+  }
+  CHECK(cells == 36001 * 8);
+  CHECK(differ == 0);
+}
+
+TEST_CASE("analyze -o of a stopped sweep writes the rows it reached, as it prints them", "[cli]") {
+  test::TempDir dir;
+  std::string text = test::ReadText(test::CatalogEntryPath("mzc-crank-rocker"));
+  text.replace(text.find("  joint: A0\n"), 12, "  joint: B0\n");  // the rocker drives: a dead centre at 133 deg
+  text.replace(text.find("  input: 180\n"), 13, "  input: 110\n");
+  const std::string file = dir.Write("rocker.yaml", text), out = (dir.path() / "rows.csv").string();
+  const test::RunResult to_file = test::RunKoppel("analyze " + file + " --from 110 --to 180 -o " + out);
+  const test::RunResult printed = test::RunKoppel("analyze " + file + " --from 110 --to 180");
+  CHECK(to_file.exit_code == 1);
+  CHECK(printed.exit_code == 1);
+  CHECK(Lines(test::ReadText(out)).size() == 25);
+  CHECK(test::ReadText(out) == printed.out);
 }
 
 TEST_CASE("--help teaches", "[cli]") {

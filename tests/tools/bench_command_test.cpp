@@ -81,3 +81,24 @@ TEST_CASE("bench: a filter that matches nothing, a broken expression and an unkn
 }
 
 }  // namespace koppel::bench_command_test
+
+namespace koppel::bench_command_test {
+
+TEST_CASE("bench: the atlas build per curve against 10 us (100 000 curves per second on one core)", "[cli][bench]") {
+  const test::RunResult r = test::RunKoppel("bench --filter atlas-build --format json --min-time 0.02");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto rows = ByName(r.out);
+  REQUIRE(rows.size() == 1);
+  const nlohmann::json& row = rows.at("atlas-build");
+  CHECK(row.at("per") == "curve");
+  CHECK(row.at("baseline_name") == "budget");
+  CHECK(row.at("baseline").get<double>() == 10000.0);
+  const double ns = row.at("ns_per_step").get<double>();
+  CHECK(ns > 0.0);
+  CHECK(row.at("ratio").get<double>() == Approx(ns / 10000.0).epsilon(1e-12));
+  const test::RunResult table = test::RunKoppel("bench --filter atlas-build --min-time 0.02");
+  CHECK_THAT(table.out, Catch::Contains("atlas-build") && Catch::Contains("/curve"));
+}
+
+}  // namespace koppel::bench_command_test

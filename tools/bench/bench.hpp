@@ -12,12 +12,13 @@
 
 namespace koppel::bench {
 
-enum class Per { kStep, kRun };  // the time is reported per walk step (ns) or per run (ms)
+// the time is reported per walk step (ns), per run (ms) or per atlas curve (us)
+enum class Per { kStep, kRun, kCurve };
 
 struct Case {
   std::string name;
   Per per = Per::kStep;
-  long steps_per_iteration = 1;  // kStep: the walk steps one benchmark iteration takes
+  long steps_per_iteration = 1;  // kStep, kCurve: the walk steps (curves) one benchmark iteration takes
   // The baseline: another case's name (its time per step times baseline_factor), or empty with
   // budget_ns > 0 (a time budget), or neither (no ratio).
   std::string baseline;
@@ -37,5 +38,6 @@ std::vector<Case> WalkCases();       // walk_bench.cpp: four-bar, slider-crank, 
 std::vector<Case> SlvsCases();       // slvs_bench.cpp: SolveSpace's libslvs side by side
 std::vector<Case> SynthesisCases();  // synthesis_bench.cpp: dead-centre synthesis, chart, fit
 std::vector<Case> AnalyzeCases();    // analyze_bench.cpp: koppel analyze to a CSV file
+std::vector<Case> AtlasBuildCases();  // atlas_build_bench.cpp: the atlas of path synthesis on one core
 
 }  // namespace koppel::bench

@@ -5,10 +5,12 @@
 #include "sweep_report.hpp"
 
 #include "koppel/api/model.hpp"
+#include "koppel/core/number_text.hpp"
 
 #include <fmt/core.h>
 
 #include <cmath>
+#include <optional>
 
 namespace koppel::cli {
 namespace analyze_command {  // this file's own names, apart from the other commands' in a unity build
@@ -29,19 +31,24 @@ struct AnalyzeArgs {
 // an output that is not differentiable) is NaN in the table: empty in CSV, null in JSON, never a number.
 void AppendCsvHeader(std::string& out, const SweepTable& t) {
   const size_t width = t.columns.size();
-  out.reserve(static_cast<size_t>(t.rows) * (width + 1) * 16);  // about 16 characters a number
   for (size_t c = 0; c < width; ++c) out += (c ? "," : "") + t.columns[c];
   out += "\n";
 }
 
+// The row is written in place at the end of `out` (room for every cell, then cut to length):
+// one resize a row instead of an append a cell, for analyze's millions of cells.
 void AppendCsvRow(std::string& out, const SweepTable& t, const double* row) {
-  const size_t width = t.columns.size();
-  AppendNumber(out, row[0]);
+  const size_t width = t.columns.size(), start = out.size();
+  out.resize(start + width * (kG12Chars + 1) + 1);
+  char* end = WriteNumber(out.data() + start, row[0]);
   for (size_t c = 1; c + 1 < width; ++c) {
-    out += ',';
-    if (!std::isnan(row[c])) AppendNumber(out, row[c]);
+    *end++ = ',';
+    if (!std::isnan(row[c])) end = WriteNumber(end, row[c]);
   }
-  out += row[width - 1] != 0 ? ",1\n" : ",0\n";
+  *end++ = ',';
+  *end++ = row[width - 1] != 0 ? '1' : '0';
+  *end++ = '\n';
+  out.resize(static_cast<size_t>(end - out.data()));
 }
 
 nlohmann::json JsonRow(const SweepTable& t, const double* values) {
@@ -78,21 +85,24 @@ void RunAnalyze(const AnalyzeArgs& args) {
   const Model model = LoadModel(args.file, args.sets);
   const SweepSpan span = SpanOf(args, model);
   const AtBranchPoint action = ParseBranchPointFlag(args.at_branch_point);
-  std::string csv;
+  const bool csv = args.format == "csv";
+  std::optional<StreamedOutput> csv_out;  // CSV goes out as it is made (the file appears whole at Finish)
+  if (csv) csv_out.emplace(args.out);
   nlohmann::json rows = nlohmann::json::array();
   const SweepTable table = Checked([&] {
     return model.Sweep(span.from, span.to, span.step, args.order, action, [&](const SweepTable& t, int i, const double* row) {
-      if (args.format == "csv") {
-        if (i == 0) AppendCsvHeader(csv, t);
-        AppendCsvRow(csv, t, row);
+      if (csv) {
+        if (i == 0) AppendCsvHeader(csv_out->text(), t);
+        AppendCsvRow(csv_out->text(), t, row);
+        csv_out->Flush();
       } else {
         rows.push_back(JsonRow(t, row));
       }
     });
   });
-  if (args.format == "csv") {
-    if (table.rows == 0) AppendCsvHeader(csv, table);  // no row reached: the header alone
-    WriteOutput(args.out, csv);
+  if (csv) {
+    if (table.rows == 0) AppendCsvHeader(csv_out->text(), table);  // no row reached: the header alone
+    csv_out->Finish();
   } else {
     nlohmann::json j = {{"columns", table.columns}, {"units", table.units}, {"rows", rows}};
     j["mechanism"] = model.mechanism().name;

@@ -1,12 +1,13 @@
 #include "common.hpp"
 
+#include "koppel/core/number_text.hpp"
+
 #include "koppel/core/expression.hpp"
 #include "koppel/koppel.hpp"  // Version
 
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <stdexcept>
@@ -83,10 +84,17 @@ void AppendNumber(std::string& out, double value) {
     out += '0';
     return;
   }
-  // printf's %.12g, written without a temporary string (analyze writes millions of numbers)
-  char buffer[32];
-  const std::to_chars_result written = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 12);
-  out.append(buffer, written.ptr);
+  char buffer[kG12Chars];  // printf's %.12g, written without a temporary string
+  out.append(buffer, WriteG12(buffer, value));
+}
+
+char* WriteNumber(char* out, double value) {
+  if (!std::isfinite(value)) throw std::logic_error("koppel: refusing to print a non-finite number");
+  if (value == 0.0) {  // no "-0"
+    *out = '0';
+    return out + 1;
+  }
+  return WriteG12(out, value);
 }
 
 std::string Table::ToCsv() const {

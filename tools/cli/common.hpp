@@ -6,9 +6,11 @@
 #include "koppel/core/diagnostic.hpp"
 #include "koppel/core/limits.hpp"
 #include "koppel/core/mechanism.hpp"
+#include "koppel/core/output_file.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -52,6 +54,28 @@ void ClaimOutputs();
 // into exit 2 for a refused target and 1 for a failed write), or to stdout when path is empty or
 // "-" (Exit{1} when stdout is closed or full).
 void WriteOutput(const std::string& path, const std::string& text);
+// The same text written as it is made, for outputs of tens of megabytes (analyze): append to
+// text() and call Flush() now and then; to a file, every megabyte goes to the temporary file of
+// an io::AtomicFileWriter (the target is replaced at Finish(), or left as it was when an
+// exception ends the command first), so the whole text is never held and each piece is copied
+// while it is still in the cache. To stdout the text is held and written at Finish(), as
+// WriteOutput does, so that a failure half-way prints nothing.
+class StreamedOutput {
+ public:
+  explicit StreamedOutput(const std::string& path);
+  ~StreamedOutput();
+  std::string& text() { return text_; }
+  void Flush() {
+    if (file_ && text_.size() >= kPiece) WritePiece();
+  }
+  void Finish();
+
+ private:
+  static constexpr size_t kPiece = size_t{1} << 20;  // bytes: fits the cache, few system calls
+  void WritePiece();
+  std::string path_, text_;
+  std::unique_ptr<io::AtomicFileWriter> file_;
+};
 // Makes the directory of -o DIR and its missing parents (io::MakeOutputDirectory).
 void MakeOutputDirectory(const std::string& path);
 
@@ -88,6 +112,8 @@ void CheckCount(double count, const std::string& options, const CountLimit& limi
 std::string FormatNumber(double value);
 // The same appended to `out`.
 void AppendNumber(std::string& out, double value);
+// The same written at `out`, which has room for koppel::kG12Chars (number_text.hpp); returns the end.
+char* WriteNumber(char* out, double value);
 
 struct Table {
   std::vector<std::string> columns;

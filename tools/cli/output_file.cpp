@@ -77,6 +77,26 @@ void WriteOutput(const std::string& path, const std::string& text) {
   io::WriteFileAtomically(path, text);
 }
 
+StreamedOutput::StreamedOutput(const std::string& path) : path_(path) {
+  if (!path.empty() && path != "-") {
+    file_ = std::make_unique<io::AtomicFileWriter>(path);
+    text_.reserve(kPiece + kPiece / 4);  // a piece and the row that crossed its end
+  }
+}
+
+StreamedOutput::~StreamedOutput() = default;
+
+void StreamedOutput::WritePiece() {
+  file_->Write(text_);
+  text_.clear();
+}
+
+void StreamedOutput::Finish() {
+  if (!file_) return WriteOutput(path_, text_);
+  WritePiece();
+  file_->Commit();
+}
+
 void MakeOutputDirectory(const std::string& path) { io::MakeOutputDirectory(path); }
 
 int FinishStandardOutput(int code) {

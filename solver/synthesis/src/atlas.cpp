@@ -4,24 +4,24 @@
 #include "koppel/core/limits.hpp"
 #include "koppel/core/memory.hpp"
 #include "koppel/synthesis/atlas_file.hpp"
+#include "atlas_curve.hpp"
 #include "worker_threads.hpp"
 
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <thread>
 
 namespace koppel {
 namespace {
 
-constexpr int kResample = 64;       // points of equal arc length the descriptor is taken from
 constexpr int kTraceSamples = 256;  // points of a curve for its descriptor
 constexpr double kLogLength = 1.6094379124341003;  // log 5: lengths in [1/5, 5]
 constexpr double kShortestArc = kPi / 18;  // 10 deg of crank travel at least
 
-using Complex = std::complex<double>;
 
 // SplitMix64 (Steele, Lea, Flood 2014): a counter-based seed for entry `index`, so that any
 // shard or thread draws the same entry.
@@ -41,50 +41,11 @@ struct Draw {
   }
 };
 
-// The crank angles at which the loop closes: [lo, hi] (hi - lo < 2 pi) or the full turn.
-struct Feasible {
-  bool any = false, full = false;
-  double lo = 0, hi = 0;
-};
-
-// |A - B0|^2 = a^2 + 1 - 2 a cos(phi) must lie in [(b - c)^2, (b + c)^2].
-Feasible CrankAngles(double a, double b, double c, int side) {
-  Feasible f;
-  const double cmin = (a * a + 1 - (b + c) * (b + c)) / (2 * a), cmax = (a * a + 1 - (b - c) * (b - c)) / (2 * a);
-  if (cmin > cmax || cmin > 1 || cmax < -1) return f;
-  f.any = true;
-  if (cmin <= -1 && cmax >= 1) {
-    f.full = true;
-    f.lo = 0;
-    f.hi = 2 * kPi;
-  } else if (cmin > -1 && cmax < 1) {  // two intervals, mirror images in the frame line
-    f.lo = std::acos(cmax);
-    f.hi = std::acos(cmin);
-    if (side < 0) {
-      f.lo = -std::acos(cmin);
-      f.hi = -std::acos(cmax);
-    }
-  } else if (cmin <= -1) {  // one interval through pi
-    f.lo = std::acos(cmax);
-    f.hi = 2 * kPi - f.lo;
-  } else {  // one interval through 0
-    f.hi = std::acos(cmin);
-    f.lo = -f.hi;
-  }
-  return f;
-}
-
-// B for crank angle phi on `branch`; the triangle's angle clamped at the limit positions, where
-// rounding may leave |cos| a few ulps above 1.
-bool JointB(double a, double b, double c, double phi, int branch, Eigen::Vector2d* pa, Eigen::Vector2d* pb) {
-  *pa = a * Eigen::Vector2d(std::cos(phi), std::sin(phi));
-  const Eigen::Vector2d d = Eigen::Vector2d(1, 0) - *pa;
-  const double r = d.norm();
-  double cos_gamma = (b * b + r * r - c * c) / (2 * b * r);
-  if (!(std::abs(cos_gamma) <= 1 + 1e-9)) return false;
-  cos_gamma = std::clamp(cos_gamma, -1.0, 1.0);
-  const double gamma = std::atan2(d.y(), d.x()) + branch * std::acos(cos_gamma);
-  *pb = *pa + b * Eigen::Vector2d(std::cos(gamma), std::sin(gamma));
+// The coupler points of n <= kAtlasTraceBlock samples (TraceAtlasCurve without the joints, into `k`).
+bool TraceCouplerPoints(const AtlasEntry& e, const AtlasCrankRange& f, int n, Eigen::Vector2d* k) {
+  AtlasTraceBlock t;
+  if (!TraceAtlasSamples(e, f, 0, n, n, &t)) return false;
+  for (int i = 0; i < n; ++i) k[i] = Eigen::Vector2d(t.kx[i], t.ky[i]);
   return true;
 }
 
@@ -92,7 +53,7 @@ bool JointB(double a, double b, double c, double phi, int branch, Eigen::Vector2
 
 AtlasEntry DrawAtlasEntry(std::uint64_t seed, std::uint64_t index) {
   Draw draw{Mix(seed) ^ Mix(index + 0x632be59bd9b4e019ULL)};
-  AtlasCurve curve;
+  std::array<Eigen::Vector2d, kTraceSamples> curve;  // on the stack: a build allocates nothing per curve
   for (;;) {
     AtlasEntry e;
     e.seed = seed;
@@ -104,81 +65,39 @@ AtlasEntry DrawAtlasEntry(std::uint64_t seed, std::uint64_t index) {
     e.q = -1.5 + 3 * draw.Next();
     e.branch = draw.Next() < 0.5 ? 1 : -1;
     e.side = draw.Next() < 0.5 ? 1 : -1;
-    const Feasible f = CrankAngles(e.crank, e.coupler, e.rocker, e.side);
+    const AtlasCrankRange f = AtlasCrankAngles(e.crank, e.coupler, e.rocker, e.side);
     if (!f.any || f.hi - f.lo < kShortestArc) continue;
     e.closed = f.full ? 1 : 0;
     CurveDescriptor d;
-    if (!TraceAtlasCurve(e, kTraceSamples, &curve) || !DescribeCurve(curve.coupler_point, &d)) continue;
+    if (!TraceCouplerPoints(e, f, kTraceSamples, curve.data()) || !DescribeAtlasPath(curve.data(), kTraceSamples, &d)) continue;
     for (int k = 0; k < kAtlasFeatures; ++k) e.descriptor[k] = static_cast<float>(d.features[k]);
     return e;
   }
 }
 
 bool TraceAtlasCurve(const AtlasEntry& e, int samples, AtlasCurve* curve) {
-  const Feasible f = CrankAngles(e.crank, e.coupler, e.rocker, e.side);
+  const AtlasCrankRange f = AtlasCrankAngles(e.crank, e.coupler, e.rocker, e.side);
   if (!f.any || samples < 3) return false;
   curve->coupler_point.resize(samples);
   curve->a.resize(samples);
   curve->b.resize(samples);
   curve->crank_angle.resize(samples);
-  const double mid = 0.5 * (f.lo + f.hi), half = 0.5 * (f.hi - f.lo);
-  for (int i = 0; i < samples; ++i) {
-    const double t = 2 * kPi * i / samples;
-    // a full turn: phi = t; an interval: there and back, phi = mid - half cos t (smooth at the limits)
-    const double phi = f.full ? t : mid - half * std::cos(t);
-    Eigen::Vector2d a, b;
-    if (!JointB(e.crank, e.coupler, e.rocker, phi, e.branch, &a, &b)) return false;
-    const Eigen::Vector2d ab = b - a, normal(-ab.y(), ab.x());
-    curve->a[i] = a;
-    curve->b[i] = b;
-    curve->crank_angle[i] = phi;
-    curve->coupler_point[i] = a + e.p * ab + e.q * normal;
+  AtlasTraceBlock t;  // the same points as the build's TraceCouplerPoints, a block at a time
+  for (int first = 0; first < samples; first += kAtlasTraceBlock) {
+    const int count = std::min(kAtlasTraceBlock, samples - first);
+    if (!TraceAtlasSamples(e, f, first, count, samples, &t)) return false;
+    for (int i = 0; i < count; ++i) {
+      curve->crank_angle[first + i] = t.phi[i];
+      curve->a[first + i] = Eigen::Vector2d(t.ax[i], t.ay[i]);
+      curve->b[first + i] = Eigen::Vector2d(t.bx[i], t.by[i]);
+      curve->coupler_point[first + i] = Eigen::Vector2d(t.kx[i], t.ky[i]);
+    }
   }
   return true;
 }
 
 bool DescribeCurve(const std::vector<Eigen::Vector2d>& path, CurveDescriptor* d) {
-  const int n = static_cast<int>(path.size());
-  if (n < 3) return false;
-  // resample at equal arc length along the closed polygon
-  std::vector<double> s(n + 1, 0.0);
-  for (int i = 0; i < n; ++i) s[i + 1] = s[i] + (path[(i + 1) % n] - path[i]).norm();
-  const double total = s[n];
-  double extent = 0;
-  for (const Eigen::Vector2d& p : path) extent = std::max(extent, (p - path[0]).norm());
-  if (!(total > 0) || !(extent > 1e-12 * total) || !std::isfinite(total)) return false;
-  std::vector<Complex> z(kResample);
-  int seg = 0;
-  for (int j = 0; j < kResample; ++j) {
-    const double at = total * j / kResample;
-    while (seg < n - 1 && s[seg + 1] <= at) ++seg;
-    const double w = s[seg + 1] > s[seg] ? (at - s[seg]) / (s[seg + 1] - s[seg]) : 0.0;
-    const Eigen::Vector2d p = (1 - w) * path[seg] + w * path[(seg + 1) % n];
-    z[j] = {p.x(), p.y()};
-  }
-  std::array<Complex, 2 * kAtlasHarmonics + 1> c{};  // c[k + K] = c_k
-  for (int k = -kAtlasHarmonics; k <= kAtlasHarmonics; ++k) {
-    Complex sum = 0;
-    for (int j = 0; j < kResample; ++j) sum += z[j] * std::polar(1.0, -2 * kPi * k * j / kResample);
-    c[k + kAtlasHarmonics] = sum / static_cast<double>(kResample);
-  }
-  auto at = [&](int k) -> Complex& { return c[k + kAtlasHarmonics]; };
-  // traverse so that |c_1| >= |c_-1| (reversing time swaps c_k and c_-k)
-  if (std::abs(at(-1)) > std::abs(at(1))) std::reverse(c.begin(), c.end());
-  d->centre = at(0);
-  d->scale = std::abs(at(1));
-  if (!(d->scale > 1e-12 * total)) return false;
-  // turn by alpha and shift time by tau: c_k -> c_k e^{i(alpha + k tau)}; c_1 and c_-1 real
-  const double alpha = -0.5 * (std::arg(at(1)) + std::arg(at(-1))), tau = -0.5 * (std::arg(at(1)) - std::arg(at(-1)));
-  d->turn = alpha;
-  int f = 0;
-  for (int k = -kAtlasHarmonics; k <= kAtlasHarmonics; ++k) {
-    if (k == 0 || k == 1) continue;
-    const Complex v = at(k) * std::polar(1.0, alpha + k * tau) / d->scale;
-    d->features[f++] = v.real();
-    d->features[f++] = v.imag();
-  }
-  return true;
+  return DescribeAtlasPath(path.data(), static_cast<int>(path.size()), d);
 }
 
 CurveDescriptor OtherBranchOfAmbiguity(const CurveDescriptor& d) {

@@ -15,6 +15,7 @@
 #include "koppel/core/file_error.hpp"
 
 #include <string>
+#include <string_view>
 
 namespace koppel::io {
 
@@ -34,5 +35,26 @@ void MakeOutputDirectory(const std::string& path);
 // The permissions of a replaced file are kept; a new file gets 0666 less the umask.
 // FileError kRefused for a target that may not be written, kWriteFailed when writing failed.
 void WriteFileAtomically(const std::string& path, const std::string& text);
+
+// The same write in pieces, for a text too long to hold whole (analyze's millions of rows): the
+// checks and the temporary file at construction, Write() appends to the temporary, Commit()
+// replaces the target. Destroyed before Commit (an exception, an early exit) it removes the
+// temporary and leaves the target as it was. Throws FileError as WriteFileAtomically does.
+class AtomicFileWriter {
+ public:
+  explicit AtomicFileWriter(const std::string& path);
+  ~AtomicFileWriter();
+  AtomicFileWriter(const AtomicFileWriter&) = delete;
+  AtomicFileWriter& operator=(const AtomicFileWriter&) = delete;
+
+  void Write(std::string_view bytes);
+  void Commit();
+
+ private:
+  std::string path_, temporary_;
+  int fd_ = -1, slot_ = -1;
+  unsigned mode_ = 0;  // the permissions the target gets (mode_t)
+  bool open_ = false;  // the temporary exists and is not yet renamed
+};
 
 }  // namespace koppel::io

@@ -23,8 +23,9 @@ struct Case {
   std::string baseline;
   double baseline_factor = 1.0;
   double budget_ns = 0.0;
-  // Threads of its own (the chart, the fit's starts): timed by the wall clock. Every other case
-  // by the CPU time of this process, which other programs on a loaded machine do not inflate.
+  // Threads of its own (the chart, the fit's starts) or another process's work (the start-up of
+  // koppel): timed by the wall clock. Every other case by the CPU time of this process, which
+  // other programs on a loaded machine do not inflate.
   bool threaded = false;
   std::string note;  // printed with the table (e.g. why a case is skipped)
   bool skipped = false;
@@ -37,5 +38,6 @@ std::vector<Case> WalkCases();       // walk_bench.cpp: four-bar, slider-crank, 
 std::vector<Case> SlvsCases();       // slvs_bench.cpp: SolveSpace's libslvs side by side
 std::vector<Case> SynthesisCases();  // synthesis_bench.cpp: dead-centre synthesis, chart, fit
 std::vector<Case> AnalyzeCases();    // analyze_bench.cpp: koppel analyze to a CSV file
+std::vector<Case> StartupCases();    // startup_bench.cpp: koppel --version and analyze as new processes
 
 }  // namespace koppel::bench

@@ -11,6 +11,10 @@
 #include <stdexcept>
 #include <vector>
 
+// Defined (weak) only in programs that link koppel's installed static libraries through its CMake
+// package: that tree's prefix.
+extern "C" __attribute__((weak)) const char koppel_installed_prefix[];
+
 namespace koppel {
 
 std::string FileHoldingCode(const void* address) {
@@ -26,20 +30,27 @@ std::string FileHoldingCode(const void* address) {
   return ec ? std::string() : canonical.string();
 }
 
+std::vector<std::string> InstallRoots() {
+  namespace fs = std::filesystem;
+  std::vector<std::string> roots;
+  const std::string here = FileHoldingCode(reinterpret_cast<const void*>(&InstallRoots));
+  if (!here.empty()) {
+    fs::path up = fs::path(here).parent_path();
+    for (int level = 0; level < 6 && !up.empty(); ++level, up = up.parent_path()) {
+      roots.push_back(up.string());
+      if (up == up.root_path()) break;
+    }
+  }
+  if (&koppel_installed_prefix != nullptr && koppel_installed_prefix[0] != '\0') roots.emplace_back(koppel_installed_prefix);
+  return roots;
+}
+
 namespace {
 
 // The folders to look in, nearest first (see LoadModule).
 std::vector<std::filesystem::path> ModuleFolders() {
-  namespace fs = std::filesystem;
-  std::vector<fs::path> folders;
-  const std::string here = FileHoldingCode(reinterpret_cast<const void*>(&ModuleFolders));
-  if (!here.empty()) {
-    fs::path up = fs::path(here).parent_path();
-    for (int level = 0; level < 6 && !up.empty(); ++level, up = up.parent_path()) {
-      folders.push_back(up / KOPPEL_MODULE_LIBDIR);
-      if (up == up.root_path()) break;
-    }
-  }
+  std::vector<std::filesystem::path> folders;
+  for (const std::string& root : InstallRoots()) folders.push_back(std::filesystem::path(root) / KOPPEL_MODULE_LIBDIR);
   folders.push_back(KOPPEL_MODULE_INSTALL_DIR);
   folders.push_back(KOPPEL_MODULE_BUILD_DIR);
   return folders;

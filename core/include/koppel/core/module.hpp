@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace koppel {
 
@@ -15,12 +16,18 @@ struct ModuleTable {
   const char* version;  // KOPPEL_VERSION_STRING of the build that made the module
 };
 
+// Where an installed koppel's modules and data may be, nearest first: each folder from the one
+// holding this code upwards (the koppel executable in PREFIX/bin, the Python module in
+// PREFIX/lib/python3/dist-packages/koppel), so that an installed tree and a moved one find their
+// own; then the prefix that koppel's CMake package compiles into a program linking the installed
+// static libraries (koppel_installed_prefix, tools/cmake/koppelConfig.cmake.in).
+std::vector<std::string> InstallRoots();
+
 // The table of module NAME ("ceres" -> libkoppel_NAME.so, entry koppel_NAME_module), loaded
 // once per process and kept (never unloaded). Looked for in LIBDIR/koppel (LIBDIR as installed,
-// e.g. lib) under each folder from the one holding this code upwards, so that the build tree, an
-// installed tree and a moved one find their own; then under the configured install prefix and
-// the build tree. Throws std::runtime_error naming the module, where it was looked for and why it
-// could not be loaded.
+// e.g. lib) under each of InstallRoots() (the build tree keeps its modules there too), then
+// under the configured install prefix and in the build tree. Throws std::runtime_error naming
+// the module, where it was looked for and why it could not be loaded.
 const ModuleTable& LoadModule(const std::string& name);
 
 // The file that holds the code at `address` (a function of the caller's), canonical: the koppel

@@ -1,4 +1,5 @@
 #include "koppel/catalog/catalog.hpp"
+#include "koppel/core/module.hpp"
 
 #include "koppel/catalog/check.hpp"
 #include "koppel/catalog/classes.hpp"
@@ -11,7 +12,6 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include <dlfcn.h>
 
 #ifndef KOPPEL_CATALOG_DIR
 #define KOPPEL_CATALOG_DIR "catalog/entries"
@@ -55,19 +55,19 @@ int CountOf(const std::map<std::string, int>& m, const std::string& key) {
 
 namespace {
 
-// The catalog installed with this library (cmake --install): KOPPEL_INSTALLED_CATALOG relative to
-// the folder of the file that holds this code (libkoppel_catalog.so, or a program linked
-// statically), so that an installed koppel, the Python module and any program built against the
-// installed tree find it wherever the tree was installed or moved to. Empty in a build tree.
+// The catalog installed with this library (cmake --install): DATADIR/koppel/catalog under the
+// nearest of InstallRoots() that has one (koppel/core/module.hpp: from the file that holds this
+// code upwards, then the prefix of a program built against the installed tree), so that an
+// installed koppel, the Python module and any program built against the installed tree find it
+// wherever the tree was installed or moved to. Empty in a build tree.
 std::string InstalledCatalogDirectory() {
   namespace fs = std::filesystem;
-  Dl_info info{};
-  if (dladdr(reinterpret_cast<const void*>(&InstalledCatalogDirectory), &info) == 0 || !info.dli_fname) return {};
   std::error_code ec;
-  const fs::path here = fs::canonical(fs::path(info.dli_fname), ec).parent_path();
-  if (ec) return {};
-  const fs::path catalog = here / KOPPEL_INSTALLED_CATALOG;
-  return fs::is_directory(catalog, ec) ? catalog.lexically_normal().string() : std::string();
+  for (const std::string& root : InstallRoots()) {
+    const fs::path catalog = fs::path(root) / KOPPEL_INSTALLED_CATALOG;
+    if (fs::is_directory(catalog, ec)) return catalog.lexically_normal().string();
+  }
+  return {};
 }
 
 }  // namespace

@@ -14,11 +14,13 @@ namespace {
 enum SlotState : int { kFree = 0, kFilling = 1, kHeld = 2 };
 struct Slot {
   std::atomic<int> state{kFree};
-  char path[kMaxTemporaryPath];
+  char path[kMaxTemporaryPath] = {};
 };
 static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads the slots' states");
 
-Slot slots[kMaxTemporaryFiles];
+// constinit: zero-filled by the loader, no code at start-up (a dynamic initialiser wrote every
+// slot's state, touching each slot's page: the largest initialiser of koppel's start, issue 25)
+constinit Slot slots[kMaxTemporaryFiles];
 
 extern "C" void RemoveAndReraise(int signal_number) {
   for (Slot& slot : slots) {

@@ -6,8 +6,9 @@
 #   (`koppel analyze crank-rocker`), and prints the version;
 # - the installed headers pull in no header of Ceres, glog or yaml-cpp, nor any private one;
 # - tests/packaging/cpp (find_package, koppel::koppel) computes the slider-crank's stroke;
-# - tests/packaging/analysis_only (koppel::analysis) does too, and neither its dependencies nor
-#   the libraries it loads name Ceres, glog or yaml-cpp;
+# - tests/packaging/analysis_only (koppel::analysis) does too, and neither its dependencies, nor
+#   the libraries it loads, nor the code linked into it is Ceres, glog or yaml-cpp;
+# - the installed koppel loads neither Ceres nor cairo at start-up (they are modules, lib/koppel);
 # - with the Python module (PYTHON_DIR, relative to the prefix; empty: not built)
 #   tests/packaging/python/stroke.py does the same against the installed module;
 # - the C++ and Python examples of README.md's "Using koppel as a library" run as written.
@@ -63,18 +64,26 @@ consumer analysis_only
 depfile=$(find "$work/analysis_only" -name 'analysis_only.cpp.o.d')
 [ -n "$depfile" ] || fail "no depfile of analysis_only.cpp"
 if grep -Eo "[^ ]*($private)[^ ]*" "$depfile"; then fail "analysis_only compiled with a private dependency's header"; fi
-# link and run time: its own dependencies, and every library the loader maps for it
-readelf -d "$work/analysis_only/analysis_only" | grep NEEDED > "$work/needed.txt"
+# link and run time: its own dependencies, every library the loader maps for it, and the code
+# linked into it from koppel's static libraries
+readelf -d "$work/analysis_only/analysis_only" | grep NEEDED > "$work/needed.txt" || true
 ldd "$work/analysis_only/analysis_only" > "$work/ldd.txt"
-if grep -Ei 'ceres|glog|yaml' "$work/needed.txt" "$work/ldd.txt"; then fail "analysis_only links Ceres, glog or yaml-cpp"; fi
-grep -q libkoppel_analysis "$work/needed.txt" || fail "analysis_only does not link koppel's analysis library"
-# Debian's Ceres is a static library: it lives inside libkoppel_synthesis, which must not be loaded,
-# and no library that is loaded may define a symbol of Ceres
-if grep -E 'libkoppel_(synthesis|catalog|api)' "$work/ldd.txt"; then fail "analysis_only loads synthesis or the catalog"; fi
-for library in $(awk '/libkoppel_/ {print $3}' "$work/ldd.txt"); do
-  if nm -DC --defined-only "$library" | grep -m1 'ceres::'; then fail "$library holds Ceres"; fi
+if grep -Ei 'ceres|glog|yaml|koppel' "$work/needed.txt" "$work/ldd.txt"; then fail "analysis_only links Ceres, glog, yaml-cpp or a koppel library"; fi
+nm -C --defined-only "$work/analysis_only/analysis_only" > "$work/symbols.txt"
+grep -q 'koppel::FindDeadCentres(' "$work/symbols.txt" || fail "analysis_only does not hold koppel's analysis"
+# Ceres lives in the module libkoppel_ceres.so, loaded by synthesis on its first fit; nothing of
+# synthesis, the catalog or yaml-cpp is linked into a program that only analyses
+if grep -m1 -E 'ceres::|YAML::|koppel::Fit\(|koppel::Catalog::Load' "$work/symbols.txt"; then
+  fail "analysis_only holds Ceres, yaml-cpp, synthesis or the catalog"
+fi
+echo "analysis_only: $(wc -l < "$work/ldd.txt") libraries loaded, none of Ceres, glog, yaml-cpp or koppel"
+# the installed koppel maps Ceres and cairo only with the commands that need them
+ldd "$prefix/bin/koppel" > "$work/koppel_ldd.txt"
+if grep -Ei 'ceres|glog|cholmod|lapack|cairo|X11|slvs|koppel' "$work/koppel_ldd.txt"; then fail "the installed koppel loads a heavy library at start-up"; fi
+for module in ceres gif; do
+  [ -n "$(find "$prefix" -path "*/koppel/libkoppel_$module.so")" ] || fail "the module libkoppel_$module.so is not installed"
 done
-echo "analysis_only: $(wc -l < "$work/ldd.txt") libraries loaded, none of Ceres, glog, yaml-cpp"
+echo "koppel: $(wc -l < "$work/koppel_ldd.txt") libraries loaded at start-up"
 
 # README.md's examples, as written
 readme_block() {  # LANGUAGE: the first fenced block of that language in the library section

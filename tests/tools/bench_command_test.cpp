@@ -68,6 +68,29 @@ TEST_CASE("bench: a synthesis against its time budget, as a table by default", "
   CHECK_THAT(table.out, Catch::Contains("deadcentre-synthesis") && Catch::Contains("/run") && Catch::Contains("load average"));
 }
 
+TEST_CASE("bench: the start-up of koppel itself, --version against 10 ms and analyze against twice that", "[cli][bench]") {
+  const test::RunResult r = test::RunKoppel("bench --filter '^startup-analyze$' --format json --min-time 0.05");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto rows = ByName(r.out);
+  REQUIRE(rows.size() == 2);  // the version's run is the analyze's baseline
+  const nlohmann::json& version = rows.at("startup-version");
+  const nlohmann::json& analyze = rows.at("startup-analyze");
+  for (const nlohmann::json* row : {&version, &analyze}) {
+    CHECK(row->at("per") == "run");
+    CHECK(row->at("clock") == "wall");  // the work is another process's
+    // a process that starts, loads and exits takes more than 0.1 ms
+    CHECK(row->at("ns_per_step").get<double>() > 1e5);
+  }
+  CHECK(version.at("baseline_name") == "budget");
+  CHECK(version.at("baseline").get<double>() == 1e7);  // 10 ms
+  const double version_ns = version.at("ns_per_step").get<double>();
+  CHECK(version.at("ratio").get<double>() == Approx(version_ns / 1e7).epsilon(1e-12));
+  CHECK(analyze.at("baseline").get<double>() == Approx(2.0 * version_ns).epsilon(1e-12));
+  CHECK(analyze.at("baseline_name") == "startup-version x 2");
+  CHECK(analyze.at("ratio").get<double>() == Approx(analyze.at("ns_per_step").get<double>() / (2.0 * version_ns)).epsilon(1e-12));
+}
+
 TEST_CASE("bench: a filter that matches nothing, a broken expression and an unknown format are bad input", "[cli][bench]") {
   const test::RunResult none = test::RunKoppel("bench --filter no-such-benchmark");
   CHECK(none.exit_code == 2);

@@ -1,6 +1,8 @@
-// The program around the commands (tools/cli/main.cpp): --version, and Ceres' glog messages kept
-// off stderr by the synthesis library itself (solver/synthesis/src/quiet_solver_log.cpp, so the
-// Python module gets the same), so that --quiet means a clean stderr and a failure is told once.
+// The program around the commands (tools/cli/main.cpp): --version, the commands it adds for a
+// command line (only the one named: each still parses and helps as with all of them), and Ceres'
+// glog messages kept off stderr by the synthesis library itself (solver/synthesis/ceres/
+// quiet_solver_log.cpp, so the Python module gets the same), so that --quiet means a clean stderr
+// and a failure is told once.
 #include "support/run.hpp"
 
 #include <catch2/catch.hpp>
@@ -14,6 +16,32 @@ TEST_CASE("koppel --version prints the project's version and exits 0", "[cli]") 
   CHECK(r.exit_code == 0);
   CHECK(r.out == std::string("koppel ") + KOPPEL_VERSION_TEXT + "\n");
   CHECK(r.err.empty());
+}
+
+TEST_CASE("koppel NAME adds only NAME: every command of --help answers its own --help, others are still named", "[cli]") {
+  // the reference: the command list of `koppel --help`, which adds every command
+  const test::RunResult help = test::RunKoppel("--help");
+  REQUIRE(help.exit_code == 0);
+  const std::string list = help.out.substr(help.out.find("Subcommands:"));
+  int commands = 0;
+  // a command's line: two spaces, its name; its description's further lines are indented further
+  for (size_t at = list.find('\n'); at != std::string::npos && at + 3 < list.size(); at = list.find('\n', at + 1)) {
+    if (list.compare(at + 1, 2, "  ") != 0 || list[at + 3] == ' ') continue;
+    const std::string name = list.substr(at + 3, list.find(' ', at + 3) - (at + 3));
+    INFO(name);
+    const test::RunResult own = test::RunKoppel(name + " --help");
+    CHECK(own.exit_code == 0);
+    CHECK_THAT(own.out, Catch::Contains("Usage: ") && Catch::Contains("koppel " + name));
+    ++commands;
+  }
+  CHECK(commands >= 21);
+  // a command line that names no command (a misspelt one) adds them all: bad input, as before
+  const test::RunResult typo = test::RunKoppel("analyse x.yaml");
+  CHECK(typo.exit_code == 2);
+  CHECK_THAT(typo.err, Catch::Contains("subcommand is required"));
+  const test::RunResult none = test::RunKoppel("");
+  CHECK(none.exit_code == 2);
+  CHECK_THAT(none.err, Catch::Contains("subcommand"));
 }
 
 TEST_CASE("synth fit --quiet leaves stderr clean: no glog lines from starts that fail", "[cli][synth]") {

@@ -24,8 +24,9 @@ struct Case {
   std::string baseline;
   double baseline_factor = 1.0;
   double budget_ns = 0.0;
-  // Threads of its own (the chart, the fit's starts): timed by the wall clock. Every other case
-  // by the CPU time of this process, which other programs on a loaded machine do not inflate.
+  // Threads of its own (the chart, the fit's starts) or another process's work (the start-up of
+  // koppel): timed by the wall clock. Every other case by the CPU time of this process, which
+  // other programs on a loaded machine do not inflate.
   bool threaded = false;
   std::string note;  // printed with the table (e.g. why a case is skipped)
   bool skipped = false;
@@ -39,5 +40,6 @@ std::vector<Case> SlvsCases();       // slvs_bench.cpp: SolveSpace's libslvs sid
 std::vector<Case> SynthesisCases();  // synthesis_bench.cpp: dead-centre synthesis, chart, fit
 std::vector<Case> AnalyzeCases();    // analyze_bench.cpp: koppel analyze to a CSV file
 std::vector<Case> AtlasBuildCases();  // atlas_build_bench.cpp: the atlas of path synthesis on one core
+std::vector<Case> StartupCases();    // startup_bench.cpp: koppel --version and analyze as new processes
 
 }  // namespace koppel::bench

@@ -235,10 +235,11 @@ void AddBenchCommand(CLI::App& app) {
       "Time koppel's solver and commands (Google Benchmark), each against a baseline measured in the same run:\n"
       "walk steps (positions, 1st and 2nd order of every output) against hand-written closed forms doing the\n"
       "same work, chains of N four-bar loops against the 4-loop chain per loop, the four-bar's positions\n"
-      "against SolveSpace's libslvs, and synthesis, charts, fits, analyze and the atlas build (per curve, on\n"
-      "one core: 100 000 curves/s is 10 us a curve) against their time budgets.\n"
+      "against SolveSpace's libslvs, synthesis, charts, fits, analyze and the atlas build (per curve, on one\n"
+      "core: 100 000 curves/s is 10 us a curve) against their time budgets, and the start-up of koppel itself\n"
+      "(--version against 10 ms, analyze of a small file against twice that).\n"
       "ratio = time / baseline. Times are the CPU time of this process, wall-clock time for the cases that run\n"
-      "threads of their own (chart, fit); on a loaded machine compare the ratios.\n"
+      "threads or processes of their own (chart, fit, start-up); on a loaded machine compare the ratios.\n"
       "Example: koppel bench --filter 'fourbar|chain' --format json");
   cmd->add_option("--filter", args->filter, "Run the benchmarks whose name matches this regular expression (and their baselines)");
   cmd->add_option("--format", args->format, "table (default), csv or json");

@@ -16,7 +16,7 @@ install(TARGETS koppel_all EXPORT koppelTargets)
 
 set(KOPPEL_PRIVATE_DEPENDENCIES "")
 if(NOT BUILD_SHARED_LIBS)
-  foreach(dependency muparser Ceres yaml-cpp fmt nlohmann_json nanoflann)
+  foreach(dependency muparser yaml-cpp fmt nlohmann_json nanoflann)
     string(APPEND KOPPEL_PRIVATE_DEPENDENCIES "find_dependency(${dependency})\n")
   endforeach()
 endif()

@@ -1,22 +1,22 @@
-// The one translation unit of koppel that includes Ceres: several starts of a least-squares fit
-// on parallel threads, the best design chosen, its targets held to their tolerances.
+// Several starts of a least-squares fit on parallel threads (each solved by Ceres in the module
+// of ceres_solves.hpp), the best design chosen, its targets held to their tolerances.
 #include "koppel/synthesis/fit.hpp"
 
+#include "ceres_solves.hpp"
 #include "fit_model.hpp"
-#include "quiet_solver_log.hpp"
 
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
 #include "koppel/core/limits.hpp"
 #include "worker_threads.hpp"
 
-#include <ceres/ceres.h>
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <random>
 #include <thread>
 
@@ -27,21 +27,6 @@ namespace {
 // inexact problems, absolute (residuals about 1e-12) for exactly solvable ones.
 constexpr double kSameCostRelative = 1e-6;
 constexpr double kSameCostAbsolute = 1e-24;
-
-class FitCost : public ceres::CostFunction {
- public:
-  FitCost(const TargetModel& model, int n_params) : model_(model), n_params_(n_params) {
-    set_num_residuals(model.Residuals());
-    mutable_parameter_block_sizes()->push_back(n_params + model.FreeInputs());
-  }
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    return model_.Evaluate(parameters[0], n_params_, residuals, jacobians ? jacobians[0] : nullptr);
-  }
-
- private:
-  const TargetModel& model_;
-  int n_params_;
-};
 
 bool Finite(double v) { return v > -1e299 && v < 1e299; }
 
@@ -105,31 +90,23 @@ StartOutcome RunStart(const MechanismBuilder& builder, const TargetModel& model,
     out.start.brief = "the mechanism does not assemble at every target at this start";
     return out;
   }
-  ceres::Problem problem;
-  problem.AddResidualBlock(new FitCost(model, n), nullptr, x.data());
+  BoundedLeastSquares problem;
+  problem.residuals = model.Residuals();
+  problem.unknowns = static_cast<int>(x.size());
+  problem.lower.assign(x.size(), -std::numeric_limits<double>::infinity());
+  problem.upper.assign(x.size(), std::numeric_limits<double>::infinity());
   for (int j = 0; j < n; ++j) {
-    if (Finite(parameters[j].lower)) problem.SetParameterLowerBound(x.data(), j, parameters[j].lower);
-    if (Finite(parameters[j].upper)) problem.SetParameterUpperBound(x.data(), j, parameters[j].upper);
+    problem.lower[j] = parameters[j].lower;
+    problem.upper[j] = parameters[j].upper;
   }
-  ceres::Solver::Options solver_options;
-  solver_options.max_num_iterations = o.max_iterations;
-  solver_options.linear_solver_type = ceres::DENSE_QR;
-  // A relative change of the cost below 1e-10 is the roundoff of the residuals' sensitivities
-  // (central differences, relative error about 1e-10): at that floor the fit is done. Smaller
-  // values leave the end to chance (an exact zero gradient, or rejected steps until the trust
-  // region collapses), and the iterations then depend on the last bits of every pose.
-  solver_options.function_tolerance = 1e-10;
-  solver_options.gradient_tolerance = 1e-15;
-  solver_options.parameter_tolerance = 1e-14;
-  solver_options.num_threads = 1;  // one residual block: the starts are the parallel work
-  solver_options.logging_type = ceres::SILENT;
-  solver_options.minimizer_progress_to_stdout = false;
-  ceres::Solver::Summary summary;
-  QuietSolverLog();
-  ceres::Solve(solver_options, &problem, &summary);
-  out.start.brief = summary.BriefReport();
-  out.iterations = static_cast<int>(summary.iterations.size());
-  if (!summary.IsSolutionUsable()) return out;
+  problem.evaluate = [&model, n](const double* p, double* residuals, double* jacobian) {
+    return model.Evaluate(p, n, residuals, jacobian);
+  };
+  problem.max_iterations = o.max_iterations;
+  const LeastSquaresOutcome summary = CeresSolves().fit(problem, x.data());
+  out.start.brief = summary.brief;
+  out.iterations = summary.iterations;
+  if (!summary.usable) return out;
   out.residuals.resize(model.Residuals());
   if (!model.Evaluate(x.data(), n, out.residuals.data(), nullptr)) return out;
   out.start.usable = true;
@@ -143,6 +120,7 @@ StartOutcome RunStart(const MechanismBuilder& builder, const TargetModel& model,
 // Runs every start, on up to o.threads threads; each writes only its own slot.
 std::vector<StartOutcome> RunStarts(const MechanismBuilder& builder, const TargetModel& model, const std::vector<FitParameter>& parameters,
                                     const std::vector<FitTarget>& targets, const FitOptions& o) {
+  CeresSolves();  // loaded here, so that a missing module is the caller's exception, not each start's
   const std::vector<std::vector<double>> points = StartPoints(parameters, targets, o);
   std::vector<StartOutcome> outcomes(points.size());
   std::atomic<int> next{0};

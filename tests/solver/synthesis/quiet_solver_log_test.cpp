@@ -1,7 +1,9 @@
-// QuietSolverLog (solver/synthesis/src/quiet_solver_log.cpp): after it, glog (Ceres' logger)
-// lets only fatal messages through, to stderr, and writes no log files; racing threads are safe.
-// The test includes glog itself: it is the one test of the one place that touches glog.
-#include "quiet_solver_log.hpp"
+// QuietSolverLog (solver/synthesis/ceres/quiet_solver_log.cpp), called through the module
+// libkoppel_ceres.so as the fits call it (ceres_solves.hpp): after it, glog (Ceres' logger, the
+// same shared library here and in the module) lets only fatal messages through, to stderr, and
+// writes no log files; racing threads are safe. The test includes glog itself: it is the one test
+// of the one place that touches glog.
+#include "ceres_solves.hpp"
 
 #include <catch2/catch.hpp>
 #include <glog/logging.h>
@@ -35,7 +37,7 @@ std::string StderrOf(void (*log)()) {
 TEST_CASE("after QuietSolverLog only fatal messages pass, to stderr, no log files", "[quiet_solver_log]") {
   // eight threads race to the first call (the function-local static makes one of them set the flags)
   std::vector<std::thread> threads;
-  for (int i = 0; i < 8; ++i) threads.emplace_back([] { QuietSolverLog(); });
+  for (int i = 0; i < 8; ++i) threads.emplace_back([] { CeresSolves().quiet_solver_log(); });
   for (std::thread& t : threads) t.join();
   CHECK(FLAGS_logtostderr);
   CHECK(FLAGS_minloglevel == google::GLOG_FATAL);
@@ -43,7 +45,7 @@ TEST_CASE("after QuietSolverLog only fatal messages pass, to stderr, no log file
   // reference: what reaches stderr, read back
   CHECK(StderrOf([] { LOG(ERROR) << "Terminating: Residual and Jacobian evaluation failed."; }).empty());
   CHECK(StderrOf([] { LOG(WARNING) << "a warning"; }).empty());
-  QuietSolverLog();  // again: nothing changes
+  CeresSolves().quiet_solver_log();  // again: nothing changes
   CHECK(FLAGS_minloglevel == google::GLOG_FATAL);
 }
 

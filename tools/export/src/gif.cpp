@@ -1,7 +1,6 @@
 #include "koppel/export/gif.hpp"
 
-#include "frame_painter.hpp"
-#include "gif_encoder.hpp"
+#include "gif_module.hpp"
 
 #include "koppel/core/limits.hpp"
 
@@ -37,13 +36,7 @@ std::string RenderGif(const AnimationScene& scene, const GifOptions& options) {
   std::string why;
   if (!options.IsValid(static_cast<int>(scene.frames.size()), &why)) throw std::invalid_argument("RenderGif: " + why);
   if (scene.frames.empty()) throw std::invalid_argument("RenderGif: no frame to draw");
-  FramePainter painter(scene, options.width, options.height);
-  GifEncoder encoder(options.width, options.height, options.DelayCentiseconds());
-  for (int i = 0; i < static_cast<int>(scene.frames.size()); ++i) {
-    painter.Paint(i);
-    encoder.Add(cairo_image_surface_get_data(painter.surface()), cairo_image_surface_get_stride(painter.surface()));
-  }
-  return encoder.Finish();
+  return GifModule().render(scene, options.width, options.height, options.DelayCentiseconds());
 }
 
 }  // namespace koppel::plot

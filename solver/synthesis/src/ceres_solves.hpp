@@ -1,0 +1,48 @@
+// The least-squares problems of synthesis that Ceres solves: the fit's starts (fit.cpp) and the
+// closed-form pre-polish of path synthesis (path_prepolish.cpp). Ceres, with glog, SuiteSparse and
+// LAPACK, lives in the module libkoppel_ceres.so (solver/synthesis/ceres), loaded on the first
+// solve (koppel/core/module.hpp), so that nothing else of koppel maps them at start-up.
+#pragma once
+
+#include "koppel/core/module.hpp"
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace koppel {
+
+// Minimise 1/2 |r(x)|^2 over x within bounds, with the fit's solver options (ceres_solves.cpp).
+struct BoundedLeastSquares {
+  int residuals = 0;
+  int unknowns = 0;
+  std::vector<double> lower, upper;  // per unknown; beyond +-1e299: unbounded on that side
+  // residuals r(x) and, where `jacobian` is not null, dr/dx row-major (residuals x unknowns);
+  // false where r cannot be evaluated
+  std::function<bool(const double* x, double* residuals, double* jacobian)> evaluate;
+  int max_iterations = 0;
+};
+
+struct LeastSquaresOutcome {
+  bool usable = false;  // Ceres' IsSolutionUsable
+  int iterations = 0;
+  double final_cost = 0;
+  std::string brief;  // Ceres' BriefReport
+};
+
+struct CeresSolvesTable : ModuleTable {
+  // x: the start, in; the solution, out
+  LeastSquaresOutcome (*fit)(const BoundedLeastSquares& problem, double* x);
+  // path_prepolish.hpp's PrePolish
+  double (*prepolish)(const std::vector<Eigen::Vector2d>& points, int branch, std::vector<double>* unknowns,
+                      std::vector<double>* inputs);
+  // glog, which Ceres logs through, lets only fatal messages through (quiet_solver_log.hpp)
+  void (*quiet_solver_log)();
+};
+
+// The module's functions, loaded on the first call; std::runtime_error when it cannot be loaded.
+inline const CeresSolvesTable& CeresSolves() { return static_cast<const CeresSolvesTable&>(LoadModule("ceres")); }
+
+}  // namespace koppel

@@ -84,7 +84,9 @@ TEST_CASE("path synthesis matches a crank-rocker that is not in the atlas to 1e-
   const PathLinkage& best = result.linkages.front();
   CHECK(best.error <= kMatched);
   CHECK(WorstDistance(best.mechanism, r.points) <= kMatched);
-  for (size_t i = 1; i < result.linkages.size(); ++i) CHECK(result.linkages[i].error >= result.linkages[i - 1].error);
+  // ranked by error, but exact fits (errors at roundoff, far below 1e-10 here) keep their atlas order
+  for (size_t i = 1; i < result.linkages.size(); ++i)
+    CHECK((result.linkages[i].error >= result.linkages[i - 1].error || result.linkages[i - 1].error < 1e-10));
 }
 
 TEST_CASE("path synthesis matches seeded random crank-rockers' curves to 1e-6", "[path]") {

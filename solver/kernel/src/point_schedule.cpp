@@ -16,6 +16,8 @@ double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() 
 // A stage's 2 x 2 Jacobian below this normalised determinant (the sine of the angle between its
 // rows) counts as singular: the general kernel takes over there.
 constexpr double kSingularGauge = 1e-12;
+// Dyad links shorter than this times L are left to the general kernel (see AddDyadStage).
+constexpr double kShortestDyadLink = 1e-2;
 
 // Joint k's local point on `link`, and the link across it.
 Eigen::Vector2d LocalAt(const Mechanism& m, int k, int link) {
@@ -107,7 +109,10 @@ bool PointSchedule::AddDyadStage(std::vector<bool>& posed, std::vector<bool>& us
       s.b_at_j = LocalAt(m, k, b);
       s.length_a = (s.a_at_j - s.a_at_anchor).norm();
       const int kb = CloseDyad(s, k, posed, used);
-      if (kb < 0 || s.length_a == 0.0) continue;
+      // a dyad link far shorter than the mechanism: its normalised determinant no longer bounds
+      // the whole Jacobian's condition, which the continuation's gauge (kFastGauge) relies on
+      const double shortest = kb < 0 ? 0.0 : s.kind == Kind::kDyadRR ? std::min(s.length_a, s.length_b) : s.length_a;
+      if (kb < 0 || !(shortest >= kShortestDyadLink * length_scale_)) continue;
       used[k] = used[ka] = used[kb] = true;
       posed[a] = posed[b] = true;
       stages_.push_back(s);
@@ -322,7 +327,6 @@ bool PointSchedule::SolveDyad(Stage& s, double h, const StepOptions& options) {
   const Eigen::Vector2d tangent = s.j.p[1] + h * s.j.p[2];
   if ((jj.p[1] - tangent).lpNorm<Eigen::Infinity>() > options.max_tangent_change * (length_scale_ + tangent.lpNorm<Eigen::Infinity>()))
     return false;
-  iterations_ = std::max(iterations_, it);
   s.det_sign = sign;
   s.gauge = gauge;
   s.j = jj;
@@ -381,7 +385,6 @@ bool PointSchedule::Step(double input, const StepOptions& options) {
   }
   // the angles' predictions: PoseByTwoPoints keeps each angle on the turn of its prediction
   for (LinkJet& l : links_) l.theta[0] += h * l.theta[1] + 0.5 * h * h * l.theta[2];
-  iterations_ = 0;
   for (Stage& s : stages_) {
     bool ok = true;
     if (s.kind == Kind::kDriveR || s.kind == Kind::kDriveP) {

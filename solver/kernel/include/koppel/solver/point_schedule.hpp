@@ -40,7 +40,6 @@ class PointSchedule {
 
   bool compiled() const { return why_not_.empty(); }
   const std::string& why_not() const { return why_not_; }
-  int Stages() const { return static_cast<int>(stages_.size()); }
 
   // Takes the pose q (ConstraintSystem's layout, a solved pose at `input`) as the state to step
   // from; its series (columns 0..2, as PositionSolver::Series) give the prediction.
@@ -76,8 +75,6 @@ class PointSchedule {
   // between them. Smallest |det| of a stage's normalised Jacobian (a gauge in [0, 1]).
   int DeterminantSign() const;
   double Gauge() const;
-  // Newton iterations the last Step took (the most of any stage).
-  int Iterations() const { return iterations_; }
 
  private:
   // A link's pose and its first and second derivatives with respect to the input.
@@ -147,7 +144,6 @@ class PointSchedule {
   double length_scale_ = 1.0;
   double input_ = 0.0;
   double predicted_from_ = 0.0;  // the input of the state the prediction expands about
-  int iterations_ = 0;
 };
 
 }  // namespace koppel

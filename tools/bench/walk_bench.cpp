@@ -50,7 +50,7 @@ class Walker {
   bool Step(bool transfer) {
     const double next = start_ + (up_ ? at_ + 1 : kStepsPerTurn - 1 - at_) * kStep;
     if (!path_.AdvanceTo(next, std::numeric_limits<double>::infinity()).ok()) return false;
-    if (transfer) solver_.OutputDerivatives(path_.Series(2), 2, row_.data());
+    if (transfer) path_.OutputDerivatives(2, row_.data());
     if (++at_ == kStepsPerTurn) {
       at_ = 0;
       up_ = !up_;

@@ -50,7 +50,7 @@ double FlatPoint(const Mechanism& m, const SweepResult& sweep, const Continuatio
     if (!path.Start(sweep.inputs[flat], sweep.poses.row(flat).transpose()).ok() ||
         !path.AdvanceTo(middle, step).ok())
       break;  // the bracket so far
-    solver.OutputDerivatives(path.Series(2), 2, derivatives.data());
+    path.OutputDerivatives(2, derivatives.data());
     if (std::abs(derivatives[kS2]) < least) {
       least = std::abs(derivatives[kS2]);
       flattest = middle;

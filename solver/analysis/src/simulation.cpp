@@ -127,7 +127,7 @@ class Dynamics {
   // The outputs at the pose of the last Evaluate.
   void Outputs(std::vector<double>* out) {
     out->resize(solver_.OutputWidth(0));
-    solver_.OutputDerivatives(path_.Series(2), 0, out->data());
+    path_.OutputDerivatives(0, out->data());
   }
 
   void SetLargestInertia(double value) { largest_inertia_ = value; }

@@ -62,7 +62,7 @@ StationaryPoint Newton(const Mechanism& m, int output, int component, int order,
   const int column = OutputColumn(m, output, component, order);
   std::vector<double> derivatives(solver.OutputWidth(order));
   for (int it = 0; it < options.max_iterations; ++it) {
-    solver.OutputDerivatives(path.Series(order), order, derivatives.data());
+    path.OutputDerivatives(order, derivatives.data());
     const double* d = derivatives.data() + column;
     result.iterations = it;
     const NewtonStep next = step_of(d);

@@ -82,7 +82,7 @@ class Searcher {
       if (!path.AdvanceTo(range_.from + direction_ * turn, s_.step).ok()) return 0.0;
       if (SamePose(path.q(), Pose(0), solver.system().length_scale())) {
         std::vector<double> y(solver.OutputWidth(0));
-        solver.OutputDerivatives(path.Series(0), 0, y.data());
+        path.OutputDerivatives(0, y.data());
         s_.turn_gain = y[OutputColumn(m_, output_, component_, 0)] - s_.sweep.outputs(0, s_.column);
         return turn;
       }
@@ -186,7 +186,7 @@ void SampleRangeEnd(const Mechanism& m, const SweepOptions& options, SweepResult
   if (!path.Start(last, q).ok() || !path.AdvanceTo(options.to, std::abs(options.step)).ok()) return;
   const Eigen::Index n = sweep.outputs.rows();
   sweep.outputs.conservativeResize(n + 1, Eigen::NoChange);
-  solver.OutputDerivatives(path.Series(std::max(sweep.order, 2)), sweep.order, sweep.outputs.row(n).data());
+  path.OutputDerivatives(sweep.order, sweep.outputs.row(n).data());
   sweep.poses.conservativeResize(n + 1, Eigen::NoChange);
   sweep.poses.row(n) = path.q().transpose();
   sweep.inputs.push_back(options.to);

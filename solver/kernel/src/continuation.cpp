@@ -142,11 +142,17 @@ Continuation::Continuation(PositionSolver& solver, ContinuationOptions options)
   if (!solver.options().dense) {
     schedule_ = std::make_unique<PointSchedule>(solver.system());
     if (!schedule_->compiled()) schedule_.reset();
-    trig_.resize(solver.system().TrigSize());
   }
+  fill_pose_ = [this](Eigen::VectorXd& q) { q = this->q(); };
 }
 
-Continuation::~Continuation() = default;
+Continuation::~Continuation() {
+  // the solver outlives the walk: it gets the pose itself, not a way to ask this walk for it
+  if (solver_.IsPending(&fill_pose_)) {
+    MaterializePose();
+    solver_.AdoptPose(input_, q_);
+  }
+}
 
 // Both norms go link by link: (x, y) in units of L, theta in rad.
 double Continuation::ScaledPoseNorm(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {
@@ -191,16 +197,19 @@ void Continuation::SetRegularPose(double input, const Eigen::VectorXd& q) {
   at_limit_ = false;
   input_ = input;
   q_ = q;
+  q_pending_ = false;
   from_window_ = false;
   RestoreFactorization();
 }
 
 bool Continuation::RestoreFactorization() {
+  MaterializePose();
   compiled_pose_ = false;
   schedule_loaded_ = false;
   q_trial_ = q_;
   if (!solver_.Correct(input_, q_trial_).ok()) return false;
   q_ = q_trial_;
+  q_pending_ = false;
   factorized_here_ = true;
   from_window_ = false;
   sign_ = solver_.JacobianSign();
@@ -223,6 +232,7 @@ SolveReport Continuation::Start(double input, const Eigen::VectorXd& q) {
     schedule_loaded_ = false;
     input_ = input;
     q_ = q_trial_;
+  q_pending_ = false;
     factorized_here_ = true;
     from_window_ = false;
     sign_ = solver_.JacobianSign();
@@ -260,10 +270,24 @@ const Eigen::MatrixXd& Continuation::Series(int order) {
     return series_;
   }
   if (series_order_ >= order) return series_;
+  if (compiled_pose_ && order <= 2) {
+    // the schedule's jets, taken only when asked for (a sweep's outputs come from the jets)
+    schedule_->Series(series_);
+    series_order_ = 2;
+    return series_;
+  }
   if (!factorized_here_) RestoreFactorization();
   solver_.Series(order, series_);
   series_order_ = order;
   return series_;
+}
+
+void Continuation::OutputDerivatives(int order, double* out) {
+  if (compiled_pose_ && order <= 2) {
+    schedule_->OutputDerivatives(order, out);
+    return;
+  }
+  solver_.OutputDerivatives(Series(std::max(order, 2)), order, out);
 }
 
 bool Continuation::AtSingularPose() {
@@ -284,6 +308,7 @@ void Continuation::Accept(double next) {
   at_limit_ = false;
   input_ = next;
   q_ = q_trial_;
+  q_pending_ = false;
   factorized_here_ = true;
   from_window_ = false;
   sign_ = solver_.JacobianSign();
@@ -304,21 +329,41 @@ void Continuation::Accept(double next) {
 void Continuation::RememberIfRegular(bool regular) {
   if (!regular) {
     regular_count_ = 0;
+    if (schedule_) schedule_->ForgetHistory();
     return;
   }
+  MaterializePose();
   RegularPose& p = regular_[regular_next_];
   p.input = input_;
   p.q = q_;
+  p.seq = ++seq_;
   regular_next_ = (regular_next_ + 1) % kRememberedPoses;
   regular_count_ = std::min(regular_count_ + 1, kRememberedPoses);
 }
 
-int Continuation::RegularPoseBefore(double input, double direction) const {
-  for (int k = 1; k <= regular_count_; ++k) {
+bool Continuation::RegularPoseBefore(double input, double direction, RegularPose* pose) const {
+  const RegularPose* found = nullptr;
+  for (int k = 1; k <= regular_count_ && !found; ++k) {
     const int slot = (regular_next_ - k + kRememberedPoses) % kRememberedPoses;
-    if (direction * (input - regular_[slot].input) >= 0.0) return slot;
+    if (direction * (input - regular_[slot].input) >= 0.0) found = &regular_[slot];
   }
-  return -1;
+  const int history = schedule_ ? schedule_->History() : 0;
+  for (int back = 0; back < history; ++back) {
+    if (found && found->seq > schedule_seq_ - back) break;  // the ring's is newer
+    if (direction * (input - schedule_->HistoryInput(back)) < 0.0) continue;
+    pose->input = schedule_->HistoryInput(back);
+    schedule_->HistoryPose(back, pose->q);
+    pose->seq = schedule_seq_ - back;
+    return true;
+  }
+  if (found) *pose = *found;
+  return found != nullptr;
+}
+
+void Continuation::MaterializePose() const {
+  if (!q_pending_) return;
+  schedule_->Pose(q_);
+  q_pending_ = false;
 }
 
 void Continuation::EnsureFactorized() {
@@ -341,16 +386,14 @@ Continuation::StepResult Continuation::TryCompiledStep(double next) {
   o.min_gauge = kFastGauge;
   if (!schedule_->Step(next, o)) return out;
   input_ = next;
-  schedule_->Pose(q_);
-  schedule_->Trig(trig_.data());
-  solver_.AdoptPose(next, q_, trig_.data());
-  schedule_->Series(series_);
-  series_order_ = 2;
+  q_pending_ = true;  // written when read (MaterializePose)
+  solver_.AdoptPending(next, &fill_pose_);
+  series_order_ = -1;  // Series() takes the schedule's when asked
   factorized_here_ = false;
   from_window_ = false;
   at_limit_ = false;
   compiled_pose_ = true;
-  RememberIfRegular(true);  // every dyad's gauge above kFastGauge
+  schedule_seq_ = ++seq_;  // remembered in the schedule's history: every dyad's gauge above kFastGauge
   rcond_ = -1.0;
   valid_order_ = kMaxOrder;
   out.accepted = true;
@@ -405,6 +448,7 @@ bool Continuation::RegularWalkTo(double target) {
 
 std::unique_ptr<Continuation::Window> Continuation::OpenBranchWindow(double estimate, double direction, double delta,
                                                                      Eigen::MatrixXd* at_star) {
+  MaterializePose();
   // A: a regular pose of the incoming branch, a window's half-width before the point
   const double a_input = estimate - direction * delta;
   if (!RegularWalkTo(a_input)) return nullptr;
@@ -476,6 +520,7 @@ bool Continuation::SwitchBranchInWindow(const Eigen::MatrixXd& at_star, Window* 
 
 Continuation::Crossing Continuation::CrossBranchPoint(double estimate, double direction, double target,
                                                       WalkReport* finished) {
+  MaterializePose();
   const ConstraintSystem& system = solver_.system();
   const double start_input = input_;
   const Eigen::VectorXd start_q = q_;
@@ -483,12 +528,10 @@ Continuation::Crossing Continuation::CrossBranchPoint(double estimate, double di
   // The window's near end is walked to from a regular pose behind it when the walk has one: the
   // walk that stalled here may stand so close to the point that its tangent is noise, and a step
   // back from there can land on the other branch.
-  const int behind = RegularPoseBefore(estimate - direction * delta, direction);
+  RegularPose behind;
+  const bool has_behind = RegularPoseBefore(estimate - direction * delta, direction, &behind);
   for (int attempt = 0; attempt < kCrossingAttempts; ++attempt, delta *= 0.25) {
-    if (attempt == 0 && behind >= 0) {
-      const RegularPose& p = regular_[behind];
-      SetRegularPose(p.input, p.q);
-    }
+    if (attempt == 0 && has_behind) SetRegularPose(behind.input, behind.q);
     if (attempt > 0) SetRegularPose(start_input, start_q);
     Eigen::MatrixXd at_star;
     std::unique_ptr<Window> window = OpenBranchWindow(estimate, direction, delta, &at_star);
@@ -560,6 +603,7 @@ void Continuation::EvaluateInWindow(double input) {
   input_ = input;
   at_limit_ = false;
   q_ = window_series_.col(0);
+  q_pending_ = false;
   from_window_ = true;
   factorized_here_ = false;
   has_previous_ = false;
@@ -583,6 +627,7 @@ void Continuation::SetLimitPose(double input, const Eigen::VectorXd& q) {
   at_limit_ = true;
   input_ = input;
   q_ = q;
+  q_pending_ = false;
   from_window_ = false;
   factorized_here_ = false;
   has_previous_ = false;
@@ -595,6 +640,7 @@ void Continuation::SetLimitPose(double input, const Eigen::VectorXd& q) {
 }
 
 bool Continuation::FinishAtLimitPoint(double target, double direction, WalkReport* finished) {
+  MaterializePose();
   const ConstraintSystem& system = solver_.system();
   const std::optional<LimitPoint> limit = LocateLimitPoint(system, input_, q_);
   if (!limit) return false;
@@ -696,6 +742,7 @@ Continuation::Crossing Continuation::CrossSignChange(double direction, double ta
 }
 
 Continuation::Crossing Continuation::ExamineStall(double direction, double target, WalkReport* finished) {
+  MaterializePose();
   // Steps this short mean a singular position is near. A branch point is crossed here rather
   // than crept around (creeping would follow a roundoff-sized detour onto the other branch).
   const SingularStructure s = AnalyseSingularity(solver_.system(), q_);
@@ -706,6 +753,7 @@ Continuation::Crossing Continuation::ExamineStall(double direction, double targe
 }
 
 WalkReport Continuation::EndAtStall(double direction, double target) {
+  MaterializePose();
   const SingularStructure s = AnalyseSingularity(solver_.system(), q_);
   if (s.rcond < kNearSingularRcond) {
     // A singular position no step passes ends the branch for the drive: a limit point, or a

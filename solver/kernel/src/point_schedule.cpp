@@ -1,7 +1,8 @@
 #include "koppel/solver/point_schedule.hpp"
 
 #include "koppel/solver/constraints.hpp"
-#include "koppel/solver/taylor.hpp"  // WrapAngle
+#include "koppel/core/angles.hpp"  // kPi
+#include "koppel/solver/taylor.hpp"  // SinCos
 
 #include <algorithm>
 #include <cmath>
@@ -44,7 +45,11 @@ PointSchedule::PointSchedule(const ConstraintSystem& system)
     : system_(system), mechanism_(system.mechanism()), length_scale_(system.length_scale()) {
   const Mechanism& m = mechanism_;
   const int n_links = static_cast<int>(m.links.size());
-  links_.resize(n_links);
+  n_links_ = n_links;
+  states_.assign(kHistory, std::vector<LinkJet>(n_links));
+  state_input_.assign(kHistory, 0.0);
+  now_ = states_[0].data();
+  before_ = now_;
   if (m.FrameLink() < 0 || system.NumEquations() != system.NumCoordinates()) {
     why_not_ = "the mechanism is not a square system with a frame";
     return;
@@ -150,7 +155,7 @@ int PointSchedule::CloseDyad(Stage& s, int k, const std::vector<bool>& posed, co
 }
 
 PointSchedule::PointJet PointSchedule::GlobalPoint(int link, const Eigen::Vector2d& local) const {
-  const LinkJet& l = links_[link];
+  const LinkJet& l = now_[link];
   const Eigen::Vector2d r(l.c * local.x() - l.s * local.y(), l.s * local.x() + l.c * local.y());
   const Eigen::Vector2d turned = Perp(r);
   PointJet g;
@@ -162,8 +167,10 @@ PointSchedule::PointJet PointSchedule::GlobalPoint(int link, const Eigen::Vector
 
 void PointSchedule::PoseByAngle(int link, const double theta[3], double c, double s, const Eigen::Vector2d& local,
                                 const PointJet& where) {
-  LinkJet& l = links_[link];
+  LinkJet& l = now_[link];
   std::copy(theta, theta + 3, l.theta);
+  l.angle_pending = false;
+  l.turns = before_[link].turns;
   l.c = c;
   l.s = s;
   // origin = where - R(theta) local, differentiated with R' = theta' R perp
@@ -174,32 +181,55 @@ void PointSchedule::PoseByAngle(int link, const double theta[3], double c, doubl
   l.origin[2] = where.p[2] - theta[2] * turned + theta[1] * theta[1] * r;
 }
 
-double PointSchedule::OnTurn(int link, double angle) const {
-  const double predicted = links_[link].theta[0];
-  return predicted + WrapAngle(angle - predicted);
+double PointSchedule::AngleIn(const LinkJet* state, int l) {
+  const LinkJet& jet = state[l];
+  if (jet.angle_pending) {
+    jet.theta[0] = std::atan2(jet.s, jet.c) + 2.0 * kPi * jet.turns;
+    jet.angle_pending = false;
+  }
+  return jet.theta[0];
 }
 
-void PointSchedule::PoseByTwoPoints(int link, const Eigen::Vector2d& local_from, const PointJet& from,
+bool PointSchedule::PoseByTwoPoints(int link, const Eigen::Vector2d& local_from, const PointJet& from,
                                     const Eigen::Vector2d& local_to, const PointJet& to) {
   const Eigen::Vector2d d = to.p[0] - from.p[0], d1 = to.p[1] - from.p[1], d2 = to.p[2] - from.p[2];
   const Eigen::Vector2d dl = local_to - local_from;
   const double r2 = d.squaredNorm();
-  // theta = atan2(d) - atan2(dl), kept on the turn of the predicted angle
+  // theta = atan2(d) - atan2(dl): its cos and sin without trigonometry, d's direction turned back
+  // by dl's (+ 0.0: no -0 sine, which atan2 would put on the other side of the cut)
+  const Eigen::Vector2d e = d / std::sqrt(r2), el = dl / dl.norm();
+  const double c = e.x() * el.x() + e.y() * el.y(), sn = e.y() * el.x() - e.x() * el.y() + 0.0;
+  // The turns: atan2(s, c) jumps by a turn where the link crosses the negative x axis. A step
+  // that turns the link by less than 90 degrees (cos of the turn > 0) crosses it only with
+  // both ends left of the y axis, so the sign change of s there counts it.
+  const LinkJet& before = before_[link];
+  if (!(c * before.c + sn * before.s > 0.0)) return false;
+  int turns = before.turns;
+  if (c < 0.0) turns += (before.s >= 0.0 && sn < 0.0) ? 1 : (before.s < 0.0 && sn >= 0.0) ? -1 : 0;
   double theta[3];
-  theta[0] = OnTurn(link, std::atan2(Cross(dl, d), dl.dot(d)));
   theta[1] = Cross(d, d1) / r2;
   theta[2] = (Cross(d, d2) - 2.0 * d.dot(d1) * theta[1]) / r2;
-  // cos and sin of theta without trigonometry: d's direction turned back by dl's
-  const Eigen::Vector2d e = d / std::sqrt(r2), el = dl / dl.norm();
-  PoseByAngle(link, theta, e.x() * el.x() + e.y() * el.y(), e.y() * el.x() - e.x() * el.y(), local_from, from);
+  PoseByAngle(link, theta, c, sn, local_from, from);
+  now_[link].turns = turns;
+  now_[link].angle_pending = true;
+  return true;
+}
+
+double PointSchedule::AngleBeforeTurns(int link, double input) const {
+  for (const Stage& s : stages_) {
+    if ((s.kind == Kind::kDriveR || s.kind == Kind::kDriveP) && s.link == link)
+      return now_[s.base].theta[0] + (s.kind == Kind::kDriveR ? s.sign * (mechanism_.drive.zero + input) : s.angle);
+    if (s.kind == Kind::kDyadRP && s.b == link) return now_[s.anchor_b].theta[0] + (s.block_is_guide_side ? -1.0 : 1.0) * s.angle;
+  }
+  return std::atan2(now_[link].s, now_[link].c);
 }
 
 void PointSchedule::PoseDrive(const Stage& s, double input) {
-  const LinkJet& base = links_[s.base];
+  const LinkJet& base = now_[s.base];
   const double zero = mechanism_.drive.zero;
   if (s.kind == Kind::kDriveR) {
     const double turn = s.sign * (zero + input);
-    const double theta[3] = {OnTurn(s.link, base.theta[0] + turn), base.theta[1] + s.sign, base.theta[2]};
+    const double theta[3] = {Angle(s.base) + turn + 2.0 * kPi * before_[s.link].turns, base.theta[1] + s.sign, base.theta[2]};
     double st, ct;
     SinCos(turn, st, ct);  // the one trigonometric call of a step: the input's
     PoseByAngle(s.link, theta, base.c * ct - base.s * st, base.s * ct + base.c * st, s.link_point, GlobalPoint(s.base, s.base_point));
@@ -213,7 +243,7 @@ void PointSchedule::PoseDrive(const Stage& s, double input) {
   where.p[0] += v * u;
   where.p[2] += 2.0 * u1 + v * u2;
   where.p[1] += u + v * u1;
-  const double theta[3] = {OnTurn(s.link, base.theta[0] + s.angle), base.theta[1], base.theta[2]};
+  const double theta[3] = {Angle(s.base) + s.angle + 2.0 * kPi * before_[s.link].turns, base.theta[1], base.theta[2]};
   PoseByAngle(s.link, theta, base.c * s.cos_turn - base.s * s.sin_turn, base.s * s.cos_turn + base.c * s.sin_turn, s.link_point, where);
 }
 
@@ -236,9 +266,9 @@ void PointSchedule::PrepareDyad(const Stage& s, DyadRows& d) const {
     d.b = GlobalPoint(s.anchor_b, s.anchor_b_point);
     return;
   }
-  const LinkJet& guide = links_[s.anchor_b];
+  const LinkJet& guide = now_[s.anchor_b];
   const double sign = s.block_is_guide_side ? -1.0 : 1.0;
-  d.block_theta[0] = OnTurn(s.b, guide.theta[0] + sign * s.angle);
+  d.block_theta[0] = Angle(s.anchor_b) + sign * s.angle + 2.0 * kPi * before_[s.b].turns;
   d.block_theta[1] = guide.theta[1];
   d.block_theta[2] = guide.theta[2];
   // the block's angle is the guide's turned by the joint's: cos and sin by the sum formulas
@@ -330,18 +360,15 @@ bool PointSchedule::SolveDyad(Stage& s, double h, const StepOptions& options) {
   s.det_sign = sign;
   s.gauge = gauge;
   s.j = jj;
-  PoseByTwoPoints(s.a, s.a_at_anchor, d.a, s.a_at_j, jj);
-  if (s.kind == Kind::kDyadRR) {
-    PoseByTwoPoints(s.b, s.b_at_anchor, d.b, s.b_at_j, jj);
-  } else {
-    PoseByAngle(s.b, d.block_theta, d.bc, d.bs, s.b_at_j, jj);
-  }
+  if (!PoseByTwoPoints(s.a, s.a_at_anchor, d.a, s.a_at_j, jj)) return false;
+  if (s.kind == Kind::kDyadRR) return PoseByTwoPoints(s.b, s.b_at_anchor, d.b, s.b_at_j, jj);
+  PoseByAngle(s.b, d.block_theta, d.bc, d.bs, s.b_at_j, jj);
   return true;
 }
 
 void PointSchedule::Load(double input, const Eigen::VectorXd& q, const Eigen::MatrixXd& series) {
-  for (int l = 0; l < static_cast<int>(links_.size()); ++l) {
-    LinkJet& jet = links_[l];
+  for (int l = 0; l < n_links_; ++l) {
+    LinkJet& jet = now_[l];
     const int i = system_.CoordinateOf(l);
     if (i < 0) {
       jet = LinkJet();
@@ -354,7 +381,14 @@ void PointSchedule::Load(double input, const Eigen::VectorXd& q, const Eigen::Ma
     }
     jet.origin[0] = q.segment<2>(i);
     jet.theta[0] = q(i + 2);
+    jet.angle_pending = false;
     SinCos(jet.theta[0], jet.s, jet.c);
+    jet.s += 0.0;  // no -0 (see PoseByTwoPoints)
+  }
+  // each link's whole turns against the angle its stage gives it (stages in solve order: a
+  // stage's anchors have their angles)
+  for (int l = 0; l < n_links_; ++l) {
+    if (system_.CoordinateOf(l) >= 0) now_[l].turns = static_cast<int>(std::lround((now_[l].theta[0] - AngleBeforeTurns(l, input)) / (2.0 * kPi)));
   }
   for (Stage& s : stages_) {
     if (s.kind == Kind::kDyadRR || s.kind == Kind::kDyadRP) {
@@ -365,7 +399,7 @@ void PointSchedule::Load(double input, const Eigen::VectorXd& q, const Eigen::Ma
       if (s.kind == Kind::kDyadRR) {
         r2 = s.j.p[0] - GlobalPoint(s.anchor_b, s.anchor_b_point).p[0];
       } else {
-        const LinkJet& line_link = links_[s.block_is_guide_side ? s.b : s.anchor_b];
+        const LinkJet& line_link = now_[s.block_is_guide_side ? s.b : s.anchor_b];
         r2 = Perp(Eigen::Vector2d(line_link.c * s.axis.x() - line_link.s * s.axis.y(), line_link.s * s.axis.x() + line_link.c * s.axis.y()));
       }
       s.det_sign = Cross(r1, r2) > 0.0 ? 1 : -1;
@@ -374,17 +408,24 @@ void PointSchedule::Load(double input, const Eigen::VectorXd& q, const Eigen::Ma
     }
   }
   input_ = input;
+  // every slot a copy of the loaded state: the frame's entry is written only here
+  for (int k = 0; k < kHistory; ++k) {
+    if (k != at_) states_[k] = states_[at_];
+  }
+  state_input_[at_] = input;
+  history_ = 1;
+  before_ = now_;
 }
 
 bool PointSchedule::Step(double input, const StepOptions& options) {
   const double h = input - input_;
-  saved_ = links_;
+  const int next = (at_ + 1) % kHistory;
+  before_ = now_;  // the state stepped from; the next slot is written stage by stage
+  now_ = states_[next].data();
   for (Stage& s : stages_) {
     s.j_saved = s.j;
     s.det_sign_saved = s.det_sign;
   }
-  // the angles' predictions: PoseByTwoPoints keeps each angle on the turn of its prediction
-  for (LinkJet& l : links_) l.theta[0] += h * l.theta[1] + 0.5 * h * h * l.theta[2];
   for (Stage& s : stages_) {
     bool ok = true;
     if (s.kind == Kind::kDriveR || s.kind == Kind::kDriveP) {
@@ -393,7 +434,7 @@ bool PointSchedule::Step(double input, const StepOptions& options) {
       ok = SolveDyad(s, h, options);
     }
     if (!ok) {
-      links_ = saved_;
+      now_ = states_[at_].data();
       for (Stage& t : stages_) {
         t.j = t.j_saved;
         t.det_sign = t.det_sign_saved;
@@ -401,38 +442,42 @@ bool PointSchedule::Step(double input, const StepOptions& options) {
       return false;
     }
   }
+  at_ = next;
+  state_input_[at_] = input;
+  history_ = std::min(history_ + 1, kHistory);
   input_ = input;
   return true;
 }
 
-void PointSchedule::Pose(Eigen::VectorXd& q) const {
+void PointSchedule::HistoryPose(int back, Eigen::VectorXd& q) const {
+  const LinkJet* state = states_[Slot(back)].data();
   q.resize(system_.NumCoordinates());
-  for (int l = 0; l < static_cast<int>(links_.size()); ++l) {
+  for (int l = 0; l < n_links_; ++l) {
     const int i = system_.CoordinateOf(l);
     if (i < 0) continue;
-    q.segment<2>(i) = links_[l].origin[0];
-    q(i + 2) = links_[l].theta[0];
+    q.segment<2>(i) = state[l].origin[0];
+    q(i + 2) = AngleIn(state, l);
   }
 }
 
 void PointSchedule::Series(Eigen::MatrixXd& series) const {
-  for (int l = 0; l < static_cast<int>(links_.size()); ++l) {
+  for (int l = 0; l < n_links_; ++l) {
     const int i = system_.CoordinateOf(l);
     if (i < 0) continue;
-    const LinkJet& jet = links_[l];
+    const LinkJet& jet = now_[l];
     for (int k = 0; k < 3; ++k) {
       const double factor = k == 2 ? 0.5 : 1.0;
       series(i, k) = factor * jet.origin[k].x();
       series(i + 1, k) = factor * jet.origin[k].y();
-      series(i + 2, k) = factor * jet.theta[k];
+      series(i + 2, k) = factor * (k == 0 ? Angle(l) : jet.theta[k]);
     }
   }
 }
 
 void PointSchedule::Trig(double* trig) const {
-  for (size_t l = 0; l < links_.size(); ++l) {
-    trig[2 * l] = links_[l].c;
-    trig[2 * l + 1] = links_[l].s;
+  for (int l = 0; l < n_links_; ++l) {
+    trig[2 * l] = now_[l].c;
+    trig[2 * l + 1] = now_[l].s;
   }
 }
 

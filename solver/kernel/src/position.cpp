@@ -275,8 +275,15 @@ SolveReport PositionSolver::Report(SolveStatus status, int iterations, std::stri
   return report;
 }
 
+void PositionSolver::AdoptPending(double input, const std::function<void(Eigen::VectorXd& q)>* fill) {
+  pending_ = true;
+  pending_input_ = input;
+  pending_fill_ = fill;
+}
+
 void PositionSolver::AdoptPose(double input, const Eigen::VectorXd& q, const double* trig) {
   pending_ = true;
+  pending_fill_ = nullptr;
   pending_input_ = input;
   pending_q_ = q;
   if (use_blocks_ && trig) {
@@ -292,11 +299,14 @@ void PositionSolver::Resolve() const {
   // the adopted pose is converged (to roundoff): Newton takes at most one step and factorises
   auto* self = const_cast<PositionSolver*>(this);
   self->pending_ = false;
+  if (pending_fill_) (*pending_fill_)(self->pending_q_);
+  self->pending_fill_ = nullptr;
   self->Correct(pending_input_, self->pending_q_);
 }
 
 SolveReport PositionSolver::Correct(double input, Eigen::VectorXd& q) {
   pending_ = false;
+  pending_fill_ = nullptr;
   const double tolerance = options_.tolerance * system_.length_scale();
   q_try_ = q;
   double first_norm = -1.0;

@@ -160,8 +160,7 @@ void AbsorbSingularPoints(SweepWalks& w, const Continuation& path, bool only_in_
 // valid order, singular flag.
 void RecordSample(SweepWalks& w, int i, Continuation& path) {
   const int order = w.options.order;
-  const Eigen::MatrixXd& coefficients = path.Series(std::max(order, 2));
-  w.solver.OutputDerivatives(coefficients, order, w.outputs.row(i).data());
+  path.OutputDerivatives(order, w.outputs.row(i).data());
   for (int column = 0; column < w.width; ++column) {
     if (std::isfinite(w.outputs(i, column))) continue;
     w.outputs(i, column) = 0.0;  // never a non-finite number in a result

@@ -233,7 +233,7 @@ bool RefineErrorMaximum(const FunctionRequest& r, const FunctionMap& map, const 
     const Eigen::Index k = nearest - s.inputs.begin();
     Continuation path(solver);
     if (!path.Start(s.inputs[k], s.poses.row(k).transpose()).ok() || !path.AdvanceTo(input, step).ok()) return std::nullopt;
-    solver.OutputDerivatives(path.Series(0), 0, output.data());
+    path.OutputDerivatives(0, output.data());
     const std::optional<double> wanted = map.Output(map.X(input));
     if (!wanted) return std::nullopt;
     return std::abs(four_bar ? AngleDifference(output[0], *wanted) : output[0] - *wanted);

@@ -1,11 +1,13 @@
 // The compiled joint-point step against the general kernel: both walk the same mechanism in steps
-// of 1 deg (the general one by predictor-corrector continuation on link poses, continuation.hpp;
-// the schedule by its dyads' 2 x 2 Newton on joint points), and every pose and its first and
-// second derivatives must agree. Both converge to 1e-13 L and differentiate exactly, so the
-// reference is the general kernel itself to 1e-10 (units of L and rad).
+// of 1 deg (the general one by predictor-corrector continuation on link poses, continuation.hpp,
+// on the dense reference path, which never takes the schedule; the schedule by its dyads' 2 x 2
+// Newton on joint points), and every pose, every output, and their first and second derivatives
+// must agree. Both converge to 1e-13 L and differentiate exactly, so the reference is the general
+// kernel itself to 1e-10 (units of L and rad).
 #include "koppel/solver/point_schedule.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/build.hpp"
 #include "koppel/solver/assembly.hpp"
 #include "koppel/solver/continuation.hpp"
 #include "support/mechanisms.hpp"
@@ -17,6 +19,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace koppel::point_schedule_test {
 namespace {
@@ -27,12 +30,15 @@ constexpr double kAgreement = 1e-10;
 struct WalkResult {
   int steps = 0;
   double worst = 0.0;   // the largest difference of q, dq, d2q/2 (units of L and rad)
+  double worst_output = 0.0;  // the largest difference of an output or its 1st or 2nd derivative
   int sign_products = 0;  // distinct values of (general det sign) x (schedule det sign) seen
 };
 
 // Walks `m` `steps` steps of `step` from its regular assembly with both kernels.
 WalkResult WalkBoth(const Mechanism& m, int steps, double step) {
-  PositionSolver solver(m);
+  NewtonOptions dense;
+  dense.dense = true;  // the reference path: the continuation takes no compiled step on it
+  PositionSolver solver(m, dense);
   const Assembly assembly = AssembleRegular(m, solver);
   REQUIRE(assembly.ok());
   Continuation path(solver);
@@ -46,6 +52,7 @@ WalkResult WalkBoth(const Mechanism& m, int steps, double step) {
   bool mixed = false;
   Eigen::VectorXd q;
   Eigen::MatrixXd series(solver.NumCoordinates(), 3);
+  std::vector<double> outputs(solver.OutputWidth(2)), reference_outputs(solver.OutputWidth(2));
   for (int i = 1; i <= steps; ++i) {
     const double next = assembly.input + i * step;
     if (!path.AdvanceTo(next, step).ok()) break;
@@ -61,6 +68,12 @@ WalkResult WalkBoth(const Mechanism& m, int steps, double step) {
         if (k == 0) result.worst = std::max(result.worst, std::abs(series(r, 0) - reference(r, 0)) / scale);
       }
     }
+    schedule.OutputDerivatives(2, outputs.data());
+    path.OutputDerivatives(2, reference_outputs.data());
+    for (size_t c = 0; c < outputs.size(); ++c) {
+      // angles and lengths alike in units of L: the test mechanisms are about 1 to 10 L long
+      result.worst_output = std::max(result.worst_output, std::abs(outputs[c] - reference_outputs[c]) / std::max(1.0, length));
+    }
     const int product = solver.JacobianSign() * schedule.DeterminantSign();
     if (first_product == 0) first_product = product;
     mixed = mixed || product != first_product;
@@ -68,6 +81,16 @@ WalkResult WalkBoth(const Mechanism& m, int steps, double step) {
   }
   result.sign_products = mixed ? 2 : 1;
   return result;
+}
+
+// `m` with an output of every kind the seeds lack: a distance and a direction between two moving
+// points, the relative angle of the joint at `joint`.
+Mechanism WithEveryOutputKind(Mechanism m, const std::string& link_p, const std::string& p, const std::string& link_q,
+                              const std::string& q, const std::string& joint) {
+  DistanceOutput(m, "distance", link_p, p, link_q, q);
+  DirectionOutput(m, "direction", link_p, p, link_q, q);
+  JointOutput(m, "joint", joint);
+  return m;
 }
 
 }  // namespace
@@ -93,12 +116,17 @@ TEST_CASE("the schedule compiles dyad mechanisms and names what it cannot compil
 
 TEST_CASE("seed mechanisms: the schedule's poses and transfer functions equal the general kernel's", "[point_schedule]") {
   const double step = DegToRad(1.0);
-  for (const Mechanism& m : {test::SliderCrank(1, 2.6, 0.8), test::FourBar(1, 2.5 * std::sqrt(3.0), 2.5 * std::sqrt(3.0), 4, 25.0 / 3, 0.3, 1),
-                             test::WattSixBar()}) {
+  // every output kind: point, link angle, joint (R and P), distance, direction, transmission
+  // angle about a pivot and on a slide
+  for (const Mechanism& m : {WithEveryOutputKind(test::SliderCrank(1, 2.6, 0.8), "crank", "A", "slider", "B", "A"),
+                             WithEveryOutputKind(test::FourBar(1, 2.5 * std::sqrt(3.0), 2.5 * std::sqrt(3.0), 4, 25.0 / 3, 0.3, 1),
+                                                 "coupler", "K", "rocker", "B", "B"),
+                             WithEveryOutputKind(test::WattSixBar(), "crank", "A", "link6", "D", "C")}) {
     INFO(m.name);
     const WalkResult r = WalkBoth(m, 720, step);
     CHECK(r.steps == 720);
     CHECK(r.worst <= kAgreement);
+    CHECK(r.worst_output <= kAgreement);
     // det J of the whole system and the product of the dyads' determinants change sign together
     CHECK(r.sign_products == 1);
   }
@@ -127,6 +155,7 @@ TEST_CASE("200 random crank-rockers and 100 random slider-cranks agree with the 
     const WalkResult r = WalkBoth(m, 720, DegToRad(1.0));
     CHECK(r.steps == 720);
     CHECK(r.worst <= kAgreement);
+    CHECK(r.worst_output <= kAgreement);
     CHECK(r.sign_products == 1);
     ++fourbars;
   }
@@ -138,6 +167,7 @@ TEST_CASE("200 random crank-rockers and 100 random slider-cranks agree with the 
     const WalkResult r = WalkBoth(m, 720, DegToRad(1.0));
     CHECK(r.steps == 720);
     CHECK(r.worst <= kAgreement);
+    CHECK(r.worst_output <= kAgreement);
     CHECK(r.sign_products == 1);
     ++slider_cranks;
   }

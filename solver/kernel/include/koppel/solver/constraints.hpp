@@ -40,6 +40,8 @@ class ConstraintSystem {
   int NumEquations() const { return num_equations_; }  // constraint rows + 1 drive row
   int DriveRow() const { return num_equations_ - 1; }
   int CoordinateOf(int link) const { return coordinate_[link]; }  // -1 for the frame
+  // Where transmission-angle output `output` is measured (default-constructed for other outputs).
+  const TransmissionGeometry& transmission(int output) const { return transmission_[output]; }
   int FirstRowOf(int joint) const { return 2 * joint; }
   double length_scale() const { return length_scale_; }
   // Problems found while resolving outputs (e.g. a transmission angle without a coupler).

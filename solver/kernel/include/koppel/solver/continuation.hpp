@@ -38,6 +38,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -102,12 +103,20 @@ class Continuation {
   WalkReport AdvanceTo(double target, double max_step);
 
   double input() const { return input_; }
-  const Eigen::VectorXd& q() const { return q_; }
+  const Eigen::VectorXd& q() const {
+    MaterializePose();
+    return q_;
+  }
   // Taylor coefficients d^k q / d input^k / k! at the current pose in columns 0..order (the
   // matrix may have more columns, left from a higher order asked for before: read only these,
   // e.g. with leftCols(order + 1)). Columns above ValidOrder() are zero: not computable here. Precondition 0 <= order <= kMaxOrder
   // (std::out_of_range otherwise: the caller validated its options, e.g. SweepOptions::IsValid).
   const Eigen::MatrixXd& Series(int order);
+  // Every output's value and derivatives up to `order` at the current pose, as
+  // PositionSolver::OutputDerivatives(Series(max(order, 2)), order, out): at a pose of the
+  // compiled schedule and order <= 2 from the schedule's jets (the same outputs on the same
+  // series, without the matrix; PointSchedule::OutputDerivatives).
+  void OutputDerivatives(int order, double* out);
   // kMaxOrder at a regular pose; 3 at a singular pose inside a branch-point window, where
   // higher orders through J^-1 would be noise.
   int ValidOrder() const { return valid_order_; }
@@ -136,8 +145,17 @@ class Continuation {
   // Keeps the current pose as the last regular one when `regular`, else forgets the last one (the
   // walk jumped: a pose set from outside, a window's end).
   void RememberIfRegular(bool regular);
-  // The newest remembered regular pose at or behind `input` in `direction`, or -1.
-  int RegularPoseBefore(double input, double direction) const;
+  // The newest remembered regular pose at or behind `input` in `direction` (of the ring below or
+  // of the schedule's history); false when there is none.
+  struct RegularPose {
+    double input = 0.0;
+    Eigen::VectorXd q;
+    long seq = 0;  // when it was remembered (seq_)
+  };
+  bool RegularPoseBefore(double input, double direction, RegularPose* pose) const;
+  // A compiled step leaves q_ to be written from the schedule when first read: its angles cost an
+  // atan2 each, which a walk whose outputs come from the schedule's jets need not pay per step.
+  void MaterializePose() const;
   void Accept(double next);
   void SetRegularPose(double input, const Eigen::VectorXd& q);
   bool RestoreFactorization();
@@ -176,7 +194,8 @@ class Continuation {
   bool started_ = false;
   // the current pose
   double input_ = 0.0;
-  Eigen::VectorXd q_;
+  mutable Eigen::VectorXd q_;
+  mutable bool q_pending_ = false;  // q_ is the schedule's pose, not yet written
   bool factorized_here_ = false;  // the solver's factorisation belongs to the current pose
   bool from_window_ = false;      // the current pose came from a window's interpolant
   int sign_ = 0;
@@ -204,15 +223,13 @@ class Continuation {
   // the compiled step: null when the mechanism does not compile or the dense path is asked for
   std::unique_ptr<PointSchedule> schedule_;
   bool schedule_loaded_ = false;  // the schedule's state is the current pose
-  std::vector<double> trig_;      // cos and sin of the link angles at a compiled pose
   bool compiled_pose_ = false;    // the current pose came from the schedule (no factorisation)
+  std::function<void(Eigen::VectorXd&)> fill_pose_;  // the solver's AdoptPending: the schedule's pose
   // the last accepted poses of the walk that were clearly regular (pivot gauge above
   // kRegularPivotRatio), newest last, since the walk last jumped: a branch crossing starts from
-  // one behind its window
-  struct RegularPose {
-    double input = 0.0;
-    Eigen::VectorXd q;
-  };
+  // one behind its window. Compiled poses stay in the schedule's history (every one is regular),
+  // numbered on from schedule_seq_ backwards.
+  long seq_ = 0, schedule_seq_ = 0;
   static constexpr int kRememberedPoses = 8;
   std::array<RegularPose, kRememberedPoses> regular_;
   int regular_next_ = 0, regular_count_ = 0;

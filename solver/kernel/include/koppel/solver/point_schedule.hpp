@@ -37,6 +37,8 @@ class PointSchedule {
  public:
   // Compiles `system`'s mechanism (which must outlive the schedule).
   explicit PointSchedule(const ConstraintSystem& system);
+  PointSchedule(const PointSchedule&) = delete;  // holds pointers into its own states
+  PointSchedule& operator=(const PointSchedule&) = delete;
 
   bool compiled() const { return why_not_.empty(); }
   const std::string& why_not() const { return why_not_; }
@@ -64,7 +66,14 @@ class PointSchedule {
 
   // The solved state in ConstraintSystem's layout: q, and its Taylor coefficients (columns 0, 1,
   // 2 = q, dq/dinput, d2q/dinput2 / 2).
-  void Pose(Eigen::VectorXd& q) const;
+  void Pose(Eigen::VectorXd& q) const { HistoryPose(0, q); }
+  // The last accepted states, kept without copying (each step writes the oldest slot): back = 0
+  // is the solved state, back < History(). Load starts the history anew with its state.
+  static constexpr int kHistory = 8;
+  int History() const { return history_; }
+  void ForgetHistory() { history_ = 0; }
+  double HistoryInput(int back) const { return state_input_[Slot(back)]; }
+  void HistoryPose(int back, Eigen::VectorXd& q) const;
   // (`series` must have NumCoordinates() rows and at least 3 columns: the first 3 are written,
   // nothing is allocated)
   void Series(Eigen::MatrixXd& series) const;
@@ -76,13 +85,31 @@ class PointSchedule {
   int DeterminantSign() const;
   double Gauge() const;
 
+  // Every output's value and derivatives up to `order` (0..2) at the solved state, in the layout
+  // of PositionSolver::OutputDerivatives (point_schedule_outputs.cpp): each output of
+  // ConstraintSystem::Output written out for value, 1st and 2nd derivative from the links' jets
+  // (no coefficient matrix, no sincos: the jets carry cos and sin). The tests hold the two to
+  // 1e-12.
+  void OutputDerivatives(int order, double* out) const;
+
  private:
-  // A link's pose and its first and second derivatives with respect to the input.
+  // A link's pose and its first and second derivatives with respect to the input. The angle
+  // itself is taken only when asked for (Angle): a link posed by two points has cos and sin from
+  // them, and its angle is atan2(s, c) plus the whole turns counted as the walk crossed the
+  // negative x axis (a step turns a link by less than 90 degrees, see PoseByTwoPoints); a link
+  // posed by angle (the drive's, a block's) has theta[0] set, its turns fixed at Load.
   struct LinkJet {
-    double theta[3] = {0, 0, 0};
+    mutable double theta[3] = {0, 0, 0};  // theta[0]: valid unless angle_pending
     double c = 1.0, s = 0.0;
     Eigen::Vector2d origin[3] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+    int turns = 0;
+    mutable bool angle_pending = false;
   };
+  // the angle of link l at the solved state, or in history slot `slot` (one atan2 the first
+  // time it is asked for)
+  double Angle(int l) const { return AngleIn(now_, l); }
+  static double AngleIn(const LinkJet* state, int l);
+  int Slot(int back) const { return (at_ - back + kHistory) % kHistory; }
   // A global point and its first and second derivatives.
   struct PointJet {
     Eigen::Vector2d p[3] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
@@ -126,12 +153,13 @@ class PointSchedule {
   int NewtonDyad(const Stage& s, DyadRows& rows, Eigen::Vector2d& j, const StepOptions& options) const;
   PointJet DyadDerivatives(const Stage& s, const DyadRows& rows, const Eigen::Vector2d& j) const;
   bool SolveDyad(Stage& s, double h, const StepOptions& options);
-  // poses link `link` from its point `local_from` at `from` and `local_to` at `to` (jets)
-  void PoseByTwoPoints(int link, const Eigen::Vector2d& local_from, const PointJet& from, const Eigen::Vector2d& local_to,
+  // poses link `link` from its point `local_from` at `from` and `local_to` at `to` (jets); false
+  // when the link turned by 90 degrees or more in the step (its turns could not be counted)
+  bool PoseByTwoPoints(int link, const Eigen::Vector2d& local_from, const PointJet& from, const Eigen::Vector2d& local_to,
                        const PointJet& to);
-  // `angle` moved by whole turns to the nearest of link's predicted angle: the joints hold angles
-  // modulo a turn (constraints.hpp), a walk keeps each link's angle continuous
-  double OnTurn(int link, double angle) const;
+  // the angle a stage gives link `link` before whole turns: the drive's, a block's, or for a
+  // link posed by two points atan2(s, c) (Load counts the turns against q from it)
+  double AngleBeforeTurns(int link, double input) const;
   // poses a link of known angle jet through its local point at `at`
   // (cos and sin of theta given: the stages have them without trigonometry)
   void PoseByAngle(int link, const double theta[3], double c, double s, const Eigen::Vector2d& local, const PointJet& at);
@@ -140,10 +168,15 @@ class PointSchedule {
   const Mechanism& mechanism_;
   std::string why_not_;
   std::vector<Stage> stages_;
-  std::vector<LinkJet> links_, saved_;
+  // The states: kHistory slots of one LinkJet per link, the solved state in slot at_. A step
+  // writes the next slot (now_) from the solved one (before_); a refused step leaves at_.
+  std::vector<std::vector<LinkJet>> states_;
+  std::vector<double> state_input_;
+  int at_ = 0, history_ = 0, n_links_ = 0;
+  LinkJet* now_ = nullptr;
+  const LinkJet* before_ = nullptr;
   double length_scale_ = 1.0;
   double input_ = 0.0;
-  double predicted_from_ = 0.0;  // the input of the state the prediction expands about
 };
 
 }  // namespace koppel

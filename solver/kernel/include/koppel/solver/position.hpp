@@ -13,6 +13,7 @@
 #include <Eigen/LU>
 #include <Eigen/QR>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -123,6 +124,11 @@ class PositionSolver {
   // solver after a walk always get the walk's pose.
   // `trig` (optional): cos and sin of every link angle at q, which OutputDerivatives then reuses.
   void AdoptPose(double input, const Eigen::VectorXd& q, const double* trig = nullptr);
+  // The same for a pose that its owner writes into q only when asked (`fill`, which must stay
+  // callable until the next AdoptPose, AdoptPending or Correct): a walk of compiled steps pays for
+  // the pose's angles only when something reads the solver.
+  void AdoptPending(double input, const std::function<void(Eigen::VectorXd& q)>* fill);
+  bool IsPending(const std::function<void(Eigen::VectorXd& q)>* fill) const { return pending_ && pending_fill_ == fill; }
 
   // Rank of the constraint rows (drive row excluded) at q, and the actual mobility
   // NumCoordinates() - rank.
@@ -171,6 +177,7 @@ class PositionSolver {
   bool pending_ = false;  // an adopted pose waits for its factorisation
   double pending_input_ = 0.0;
   Eigen::VectorXd pending_q_;
+  const std::function<void(Eigen::VectorXd&)>* pending_fill_ = nullptr;  // writes pending_q_ when set
   template <int N> std::vector<Taylor<N>>& CoordinateSeries() const {
     if constexpr (N == 2) return q2_; else return q8_;
   }

@@ -152,6 +152,20 @@ FourBarValues SeedFourBarClosedForm(double phi) {
   return v;
 }
 
+FourBarPoints SeedFourBarPositionsClosedForm(double phi) {
+  using namespace bench_mechanisms;
+  const double ax = kL1 * std::cos(phi), ay = kL1 * std::sin(phi);
+  // B by circle intersection, left of A -> B0, as SeedFourBarClosedForm
+  const double dx = kL4 - ax, dy = -ay, d2 = dx * dx + dy * dy, d = std::sqrt(d2);
+  const double along = (kL2 * kL2 - kL3 * kL3 + d2) / (2 * d), across = std::sqrt(kL2 * kL2 - along * along);
+  const double ux = dx / d, uy = dy / d;
+  const double bx = ax + along * ux - across * uy, by = ay + along * uy + across * ux;
+  // K = A + k e^{i kappa} turned by the coupler's direction (B - A) / l2
+  const double ct = (bx - ax) / kL2, st = (by - ay) / kL2;
+  const double kx = kK * std::cos(kKappa), ky = kK * std::sin(kKappa);
+  return {bx, by, ax + ct * kx - st * ky, ay + st * kx + ct * ky};
+}
+
 SliderCrankValues SeedSliderCrankClosedForm(double phi) {
   using namespace bench_mechanisms;
   const double sa = std::sin(phi), ca = std::cos(phi);

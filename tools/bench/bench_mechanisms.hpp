@@ -37,6 +37,12 @@ struct SliderCrankValues {
 // e^{i psi} differentiated twice; seed 000's s/l1 = sin phi + cos psi / lambda; seed 001's
 // s = l1 h / l6 sin phi / (1 - lambda cos phi)).
 FourBarValues SeedFourBarClosedForm(double phi);
+// The positions alone (B and K, no derivatives, no angles): the closed form of what the
+// positions benchmarks solve (libslvs's sketch, koppel's walk without outputs).
+struct FourBarPoints {
+  double bx, by, kx, ky;
+};
+FourBarPoints SeedFourBarPositionsClosedForm(double phi);
 SliderCrankValues SeedSliderCrankClosedForm(double phi);
 Jet SeedProportionalClosedForm(double phi);
 

@@ -19,7 +19,8 @@
 
 namespace koppel::bench {
 
-void TimeFourBarPositions(benchmark::State& state);  // walk_bench.cpp
+void TimeFourBarPositions(benchmark::State& state);            // walk_bench.cpp
+void TimeFourBarPositionsClosedForm(benchmark::State& state);  // walk_bench.cpp
 
 #ifdef KOPPEL_HAVE_SLVS
 namespace slvs_bench {  // this file's own names, apart from the other benchmarks' in a unity build
@@ -152,7 +153,16 @@ std::vector<Case> SlvsCases() {
   positions.steps_per_iteration = 360;
   positions.baseline = "fourbar-slvs";
   positions.run = TimeFourBarPositions;
-  return {slvs, positions};
+  // the same walk against the closed form of the same positions (issue 25)
+  Case closed_form;
+  closed_form.name = "fourbar-positions-closed-form";
+  closed_form.per = Per::kStep;
+  closed_form.steps_per_iteration = 360;
+  closed_form.run = TimeFourBarPositionsClosedForm;
+  Case against_closed_form = positions;
+  against_closed_form.name = "fourbar-positions-vs-closed-form";
+  against_closed_form.baseline = "fourbar-positions-closed-form";
+  return {slvs, positions, closed_form, against_closed_form};
 }
 
 }  // namespace koppel::bench

@@ -60,7 +60,9 @@ class Walker {
   bool Steps(int count, bool transfer) {
     for (int i = 0; i < count; ++i) {
       if (!Step(transfer)) return false;
-      benchmark::DoNotOptimize(path_.q().data());
+      // The solved pose is the walk's state (joint points, link origins, cos and sin); the link
+      // angles as numbers are written when read (Continuation::q), which a row of outputs does
+      // not need, nor the positions libslvs is compared with (its points).
       benchmark::DoNotOptimize(row_.data());
     }
     return true;
@@ -237,6 +239,23 @@ std::vector<Case> WalkCases() {
 void TimeFourBarPositions(benchmark::State& state) {
   using namespace walk_bench;
   TimeWalk(state, SeedFourBar(), false, kStepsPerTurn, FourBarCheck);
+}
+
+// The closed form of the same positions over the same inputs, checked first against the walk's
+// reference closed form (SeedFourBarClosedForm's K).
+void TimeFourBarPositionsClosedForm(benchmark::State& state) {
+  using namespace walk_bench;
+  double worst = 0.0;
+  for (int i = 0; i < kStepsPerTurn; ++i) {
+    const FourBarPoints p = SeedFourBarPositionsClosedForm(i * kStep);
+    const FourBarValues v = SeedFourBarClosedForm(i * kStep);
+    worst = std::max({worst, std::abs(p.kx - v.kx.v), std::abs(p.ky - v.ky.v)});
+  }
+  if (!(worst <= kAgreement)) {
+    state.SkipWithError(("the two closed forms differ by " + std::to_string(worst)).c_str());
+    return;
+  }
+  TimeClosedForm(state, SeedFourBarPositionsClosedForm);
 }
 
 }  // namespace koppel::bench

@@ -1,5 +1,7 @@
 #include "koppel/solver/point_schedule.hpp"
 
+#include "point_schedule_parts.hpp"
+
 #include "koppel/solver/constraints.hpp"
 #include "koppel/core/angles.hpp"  // kPi
 #include "koppel/solver/taylor.hpp"  // SinCos
@@ -8,38 +10,7 @@
 #include <cmath>
 
 namespace koppel {
-namespace {
-
-// The left normal: the vector turned by +90 degrees.
-Eigen::Vector2d Perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
-double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-// A stage's 2 x 2 Jacobian below this normalised determinant (the sine of the angle between its
-// rows) counts as singular: the general kernel takes over there.
-constexpr double kSingularGauge = 1e-12;
-// Dyad links shorter than this times L are left to the general kernel (see AddDyadStage).
-constexpr double kShortestDyadLink = 1e-2;
-
-// Joint k's local point on `link`, and the link across it.
-Eigen::Vector2d LocalAt(const Mechanism& m, int k, int link) {
-  const Joint& j = m.joints[k];
-  return j.link_a == link ? m.links[link].points[j.point_a].local : m.links[link].points[j.point_b].local;
-}
-int OtherLink(const Mechanism& m, int k, int link) { return m.joints[k].link_a == link ? m.joints[k].link_b : m.joints[k].link_a; }
-
-// An unused joint of `type` between `link` and a posed link, other than `except` and the drive;
-// -1 when there is none.
-int FreeJointToPosed(const Mechanism& m, int link, int except, JointType type, const std::vector<bool>& posed,
-                     const std::vector<bool>& used) {
-  for (int k = 0; k < static_cast<int>(m.joints.size()); ++k) {
-    const Joint& j = m.joints[k];
-    if (k == except || k == m.drive.joint || used[k] || j.type != type || (j.link_a != link && j.link_b != link)) continue;
-    if (posed[OtherLink(m, k, link)]) return k;
-  }
-  return -1;
-}
-
-}  // namespace
+using namespace point_schedule_parts;
 
 PointSchedule::PointSchedule(const ConstraintSystem& system)
     : system_(system), mechanism_(system.mechanism()), length_scale_(system.length_scale()) {
@@ -56,7 +27,7 @@ PointSchedule::PointSchedule(const ConstraintSystem& system)
   }
   std::vector<bool> posed(n_links, false), used(m.joints.size(), false);
   posed[m.FrameLink()] = true;
-  while (AddDriveStage(posed, used) || AddDyadStage(posed, used)) {
+  while (AddDriveStage(posed, used) || AddDyadStage(posed, used) || AddSlideDyadStage(posed, used)) {
   }
   for (int l = 0; l < n_links && why_not_.empty(); ++l) {
     if (!posed[l]) why_not_ = "link '" + m.links[l].name + "' is not posed by a drive or a dyad";
@@ -198,7 +169,13 @@ bool PointSchedule::PoseByTwoPoints(int link, const Eigen::Vector2d& local_from,
   // theta = atan2(d) - atan2(dl): its cos and sin without trigonometry, d's direction turned back
   // by dl's (+ 0.0: no -0 sine, which atan2 would put on the other side of the cut)
   const Eigen::Vector2d e = d / std::sqrt(r2), el = dl / dl.norm();
-  const double c = e.x() * el.x() + e.y() * el.y(), sn = e.y() * el.x() - e.x() * el.y() + 0.0;
+  const double c = e.x() * el.x() + e.y() * el.y(), sn = e.y() * el.x() - e.x() * el.y();
+  const double t1 = Cross(d, d1) / r2;
+  return PoseByCosSin(link, c, sn, t1, (Cross(d, d2) - 2.0 * d.dot(d1) * t1) / r2, local_from, from);
+}
+
+bool PointSchedule::PoseByCosSin(int link, double c, double sn, double t1, double t2, const Eigen::Vector2d& local, const PointJet& at) {
+  sn += 0.0;  // no -0 sine, which atan2 would put on the other side of the cut
   // The turns: atan2(s, c) jumps by a turn where the link crosses the negative x axis. A step
   // that turns the link by less than 90 degrees (cos of the turn > 0) crosses it only with
   // both ends left of the y axis, so the sign change of s there counts it.
@@ -206,10 +183,8 @@ bool PointSchedule::PoseByTwoPoints(int link, const Eigen::Vector2d& local_from,
   if (!(c * before.c + sn * before.s > 0.0)) return false;
   int turns = before.turns;
   if (c < 0.0) turns += (before.s >= 0.0 && sn < 0.0) ? 1 : (before.s < 0.0 && sn >= 0.0) ? -1 : 0;
-  double theta[3];
-  theta[1] = Cross(d, d1) / r2;
-  theta[2] = (Cross(d, d2) - 2.0 * d.dot(d1) * theta[1]) / r2;
-  PoseByAngle(link, theta, c, sn, local_from, from);
+  const double theta[3] = {0.0, t1, t2};
+  PoseByAngle(link, theta, c, sn, local, at);
   now_[link].turns = turns;
   now_[link].angle_pending = true;
   return true;
@@ -391,7 +366,9 @@ void PointSchedule::Load(double input, const Eigen::VectorXd& q, const Eigen::Ma
     if (system_.CoordinateOf(l) >= 0) now_[l].turns = static_cast<int>(std::lround((now_[l].theta[0] - AngleBeforeTurns(l, input)) / (2.0 * kPi)));
   }
   for (Stage& s : stages_) {
-    if (s.kind == Kind::kDyadRR || s.kind == Kind::kDyadRP) {
+    if (s.kind == Kind::kDyadPRP || s.kind == Kind::kDyadRPR) {
+      LoadSlideDyad(s);
+    } else if (s.kind == Kind::kDyadRR || s.kind == Kind::kDyadRP) {
       s.j = GlobalPoint(s.a, s.a_at_j);
       const PointJet a = GlobalPoint(s.anchor_a, s.anchor_a_point);
       const Eigen::Vector2d r1 = s.j.p[0] - a.p[0];
@@ -431,7 +408,7 @@ bool PointSchedule::Step(double input, const StepOptions& options) {
     if (s.kind == Kind::kDriveR || s.kind == Kind::kDriveP) {
       PoseDrive(s, input);
     } else {
-      ok = SolveDyad(s, h, options);
+      ok = s.kind == Kind::kDyadPRP ? SolvePRP(s, options) : s.kind == Kind::kDyadRPR ? SolveRPR(s, options) : SolveDyad(s, h, options);
     }
     if (!ok) {
       now_ = states_[at_].data();
@@ -484,7 +461,7 @@ void PointSchedule::Trig(double* trig) const {
 int PointSchedule::DeterminantSign() const {
   int sign = 1;
   for (const Stage& s : stages_) {
-    if (s.kind == Kind::kDyadRR || s.kind == Kind::kDyadRP) sign *= s.det_sign;
+    if (IsDyad(s.kind)) sign *= s.det_sign;
   }
   return sign;
 }
@@ -492,7 +469,7 @@ int PointSchedule::DeterminantSign() const {
 double PointSchedule::Gauge() const {
   double gauge = 1.0;
   for (const Stage& s : stages_) {
-    if (s.kind == Kind::kDyadRR || s.kind == Kind::kDyadRP) gauge = std::min(gauge, s.gauge);
+    if (IsDyad(s.kind)) gauge = std::min(gauge, s.gauge);
   }
   return gauge;
 }

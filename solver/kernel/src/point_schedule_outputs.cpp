@@ -6,10 +6,13 @@
 #include "koppel/solver/constraints.hpp"
 #include "koppel/solver/point_schedule.hpp"
 
+#include "point_schedule_parts.hpp"
+
 #include <cmath>
 
 namespace koppel {
 namespace point_outputs {  // this file's own names, apart from point_schedule.cpp's in a unity build
+using point_schedule_parts::Cross;
 
 // A scalar and its 1st and 2nd derivatives.
 struct ScalarJet {
@@ -21,7 +24,6 @@ template <class V>
 ScalarJet Dot(const V a[3], const V b[3]) {
   return {a[0].dot(b[0]), a[1].dot(b[0]) + a[0].dot(b[1]), a[2].dot(b[0]) + 2.0 * a[1].dot(b[1]) + a[0].dot(b[2])};
 }
-inline double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 template <class V>
 ScalarJet CrossJet(const V a[3], const V b[3]) {
   return {Cross(a[0], b[0]), Cross(a[1], b[0]) + Cross(a[0], b[1]), Cross(a[2], b[0]) + 2.0 * Cross(a[1], b[1]) + Cross(a[0], b[2])};
@@ -38,6 +40,27 @@ ScalarJet Atan2Jet(const ScalarJet& y, const ScalarJet& x) {
 ScalarJet AbsJet(const ScalarJet& x) { return x.v < 0.0 ? ScalarJet{-x.v, -x.d1, -x.d2} : x; }
 
 }  // namespace point_outputs
+
+void PointSchedule::TransmissionLines(int output, Eigen::Vector2d coupler[3], Eigen::Vector2d motion[3]) const {
+  const Mechanism& m = mechanism_;
+  const TransmissionGeometry& g = system_.transmission(output);
+  auto point = [&](const PointRef& r) { return GlobalPoint(r.link, m.links[r.link].points[r.point].local); };
+  const PointJet a = point(g.coupler_from), b = point(g.coupler_to);
+  for (int k = 0; k < 3; ++k) coupler[k] = b.p[k] - a.p[k];
+  if (g.slide_joint >= 0) {
+    // the slide's direction turns with its guide
+    const Joint& j = m.joints[g.slide_joint];
+    const LinkJet& l = now_[j.link_a];
+    motion[0] = Eigen::Vector2d(l.c * j.axis.x() - l.s * j.axis.y(), l.s * j.axis.x() + l.c * j.axis.y());
+    const Eigen::Vector2d turned(-motion[0].y(), motion[0].x());
+    motion[1] = l.theta[1] * turned;
+    motion[2] = l.theta[2] * turned - l.theta[1] * l.theta[1] * motion[0];
+    return;
+  }
+  // the output point's direction of motion about the pivot: (b - pivot) turned by +90 deg
+  const PointJet pivot = point(g.pivot);
+  for (int k = 0; k < 3; ++k) motion[k] = Eigen::Vector2d(-(b.p[k].y() - pivot.p[k].y()), b.p[k].x() - pivot.p[k].x());
+}
 
 void PointSchedule::OutputDerivatives(int order, double* out) const {
   using namespace point_outputs;
@@ -105,18 +128,8 @@ void PointSchedule::OutputDerivatives(int order, double* out) const {
         break;
       }
       case OutputKind::kTransmissionAngle: {
-        const TransmissionGeometry& g = system_.transmission(o);
-        const PointJet a = point(g.coupler_from), b = point(g.coupler_to);
         Eigen::Vector2d c[3], v[3];
-        for (int k = 0; k < 3; ++k) c[k] = b.p[k] - a.p[k];
-        if (g.slide_joint >= 0) {
-          const Joint& j = m.joints[g.slide_joint];
-          direction(j.link_a, j.axis, v);
-        } else {
-          // the output point's direction of motion about the pivot: (b - pivot) turned by +90 deg
-          const PointJet pivot = point(g.pivot);
-          for (int k = 0; k < 3; ++k) v[k] = Eigen::Vector2d(-(b.p[k].y() - pivot.p[k].y()), b.p[k].x() - pivot.p[k].x());
-        }
+        TransmissionLines(o, c, v);
         write(Atan2Jet(AbsJet(Dot(c, v)), AbsJet(CrossJet(c, v))));
         break;
       }

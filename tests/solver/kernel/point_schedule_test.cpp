@@ -84,7 +84,8 @@ WalkResult WalkBoth(const Mechanism& m, int steps, double step) {
 }
 
 // `m` with an output of every kind the seeds lack: a distance and a direction between two moving
-// points, the relative angle of the joint at `joint`.
+// points, the relative angle of the joint at `joint`. (The direction is chosen away from +-180
+// deg, where both kernels' atan2 would jump by a turn at slightly different inputs.)
 Mechanism WithEveryOutputKind(Mechanism m, const std::string& link_p, const std::string& p, const std::string& link_q,
                               const std::string& q, const std::string& joint) {
   DistanceOutput(m, "distance", link_p, p, link_q, q);
@@ -96,16 +97,17 @@ Mechanism WithEveryOutputKind(Mechanism m, const std::string& link_p, const std:
 }  // namespace
 
 TEST_CASE("the schedule compiles dyad mechanisms and names what it cannot compile", "[point_schedule]") {
+  // seed 001's proportional linkage: a slotted link turning about its pivot (RPR) and two blocks
+  // hinged to each other on two guides (PRP)
   for (const Mechanism& m : {test::SliderCrank(1, 2.6, 0.8), test::FourBar(1, 4.33, 4.33, 4, 8.33, 0.3, 1), test::WattSixBar(),
-                             test::FourBar(1, 4.33, 4.33, 4, 8.33, 0.3, 1, true)}) {
+                             test::FourBar(1, 4.33, 4.33, 4, 8.33, 0.3, 1, true), test::ProportionalLinkage(1.0, 0.5, 1.83)}) {
     PositionSolver solver(m);
     const PointSchedule schedule(solver.system());
     INFO(m.name << ": " << schedule.why_not());
     CHECK(schedule.compiled());
   }
-  // a redundant crank (more joint equations than coordinates) and seed 001's slotted link (its
-  // angle comes from a prismatic joint turning about a pivot: no dyad of this schedule)
-  for (const Mechanism& m : {test::RedundantParallelogram(), test::ProportionalLinkage(1.0, 0.5, 1.83)}) {
+  // a redundant crank (more joint equations than coordinates)
+  for (const Mechanism& m : {test::RedundantParallelogram()}) {
     PositionSolver solver(m);
     const PointSchedule schedule(solver.system());
     INFO(m.name << ": " << schedule.why_not());
@@ -121,7 +123,8 @@ TEST_CASE("seed mechanisms: the schedule's poses and transfer functions equal th
   for (const Mechanism& m : {WithEveryOutputKind(test::SliderCrank(1, 2.6, 0.8), "crank", "A", "slider", "B", "A"),
                              WithEveryOutputKind(test::FourBar(1, 2.5 * std::sqrt(3.0), 2.5 * std::sqrt(3.0), 4, 25.0 / 3, 0.3, 1),
                                                  "coupler", "K", "rocker", "B", "B"),
-                             WithEveryOutputKind(test::WattSixBar(), "crank", "A", "link6", "D", "C")}) {
+                             WithEveryOutputKind(test::WattSixBar(), "crank", "A", "link6", "D", "C"),
+                             WithEveryOutputKind(test::ProportionalLinkage(1.0, 0.5, 1.83), "slider", "D", "slot", "B0", "B0")}) {
     INFO(m.name);
     const WalkResult r = WalkBoth(m, 720, step);
     CHECK(r.steps == 720);
@@ -170,6 +173,24 @@ TEST_CASE("200 random crank-rockers and 100 random slider-cranks agree with the 
     CHECK(r.worst_output <= kAgreement);
     CHECK(r.sign_products == 1);
     ++slider_cranks;
+  }
+}
+
+TEST_CASE("100 random proportional linkages (RPR and PRP dyads) agree with the general kernel over two turns",
+          "[point_schedule][property]") {
+  std::mt19937 random(20261128);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < 100; ++i) {
+    // the crank shorter than the frame: the slot swings (never upright, so the slider's guide and
+    // the slot never turn parallel) and the crank turns round
+    const double frame = 0.5 + 1.5 * unit(random), crank = (0.1 + 0.75 * unit(random)) * frame, h = (0.3 + 2.0 * unit(random)) * frame;
+    const Mechanism m = test::ProportionalLinkage(frame, crank, h);
+    INFO("proportional linkage " << frame << " " << crank << " " << h);
+    const WalkResult r = WalkBoth(m, 720, DegToRad(1.0));
+    CHECK(r.steps == 720);
+    CHECK(r.worst <= kAgreement);
+    CHECK(r.worst_output <= kAgreement);
+    CHECK(r.sign_products == 1);
   }
 }
 

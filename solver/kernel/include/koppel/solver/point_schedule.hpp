@@ -114,7 +114,14 @@ class PointSchedule {
   struct PointJet {
     Eigen::Vector2d p[3] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
   };
-  enum class Kind { kDriveR, kDriveP, kDyadRR, kDyadRP };
+  enum class Kind { kDriveR, kDriveP, kDyadRR, kDyadRP, kDyadPRP, kDyadRPR };
+  // A slide (P joint) of a dyad: its line on `guide` through guide_point along axis, the block's
+  // slide point, the block's angle the guide's turned by the joint's (cos_turn, sin_turn).
+  struct Slide {
+    int guide = -1, block = -1;
+    Eigen::Vector2d axis = Eigen::Vector2d::UnitX(), guide_point = Eigen::Vector2d::Zero(), block_point = Eigen::Vector2d::Zero();
+    double cos_turn = 1.0, sin_turn = 0.0;
+  };
   struct Stage {
     Kind kind = Kind::kDriveR;
     // drive R / P: the posed link `base` and the driven link `link`; sign +1 when the driven link
@@ -134,6 +141,12 @@ class PointSchedule {
     double length_a = 0.0, length_b = 0.0;        // |J - A| (on a), |J - B| (on b)
     bool block_is_guide_side = false;             // RP: the block is the P joint's link_a
     // the solved J, its derivatives, and the last 2 x 2 determinant (sign and gauge)
+    // PRP: two blocks (a, b) on the slides line_a, line_b, hinged to each other at J.
+    // RPR: a block a on the line of link b (line_b), each hinged to a posed link (anchor_a at A,
+    // anchor_b at B): b's angle from its normal n . (A - B) = offset, on the branch `branch`.
+    Slide line_a, line_b;
+    Eigen::Vector2d normal = Eigen::Vector2d::UnitY();  // RPR: the line's unit normal, local to b
+    double offset = 0.0, branch = 1.0;
     PointJet j, j_saved;
     int det_sign = 0, det_sign_saved = 0;
     double gauge = 1.0;
@@ -142,6 +155,17 @@ class PointSchedule {
   // Compiling: a stage for the drive, or for a dyad, when one can be posed next; false if none.
   bool AddDriveStage(std::vector<bool>& posed, std::vector<bool>& used);
   bool AddDyadStage(std::vector<bool>& posed, std::vector<bool>& used);
+  // PRP and RPR (point_schedule_slides.cpp)
+  bool AddSlideDyadStage(std::vector<bool>& posed, std::vector<bool>& used);
+  Slide SlideOf(int prismatic_joint) const;
+  // RPR of the P joint k, the block's hinge ka, the line's link's pivot kb
+  void CompileRPR(Stage& s, int k, int ka, int kb) const;
+  bool SolvePRP(Stage& s, const StepOptions& options);
+  bool SolveRPR(Stage& s, const StepOptions& options);
+  void LoadSlideDyad(Stage& s);  // the stage's J, branch, sign and gauge at the loaded pose
+  // the line row of a block on a posed guide: n . (J - X) = 0 with J the block's point `at_j`
+  struct LineRow;
+  void PrepareLine(const Slide& slide, const Eigen::Vector2d& at_j, LineRow& row) const;
   // The second half of dyad `s` through its inner joint k: b's R joint to a posed link (RR) or
   // its P joint on a posed guide (RP); that joint, or -1.
   int CloseDyad(Stage& s, int k, const std::vector<bool>& posed, const std::vector<bool>& used) const;
@@ -163,6 +187,12 @@ class PointSchedule {
   // poses a link of known angle jet through its local point at `at`
   // (cos and sin of theta given: the stages have them without trigonometry)
   void PoseByAngle(int link, const double theta[3], double c, double s, const Eigen::Vector2d& local, const PointJet& at);
+  // the same for a link whose angle is known by cos and sin only: its turns counted against the
+  // state stepped from; false when it turned by 90 degrees or more in the step
+  bool PoseByCosSin(int link, double c, double s, double t1, double t2, const Eigen::Vector2d& local, const PointJet& at);
+  // a transmission angle's coupler line and the output point's direction of motion, as jets
+  void TransmissionLines(int output, Eigen::Vector2d coupler[3], Eigen::Vector2d motion[3]) const;
+  static bool IsDyad(Kind k) { return k != Kind::kDriveR && k != Kind::kDriveP; }
 
   const ConstraintSystem& system_;
   const Mechanism& mechanism_;

@@ -1,0 +1,44 @@
+// What the files of the compiled walk step (point_schedule.cpp, point_schedule_slides.cpp,
+// point_schedule_outputs.cpp) share: plane geometry, the thresholds, the mechanism's graph.
+#pragma once
+
+#include "koppel/core/mechanism.hpp"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace koppel::point_schedule_parts {
+
+// The left normal: the vector turned by +90 degrees.
+inline Eigen::Vector2d Perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
+inline double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+// v turned by the angle whose cos and sin are c, s
+inline Eigen::Vector2d Turned(double c, double s, const Eigen::Vector2d& v) { return {c * v.x() - s * v.y(), s * v.x() + c * v.y()}; }
+
+// A stage's 2 x 2 Jacobian below this normalised determinant (the sine of the angle between its
+// rows) counts as singular: the general kernel takes over there.
+inline constexpr double kSingularGauge = 1e-12;
+// Dyad links shorter than this times L are left to the general kernel (see AddDyadStage).
+inline constexpr double kShortestDyadLink = 1e-2;
+
+// Joint k's local point on `link`, and the link across it.
+inline Eigen::Vector2d LocalAt(const Mechanism& m, int k, int link) {
+  const Joint& j = m.joints[k];
+  return j.link_a == link ? m.links[link].points[j.point_a].local : m.links[link].points[j.point_b].local;
+}
+inline int OtherLink(const Mechanism& m, int k, int link) { return m.joints[k].link_a == link ? m.joints[k].link_b : m.joints[k].link_a; }
+
+// An unused joint of `type` between `link` and a posed link, other than `except` and the drive;
+// -1 when there is none.
+inline int FreeJointToPosed(const Mechanism& m, int link, int except, JointType type, const std::vector<bool>& posed,
+                            const std::vector<bool>& used) {
+  for (int k = 0; k < static_cast<int>(m.joints.size()); ++k) {
+    const Joint& j = m.joints[k];
+    if (k == except || k == m.drive.joint || used[k] || j.type != type || (j.link_a != link && j.link_b != link)) continue;
+    if (posed[OtherLink(m, k, link)]) return k;
+  }
+  return -1;
+}
+
+}  // namespace koppel::point_schedule_parts

@@ -1,0 +1,200 @@
+// The compiled step's dyads with two slides (point_schedule.hpp): PRP, two blocks on posed guides
+// hinged to each other, and RPR, a block hinged to a posed link sliding on the line of a link that
+// turns about a posed pivot (a slotted link, Schleife). Neither needs Newton: PRP is the meeting
+// point of two lines, RPR the line's normal n at the distance `offset` from the block's hinge A,
+// measured from the pivot B: n . (A - B) = offset, a unit vector given by the square root below
+// on the branch the walk stands on. Both hand over to the general kernel, as the other dyads, where
+// their normalised determinant falls below the step's gauge (lines turning parallel; the hinge
+// reaching the line's offset circle, a dead centre of the slotted link).
+#include "koppel/solver/constraints.hpp"
+#include "koppel/solver/point_schedule.hpp"
+
+#include "point_schedule_parts.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace koppel {
+using namespace point_schedule_parts;
+
+namespace {
+
+// An unused P joint whose block is `link` and whose guide is posed (not the drive, not `except`).
+int BlockJointToPosed(const Mechanism& m, int link, int except, const std::vector<bool>& posed, const std::vector<bool>& used) {
+  for (int k = 0; k < static_cast<int>(m.joints.size()); ++k) {
+    const Joint& j = m.joints[k];
+    if (k == except || k == m.drive.joint || used[k] || j.type != JointType::kPrismatic || j.link_b != link) continue;
+    if (posed[j.link_a]) return k;
+  }
+  return -1;
+}
+
+}  // namespace
+
+// What a slide's row knows before the solve: n . (J - X) = 0, the normal n and the point X that
+// J keeps the line's offset from (the block's slide point turned with the block, which turns with
+// the guide), with their derivatives; the block's cos and sin and angular rates.
+struct PointSchedule::LineRow {
+  PointJet x;
+  Eigen::Vector2d n[3];
+  double bc = 1.0, bs = 0.0, t1 = 0.0, t2 = 0.0;
+};
+
+void PointSchedule::PrepareLine(const Slide& slide, const Eigen::Vector2d& at_j, LineRow& row) const {
+  const LinkJet& guide = now_[slide.guide];
+  row.bc = guide.c * slide.cos_turn - guide.s * slide.sin_turn;
+  row.bs = guide.s * slide.cos_turn + guide.c * slide.sin_turn;
+  row.t1 = guide.theta[1];
+  row.t2 = guide.theta[2];
+  const double t1 = row.t1, t2 = row.t2;
+  const Eigen::Vector2d w = Turned(row.bc, row.bs, slide.block_point - at_j);
+  const PointJet line = GlobalPoint(slide.guide, slide.guide_point);
+  row.x.p[0] = line.p[0] - w;
+  row.x.p[1] = line.p[1] - t1 * Perp(w);
+  row.x.p[2] = line.p[2] - (t2 * Perp(w) - t1 * t1 * w);
+  row.n[0] = Perp(Turned(guide.c, guide.s, slide.axis));
+  row.n[1] = t1 * Perp(row.n[0]);
+  row.n[2] = t2 * Perp(row.n[0]) - t1 * t1 * row.n[0];
+}
+
+PointSchedule::Slide PointSchedule::SlideOf(int k) const {
+  const Mechanism& m = mechanism_;
+  const Joint& j = m.joints[k];
+  Slide slide;
+  slide.guide = j.link_a;
+  slide.block = j.link_b;
+  slide.axis = j.axis.normalized();
+  slide.guide_point = m.links[j.link_a].points[j.point_a].local;
+  slide.block_point = m.links[j.link_b].points[j.point_b].local;
+  slide.cos_turn = std::cos(j.angle);
+  slide.sin_turn = std::sin(j.angle);
+  return slide;
+}
+
+bool PointSchedule::AddSlideDyadStage(std::vector<bool>& posed, std::vector<bool>& used) {
+  const Mechanism& m = mechanism_;
+  for (int k = 0; k < static_cast<int>(m.joints.size()); ++k) {
+    const Joint& j = m.joints[k];
+    if (used[k] || k == m.drive.joint || posed[j.link_a] || posed[j.link_b] || !(j.axis.norm() > 0.0)) continue;
+    Stage s;
+    int ka = -1, kb = -1;
+    if (j.type == JointType::kRevolute) {
+      // PRP: each link a block on a posed guide
+      ka = BlockJointToPosed(m, j.link_a, k, posed, used);
+      kb = BlockJointToPosed(m, j.link_b, k, posed, used);
+      if (ka < 0 || kb < 0) continue;
+      s.kind = Kind::kDyadPRP;
+      s.a = j.link_a;
+      s.b = j.link_b;
+      s.line_a = SlideOf(ka);
+      s.line_b = SlideOf(kb);
+      s.anchor_a = s.line_a.guide;
+      s.anchor_b = s.line_b.guide;
+      s.a_at_j = LocalAt(m, k, s.a);
+      s.b_at_j = LocalAt(m, k, s.b);
+    } else {
+      // RPR: the block (link_b) and the line's link (link_a), each hinged to a posed link
+      ka = FreeJointToPosed(m, j.link_b, k, JointType::kRevolute, posed, used);
+      kb = FreeJointToPosed(m, j.link_a, k, JointType::kRevolute, posed, used);
+      if (ka < 0 || kb < 0) continue;
+      CompileRPR(s, k, ka, kb);
+    }
+    used[k] = used[ka] = used[kb] = true;
+    posed[s.a] = posed[s.b] = true;
+    stages_.push_back(s);
+    return true;
+  }
+  return false;
+}
+
+void PointSchedule::CompileRPR(Stage& s, int k, int ka, int kb) const {
+  const Mechanism& m = mechanism_;
+  const Joint& j = m.joints[k];
+  s.kind = Kind::kDyadRPR;
+  s.a = j.link_b;
+  s.b = j.link_a;
+  s.anchor_a = OtherLink(m, ka, s.a);
+  s.a_at_anchor = LocalAt(m, ka, s.a);
+  s.anchor_a_point = LocalAt(m, ka, s.anchor_a);
+  s.anchor_b = OtherLink(m, kb, s.b);
+  s.b_at_anchor = LocalAt(m, kb, s.b);
+  s.anchor_b_point = LocalAt(m, kb, s.anchor_b);
+  s.line_b = SlideOf(k);
+  s.normal = Perp(s.line_b.axis);
+  // n . (S - L) = 0 for the block's slide point S and the line's point L, both turning with the
+  // line's link apart from the hinge A and the pivot B: n . (A - B) = offset
+  s.offset = s.normal.dot(s.line_b.guide_point - s.b_at_anchor) -
+             s.normal.dot(Turned(s.line_b.cos_turn, s.line_b.sin_turn, s.line_b.block_point - s.a_at_anchor));
+}
+
+bool PointSchedule::SolvePRP(Stage& s, const StepOptions& options) {
+  LineRow ra, rb;
+  PrepareLine(s.line_a, s.a_at_j, ra);
+  PrepareLine(s.line_b, s.b_at_j, rb);
+  // [na; nb] J = [na . Xa; nb . Xb], differentiated as the RP dyad's line row
+  const Eigen::Vector2d& r1 = ra.n[0];
+  const Eigen::Vector2d& r2 = rb.n[0];
+  const double det = Cross(r1, r2);
+  const double gauge = std::abs(det);  // unit normals: the sine between the lines
+  const int sign = det > 0.0 ? 1 : -1;
+  if (!(gauge > std::max(kSingularGauge, options.min_gauge))) return false;
+  if (s.det_sign != 0 && sign != s.det_sign) return false;
+  auto solve = [&](double g1, double g2) { return Eigen::Vector2d((g1 * r2.y() - g2 * r1.y()) / det, (r1.x() * g2 - r2.x() * g1) / det); };
+  PointJet jj;
+  jj.p[0] = solve(r1.dot(ra.x.p[0]), r2.dot(rb.x.p[0]));
+  const Eigen::Vector2d oa = jj.p[0] - ra.x.p[0], ob = jj.p[0] - rb.x.p[0];
+  jj.p[1] = solve(r1.dot(ra.x.p[1]) - ra.n[1].dot(oa), r2.dot(rb.x.p[1]) - rb.n[1].dot(ob));
+  jj.p[2] = solve(r1.dot(ra.x.p[2]) - ra.n[2].dot(oa) - 2.0 * ra.n[1].dot(jj.p[1] - ra.x.p[1]),
+                  r2.dot(rb.x.p[2]) - rb.n[2].dot(ob) - 2.0 * rb.n[1].dot(jj.p[1] - rb.x.p[1]));
+  s.det_sign = sign;
+  s.gauge = gauge;
+  s.j = jj;
+  return PoseByCosSin(s.a, ra.bc, ra.bs, ra.t1, ra.t2, s.a_at_j, jj) && PoseByCosSin(s.b, rb.bc, rb.bs, rb.t1, rb.t2, s.b_at_j, jj);
+}
+
+bool PointSchedule::SolveRPR(Stage& s, const StepOptions& options) {
+  const PointJet a = GlobalPoint(s.anchor_a, s.anchor_a_point);  // the block's hinge
+  const PointJet b = GlobalPoint(s.anchor_b, s.anchor_b_point);  // the line's pivot
+  const Eigen::Vector2d d = a.p[0] - b.p[0], d1 = a.p[1] - b.p[1], d2 = a.p[2] - b.p[2];
+  const double dd = d.squaredNorm(), root2 = dd - s.offset * s.offset;
+  if (!(root2 > 0.0)) return false;
+  const double root = std::sqrt(root2);
+  // n . d = offset, |n| = 1: n = (offset d + branch root perp(d)) / |d|^2
+  const Eigen::Vector2d n = (s.offset * d + s.branch * root * Perp(d)) / dd;
+  const double det = Perp(n).dot(d);  // d(n . d)/d theta: -branch root
+  const double gauge = root / std::sqrt(dd);
+  const int sign = det > 0.0 ? 1 : -1;
+  if (!(gauge > std::max(kSingularGauge, options.min_gauge))) return false;
+  if (s.det_sign != 0 && sign != s.det_sign) return false;
+  // n' = theta' perp(n): theta' (perp(n) . d) + n . d' = 0, and once more
+  const double t1 = -n.dot(d1) / det;
+  const double t2 = (t1 * t1 * s.offset - 2.0 * t1 * Perp(n).dot(d1) - n.dot(d2)) / det;
+  s.det_sign = sign;
+  s.gauge = gauge;
+  // n = R(theta) normal: cos and sin of the line's link; the block turned by the joint's angle
+  const double c = s.normal.dot(n), sn = Cross(s.normal, n);
+  const double bc = c * s.line_b.cos_turn - sn * s.line_b.sin_turn, bs = sn * s.line_b.cos_turn + c * s.line_b.sin_turn;
+  return PoseByCosSin(s.b, c, sn, t1, t2, s.b_at_anchor, b) && PoseByCosSin(s.a, bc, bs, t1, t2, s.a_at_anchor, a);
+}
+
+void PointSchedule::LoadSlideDyad(Stage& s) {
+  double det = 0.0, norm = 1.0;
+  if (s.kind == Kind::kDyadPRP) {
+    LineRow ra, rb;
+    PrepareLine(s.line_a, s.a_at_j, ra);
+    PrepareLine(s.line_b, s.b_at_j, rb);
+    det = Cross(ra.n[0], rb.n[0]);
+    s.j = GlobalPoint(s.a, s.a_at_j);
+  } else {
+    const Eigen::Vector2d d = GlobalPoint(s.anchor_a, s.anchor_a_point).p[0] - GlobalPoint(s.anchor_b, s.anchor_b_point).p[0];
+    const LinkJet& line = now_[s.b];
+    const Eigen::Vector2d n = Turned(line.c, line.s, s.normal);
+    s.branch = Perp(d).dot(n) >= 0.0 ? 1.0 : -1.0;
+    det = Perp(n).dot(d);
+    norm = d.norm();
+  }
+  s.det_sign = det > 0.0 ? 1 : -1;
+  s.gauge = norm > 0.0 ? std::abs(det) / norm : 0.0;
+}
+
+}  // namespace koppel

@@ -77,10 +77,13 @@ if grep -m1 -E 'ceres::|YAML::|koppel::Fit\(|koppel::Catalog::Load' "$work/symbo
   fail "analysis_only holds Ceres, yaml-cpp, synthesis or the catalog"
 fi
 echo "analysis_only: $(wc -l < "$work/ldd.txt") libraries loaded, none of Ceres, glog, yaml-cpp or koppel"
-# the installed koppel maps Ceres and cairo only with the commands that need them
+# the installed koppel maps Ceres, cairo, muparser (with libgomp) and Google Benchmark only with
+# the commands (the files) that need them
 ldd "$prefix/bin/koppel" > "$work/koppel_ldd.txt"
-if grep -Ei 'ceres|glog|cholmod|lapack|cairo|X11|slvs|koppel' "$work/koppel_ldd.txt"; then fail "the installed koppel loads a heavy library at start-up"; fi
-for module in ceres gif; do
+if grep -Ei 'ceres|glog|cholmod|lapack|cairo|X11|slvs|muparser|gomp|benchmark|koppel' "$work/koppel_ldd.txt"; then
+  fail "the installed koppel loads a heavy library at start-up"
+fi
+for module in ceres gif muparser bench; do
   [ -n "$(find "$prefix" -path "*/koppel/libkoppel_$module.so")" ] || fail "the module libkoppel_$module.so is not installed"
 done
 echo "koppel: $(wc -l < "$work/koppel_ldd.txt") libraries loaded at start-up"

@@ -68,7 +68,7 @@ if grep -Eo "[^ ]*($private)[^ ]*" "$depfile"; then fail "analysis_only compiled
 # linked into it from koppel's static libraries
 readelf -d "$work/analysis_only/analysis_only" | grep NEEDED > "$work/needed.txt" || true
 ldd "$work/analysis_only/analysis_only" > "$work/ldd.txt"
-if grep -Ei 'ceres|glog|yaml|koppel' "$work/needed.txt" "$work/ldd.txt"; then fail "analysis_only links Ceres, glog, yaml-cpp or a koppel library"; fi
+if grep -Ei 'ceres|glog|yaml|muparser|koppel' "$work/needed.txt" "$work/ldd.txt"; then fail "analysis_only links Ceres, glog, yaml-cpp, muparser or a koppel library"; fi
 nm -C --defined-only "$work/analysis_only/analysis_only" > "$work/symbols.txt"
 grep -q 'koppel::FindDeadCentres(' "$work/symbols.txt" || fail "analysis_only does not hold koppel's analysis"
 # Ceres lives in the module libkoppel_ceres.so, loaded by synthesis on its first fit; nothing of

@@ -6,6 +6,8 @@
 
 #include <yaml-cpp/eventhandler.h>
 
+#include <algorithm>
+#include <limits>
 #include <sstream>
 
 namespace koppel {
@@ -49,12 +51,42 @@ std::string ReadInputText(const std::string& path) {
   }
 }
 
+int YamlNestingBound(const std::string& text) {
+  long long flow_opens = 0;
+  size_t max_p = 0;
+  bool at_line_start = true;  // still in the leading run of the line (p not yet found)
+  size_t column = 0;
+  for (const char c : text) {
+    if (c == '[' || c == '{') ++flow_opens;
+    if (c == '\n') {
+      at_line_start = true;
+      column = 0;
+      continue;
+    }
+    if (at_line_start) {
+      if (c == ' ' || c == '\t' || c == '-' || c == '?' || c == ':' || c == '\r') {
+        ++column;
+        max_p = std::max(max_p, column);  // a line of these alone: p is its length
+      } else {
+        at_line_start = false;
+      }
+    }
+  }
+  // + 2: a map whose first key follows an anchor or a tag on its line ("- &x a: 1") starts after
+  // p; it can hold no further block collection on that line, nor start one there
+  const long long bound = 2 * (static_cast<long long>(max_p) + 1) + 2 + flow_opens;
+  return static_cast<int>(std::min<long long>(bound, std::numeric_limits<int>::max()));
+}
+
 YAML::Node ParseYamlText(const std::string& text, const std::string& file_name) {
   try {
-    std::istringstream in(text);
-    YAML::Parser parser(in);
-    DepthCheck depth;
-    parser.HandleNextDocument(depth);
+    if (YamlNestingBound(text) > kMaxYamlDepth) {
+      // perhaps too deep: count the depth on the parser's events before building the tree
+      std::istringstream in(text);
+      YAML::Parser parser(in);
+      DepthCheck depth;
+      parser.HandleNextDocument(depth);
+    }
     return YAML::Load(text);
   } catch (const DepthCheck::TooDeep& deep) {
     Fail(file_name, "the YAML nests deeper than the limit of " + std::to_string(kMaxYamlDepth) + " levels (kMaxYamlDepth)",

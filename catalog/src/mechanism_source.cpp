@@ -23,6 +23,19 @@ MechanismSource MechanismSource::Parse(const std::string& text, const std::strin
   return MechanismSource(std::make_shared<const std::string>(text), file_name);
 }
 
+MechanismSource MechanismSource::Read(const std::string& name, const Overrides& overrides, MechanismFile* evaluated) {
+  std::string path;
+  std::string text = ReadMechanismFileText(name, &path);
+  return Parse(text, path, overrides, evaluated);
+}
+
+MechanismSource MechanismSource::Parse(const std::string& text, const std::string& file_name, const Overrides& overrides,
+                                       MechanismFile* evaluated) {
+  // what Evaluate parses from the kept text, parsed here once: the same tree, the same places
+  *evaluated = ParseMechanismNode(ParseYamlText(text, file_name), file_name, overrides);
+  return MechanismSource(std::make_shared<const std::string>(text), file_name);
+}
+
 MechanismFile MechanismSource::Evaluate(const Overrides& overrides) const { return ParseMechanismText(*text_, path_, overrides); }
 
 MechanismSource MechanismSource::WithoutCard() const {

@@ -4,8 +4,7 @@
 #include "koppel/core/limits.hpp"
 
 #include "formula_commas.hpp"
-
-#include <muParser.h>
+#include "formula_parser.hpp"
 
 #include <atomic>
 #include <cctype>
@@ -24,14 +23,14 @@ struct UnknownName {
 
 // One parser per thread, built once (its built-in functions and constants cost more than a
 // formula); each formula binds only its own names and unbinds them afterwards.
-mu::Parser& SharedParser() {
-  thread_local mu::Parser parser = [] {
-    mu::Parser p;
-    p.DefineConst("pi", kPiValue);
-    p.DefineConst("deg", kPiValue / 180.0);
+detail::FormulaParser& SharedParser() {
+  thread_local std::unique_ptr<detail::FormulaParser> parser = [] {
+    std::unique_ptr<detail::FormulaParser> p = detail::NewFormulaParser();
+    p->DefineConst("pi", kPiValue);
+    p->DefineConst("deg", kPiValue / 180.0);
     return p;
   }();
-  return parser;
+  return *parser;
 }
 
 }  // namespace
@@ -54,7 +53,7 @@ Expected<double> ParameterSet::Evaluate(const std::string& formula) const {
                                    " characters is longer than the limit of " + std::to_string(kMaxFormulaLength) +
                                    " (kMaxFormulaLength)");
   }
-  mu::Parser& parser = SharedParser();
+  detail::FormulaParser& parser = SharedParser();
   // muparser only reads through the bound addresses
   parser.SetVarFactory(BindName, const_cast<ParameterSet*>(this));
   Expected<double> result = Expected<double>::Error("formula '" + formula + "' does not give a finite number");
@@ -69,9 +68,9 @@ Expected<double> ParameterSet::Evaluate(const std::string& formula) const {
     }
   } catch (const UnknownName& unknown) {
     result = Expected<double>::Error("formula '" + formula + "' does not parse: unknown name '" + unknown.name + "'");
-  } catch (const mu::Parser::exception_type& e) {
-    std::string msg = e.GetMsg();
-    if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && !e.GetToken().empty()) msg = "unknown name '" + e.GetToken() + "'";
+  } catch (const detail::FormulaParseError& e) {
+    std::string msg = e.message;
+    if (e.unknown_name && !e.token.empty()) msg = "unknown name '" + e.token + "'";
     result = Expected<double>::Error("formula '" + formula + "' does not parse: " + msg + detail::DecimalCommaHint(formula));
   }
   // the bound addresses belong to this set: never leave them in the shared parser

@@ -3,8 +3,7 @@
 #include "koppel/core/angles.hpp"
 
 #include "formula_commas.hpp"
-
-#include <muParser.h>
+#include "formula_parser.hpp"
 
 #include <cmath>
 #include <limits>
@@ -13,7 +12,7 @@
 namespace koppel {
 
 struct CompiledFormula::Impl {
-  mu::Parser parser;
+  std::unique_ptr<detail::FormulaParser> parser = detail::NewFormulaParser();
   // muparser binds variables by address: the constants and the variables live here, at fixed
   // addresses for the formula's lifetime (the Impl never moves, only its owner's pointer does).
   std::vector<double> constants;
@@ -38,17 +37,17 @@ Expected<CompiledFormula> CompiledFormula::Compile(const std::string& formula, c
   }
   for (size_t i = 0; i < variables.size(); ++i) bound[variables[i]] = &impl->variables[i];
   try {
-    impl->parser.DefineConst("pi", kPi);
-    impl->parser.DefineConst("deg", kPi / 180.0);
-    for (const auto& [name, address] : bound) impl->parser.DefineVar(name, address);
-    impl->parser.SetExpr(formula);
-    impl->parser.Eval();  // parses now, so that an unknown name is a compile error
+    impl->parser->DefineConst("pi", kPi);
+    impl->parser->DefineConst("deg", kPi / 180.0);
+    for (const auto& [name, address] : bound) impl->parser->DefineVar(name, address);
+    impl->parser->SetExpr(formula);
+    impl->parser->Eval();  // parses now, so that an unknown name is a compile error
     // "2,6" gives two results, the last returned: one value or none (formula_commas.hpp)
-    if (impl->parser.GetNumResults() > 1)
+    if (impl->parser->GetNumResults() > 1)
       return Expected<CompiledFormula>::Error(detail::CommaOperatorError(formula, detail::TopLevelComma(formula)));
-  } catch (const mu::Parser::exception_type& e) {
-    std::string message = e.GetMsg();
-    if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && !e.GetToken().empty()) message = "unknown name '" + e.GetToken() + "'";
+  } catch (const detail::FormulaParseError& e) {
+    std::string message = e.message;
+    if (e.unknown_name && !e.token.empty()) message = "unknown name '" + e.token + "'";
     return Expected<CompiledFormula>::Error("formula '" + formula + "' does not parse: " + message + detail::DecimalCommaHint(formula));
   }
   CompiledFormula compiled;
@@ -60,9 +59,9 @@ Expected<CompiledFormula> CompiledFormula::Compile(const std::string& formula, c
 double CompiledFormula::Evaluate(const double* values) const {
   std::copy(values, values + impl_->variables.size(), impl_->variables.begin());
   try {
-    const double value = impl_->parser.Eval();
+    const double value = impl_->parser->Eval();
     return std::isfinite(value) ? value : std::numeric_limits<double>::quiet_NaN();
-  } catch (const mu::Parser::exception_type&) {
+  } catch (const detail::FormulaParseError&) {
     return std::numeric_limits<double>::quiet_NaN();
   }
 }

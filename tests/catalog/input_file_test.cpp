@@ -4,15 +4,18 @@
 // with work linear in them.
 #include "koppel/catalog/mechanism_file.hpp"
 #include "koppel/core/limits.hpp"
+#include "input_file.hpp"
 #include "support/temp_file.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <fcntl.h>
 #include <functional>
 #include <sys/stat.h>
 #include <thread>
 #include <unistd.h>
+#include <vector>
 
 namespace koppel::input_file_test {
 namespace {
@@ -98,6 +101,51 @@ TEST_CASE("YAML deeper than kMaxYamlDepth is refused at its line", "[reader][lim
   // as deep as the limit allows is fine for the parser (the reader then says what it expected)
   const std::string ok = "name: x\nparameters:\n  a: " + std::string(kMaxYamlDepth - 2, '[') + std::string(kMaxYamlDepth - 2, ']') + "\n";
   CHECK_THAT(FirstMessage([&] { ParseMechanismText(ok, "ok.yaml"); }), !Catch::Contains("kMaxYamlDepth"));
+}
+
+// The nesting depth of a parsed tree, counted on the tree (the reference for YamlNestingBound).
+int TreeDepth(const YAML::Node& node) {
+  if (!node.IsMap() && !node.IsSequence()) return 0;
+  int deepest = 0;
+  for (const auto& item : node) {
+    if (node.IsMap()) {
+      deepest = std::max({deepest, TreeDepth(item.first), TreeDepth(item.second)});
+    } else {
+      deepest = std::max(deepest, TreeDepth(item));
+    }
+  }
+  return deepest + 1;
+}
+
+TEST_CASE("the nesting bound from the characters is never below the parsed tree's depth", "[reader][limits]") {
+  const std::vector<std::string> texts = {
+      "a:\n  b:\n    c: 1\n",
+      "- - - - x\n",
+      "a:\n- b:\n  - c: [[1], {d: [2]}]\n",
+      "- &x a: 1\n- *x\n",
+      "? - a\n  - b\n: - c\n",
+      "a: {b: {c: {d: 1}}}\nz:\n  - - y\n",
+      "x:\n  y:\n  - z:\n      w: \"[ not a list\"\n",
+  };
+  for (const std::string& text : texts) {
+    INFO(text);
+    CHECK(YamlNestingBound(text) >= TreeDepth(YAML::Load(text)));
+  }
+  // the catalog's crank-rocker (the start-up benchmark's file) skips the counting pass
+  CHECK(YamlNestingBound(test::ReadText(test::CatalogEntryPath("crank-rocker"))) <= kMaxYamlDepth);
+}
+
+TEST_CASE("maps nested by indentation deeper than kMaxYamlDepth are refused at their line", "[reader][limits]") {
+  std::string deep = "name: x\nparameters:\n";
+  for (int level = 0; level < kMaxYamlDepth + 5; ++level) deep += std::string(2 * level + 2, ' ') + "k" + std::to_string(level) + ":\n";
+  REQUIRE(TreeDepth(YAML::Load(deep)) > kMaxYamlDepth);
+  try {
+    ParseMechanismText(deep, "deep.yaml");
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(e.diagnostics().at(0).line == kMaxYamlDepth + 2);  // the map of depth kMaxYamlDepth + 1: keys of line 2 + 64
+    CHECK_THAT(e.diagnostics().at(0).message, Catch::Contains("kMaxYamlDepth"));
+  }
 }
 
 TEST_CASE("20 000 parameters are read with work linear in them", "[reader][limits]") {

@@ -41,6 +41,33 @@ TEST_CASE("a source evaluates as ReadMechanismFile reads, with and without overr
   CHECK(Parameter(source.Evaluate({{"e", "l1/2"}}), "e") == 0.5);
 }
 
+TEST_CASE("read and evaluated at once, a source gives what Read and Evaluate give, and evaluates again alike", "[source]") {
+  const std::string path = test::CatalogEntryPath("slider-crank-offset");
+  MechanismFile evaluated;
+  const MechanismSource source = MechanismSource::Read(path, {{"e", "l1/4"}}, &evaluated);
+  CHECK(source.path() == path);
+  CheckSame(evaluated, ReadMechanismFile(path, {{"e", "l1/4"}}));
+  CHECK(Parameter(evaluated, "e") == 0.25);
+  CheckSame(source.Evaluate(), ReadMechanismFile(path));
+  CHECK(source.text() == MechanismSource::Read(path).text());
+  const std::string text = test::ReadText(path);
+  MechanismFile parsed;
+  CHECK(MechanismSource::Parse(text, "given.yaml", {}, &parsed).path() == "given.yaml");
+  CHECK(parsed.path == "given.yaml");
+  CheckSame(parsed, MechanismSource::Parse(text, "given.yaml").Evaluate());
+}
+
+TEST_CASE("read and evaluated at once, text that is no YAML and an override that does not evaluate are refused", "[source]") {
+  MechanismFile evaluated;
+  CHECK_THROWS_AS(MechanismSource::Parse("name: x\nlinks: [\n", "given.yaml", {}, &evaluated), InputError);
+  try {
+    MechanismSource::Read(test::CatalogEntryPath("slider-crank-offset"), {{"nosuch", "1"}}, &evaluated);
+    FAIL("an unknown parameter was accepted");
+  } catch (const InputError& e) {
+    CHECK(e.diagnostics().at(0).file == test::CatalogEntryPath("slider-crank-offset"));
+  }
+}
+
 TEST_CASE("a source needs its file no more once read: it is not read again", "[source]") {
   test::TempDir dir;
   const std::string path = dir.Write("m.yaml", test::ReadText(test::CatalogEntryPath("slider-crank-offset")));

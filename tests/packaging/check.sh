@@ -68,7 +68,7 @@ if grep -Eo "[^ ]*($private)[^ ]*" "$depfile"; then fail "analysis_only compiled
 # linked into it from koppel's static libraries
 readelf -d "$work/analysis_only/analysis_only" | grep NEEDED > "$work/needed.txt" || true
 ldd "$work/analysis_only/analysis_only" > "$work/ldd.txt"
-if grep -Ei 'ceres|glog|yaml|koppel' "$work/needed.txt" "$work/ldd.txt"; then fail "analysis_only links Ceres, glog, yaml-cpp or a koppel library"; fi
+if grep -Ei 'ceres|glog|yaml|muparser|koppel' "$work/needed.txt" "$work/ldd.txt"; then fail "analysis_only links Ceres, glog, yaml-cpp, muparser or a koppel library"; fi
 nm -C --defined-only "$work/analysis_only/analysis_only" > "$work/symbols.txt"
 grep -q 'koppel::FindDeadCentres(' "$work/symbols.txt" || fail "analysis_only does not hold koppel's analysis"
 # Ceres lives in the module libkoppel_ceres.so, loaded by synthesis on its first fit; nothing of
@@ -77,10 +77,13 @@ if grep -m1 -E 'ceres::|YAML::|koppel::Fit\(|koppel::Catalog::Load' "$work/symbo
   fail "analysis_only holds Ceres, yaml-cpp, synthesis or the catalog"
 fi
 echo "analysis_only: $(wc -l < "$work/ldd.txt") libraries loaded, none of Ceres, glog, yaml-cpp or koppel"
-# the installed koppel maps Ceres and cairo only with the commands that need them
+# the installed koppel maps Ceres, cairo, muparser (with libgomp) and Google Benchmark only with
+# the commands (the files) that need them
 ldd "$prefix/bin/koppel" > "$work/koppel_ldd.txt"
-if grep -Ei 'ceres|glog|cholmod|lapack|cairo|X11|slvs|koppel' "$work/koppel_ldd.txt"; then fail "the installed koppel loads a heavy library at start-up"; fi
-for module in ceres gif; do
+if grep -Ei 'ceres|glog|cholmod|lapack|cairo|X11|slvs|muparser|gomp|benchmark|koppel' "$work/koppel_ldd.txt"; then
+  fail "the installed koppel loads a heavy library at start-up"
+fi
+for module in ceres gif muparser bench; do
   [ -n "$(find "$prefix" -path "*/koppel/libkoppel_$module.so")" ] || fail "the module libkoppel_$module.so is not installed"
 done
 echo "koppel: $(wc -l < "$work/koppel_ldd.txt") libraries loaded at start-up"

@@ -4,6 +4,8 @@
 // next to it means something on any machine and under any load.
 #pragma once
 
+#include "bench_module.hpp"
+
 #include <benchmark/benchmark.h>
 
 #include <functional>
@@ -12,26 +14,15 @@
 
 namespace koppel::bench {
 
-// the time is reported per walk step (ns), per run (ms) or per atlas curve (us)
-enum class Per { kStep, kRun, kCurve };
-
-struct Case {
-  std::string name;
-  Per per = Per::kStep;
-  long steps_per_iteration = 1;  // kStep, kCurve: the walk steps (curves) one benchmark iteration takes
-  // The baseline: another case's name (its time per step times baseline_factor), or empty with
-  // budget_ns > 0 (a time budget), or neither (no ratio).
-  std::string baseline;
-  double baseline_factor = 1.0;
-  double budget_ns = 0.0;
-  // Threads of its own (the chart, the fit's starts) or another process's work (the start-up of
-  // koppel): timed by the wall clock. Every other case by the CPU time of this process, which
-  // other programs on a loaded machine do not inflate.
-  bool threaded = false;
-  std::string note;  // printed with the table (e.g. why a case is skipped)
-  bool skipped = false;
+// A benchmark: what the table shows (CaseInfo, bench_module.hpp) and the code it times.
+struct Case : CaseInfo {
   std::function<void(benchmark::State&)> run;
 };
+
+// The program's services to the benchmarks (analyze_bench.cpp runs `koppel analyze` through it),
+// set by the module's run for its duration.
+const Host& CurrentHost();
+
 
 // Every case, in the order of the table. Each file adds its own (walk_bench.cpp, ...).
 std::vector<Case> AllCases();

@@ -1,12 +1,14 @@
-// koppel bench: the benchmarks of tools/bench (Google Benchmark) in this process, each with its
-// baseline measured in the same run, so that the ratios hold on any machine and under any load.
+// koppel bench: the benchmarks of tools/bench (Google Benchmark, in the module libkoppel_bench.so
+// that this command alone loads) in this process, each with its baseline measured in the same
+// run, so that the ratios hold on any machine and under any load.
 #include "commands.hpp"
 #include "common.hpp"
 
-#include "bench.hpp"
+#include "bench_module.hpp"
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <map>
@@ -22,36 +24,6 @@ struct BenchArgs {
   std::string filter;
   std::string format = "table";
   double min_time = 0.5;
-};
-
-struct Measured {
-  double cpu_ns = 0.0, wall_ns = 0.0;  // per benchmark iteration
-  std::string error;
-  bool ran = false;
-};
-
-// Collects every run; one line per benchmark on stderr as it finishes.
-class Collector : public benchmark::BenchmarkReporter {
- public:
-  bool ReportContext(const Context&) override { return true; }
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const Run& r : runs) {
-      if (r.run_type != Run::RT_Iteration) continue;
-      Measured& m = measured_[r.run_name.function_name];
-      m.ran = true;
-      if (r.error_occurred) {
-        m.error = r.error_message;
-      } else if (r.iterations > 0) {
-        m.cpu_ns = r.cpu_accumulated_time / static_cast<double>(r.iterations) * 1e9;
-        m.wall_ns = r.real_accumulated_time / static_cast<double>(r.iterations) * 1e9;
-      }
-      std::cerr << fmt::format("koppel bench: {} done\n", r.run_name.function_name);
-    }
-  }
-  std::map<std::string, Measured>& measured() { return measured_; }
-
- private:
-  std::map<std::string, Measured> measured_;
 };
 
 struct Row {
@@ -73,7 +45,7 @@ std::string Duration(double ns) {
 }
 
 // The benchmarks --filter names, and the baselines their ratios need. Exit{2} when none matches.
-std::set<std::string> WantedCases(const BenchArgs& args, const std::vector<bench::Case>& cases) {
+std::set<std::string> WantedCases(const BenchArgs& args, const std::vector<bench::CaseInfo>& cases) {
   std::regex filter;
   try {
     filter = std::regex(args.filter.empty() ? "." : args.filter, std::regex::extended);
@@ -82,56 +54,55 @@ std::set<std::string> WantedCases(const BenchArgs& args, const std::vector<bench
     throw Exit{kExitBadInput};
   }
   std::set<std::string> wanted;
-  for (const bench::Case& c : cases) {
+  for (const bench::CaseInfo& c : cases) {
     if (!std::regex_search(c.name, filter)) continue;
     wanted.insert(c.name);
     if (!c.baseline.empty()) wanted.insert(c.baseline);
   }
   if (wanted.empty()) {
     std::string names;
-    for (const bench::Case& c : cases) names += (names.empty() ? "" : ", ") + c.name;
+    for (const bench::CaseInfo& c : cases) names += (names.empty() ? "" : ", ") + c.name;
     Complain("--filter '" + args.filter + "' matches no benchmark; there are: " + names);
     throw Exit{kExitBadInput};
   }
   return wanted;
 }
 
-// Google Benchmark over the wanted cases, in this process (so the baselines run beside them).
-std::map<std::string, Measured> RunCases(const BenchArgs& args, const std::vector<bench::Case>& cases, const std::set<std::string>& wanted) {
-  int argc = 1;
-  char program[] = "koppel";
-  char* argv[] = {program, nullptr};
-  benchmark::Initialize(&argc, argv);
-  for (const bench::Case& c : cases) {
-    if (!wanted.count(c.name) || c.skipped) continue;
-    benchmark::internal::Benchmark* b = benchmark::RegisterBenchmark(c.name.c_str(), c.run)->MinTime(args.min_time);
-    if (c.threaded) b->UseRealTime();
+// `koppel analyze ARGS...` in this process, for the benchmark that times it (analyze_bench.cpp).
+std::string AnalyzeHere(const std::vector<std::string>& args) {
+  CLI::App app;
+  AddAnalyzeCommand(app);
+  std::vector<std::string> reversed = {"analyze"};
+  reversed.insert(reversed.end(), args.begin(), args.end());
+  std::reverse(reversed.begin(), reversed.end());  // CLI11 takes them last first
+  try {
+    app.parse(reversed);
+  } catch (const Exit& e) {
+    return "koppel analyze exited with " + std::to_string(e.code);
+  } catch (const std::exception& e) {
+    return e.what();
   }
-  Collector collector;
-  benchmark::RunSpecifiedBenchmarks(&collector);
-  benchmark::ClearRegisteredBenchmarks();
-  benchmark::Shutdown();
-  return collector.measured();
+  return "";
 }
 
 // One row per wanted case: its time per step (or run) and its ratio to its baseline or budget.
-std::vector<Row> RowsOf(const std::vector<bench::Case>& cases, const std::set<std::string>& wanted, std::map<std::string, Measured>& measured,
+std::vector<Row> RowsOf(const std::vector<bench::CaseInfo>& cases, const std::set<std::string>& wanted, std::map<std::string, bench::Measured>& measured,
                         bool* failed) {
   std::map<std::string, double> ns_of;
-  for (const bench::Case& c : cases) {
-    const Measured& m = measured[c.name];
+  for (const bench::CaseInfo& c : cases) {
+    const bench::Measured& m = measured[c.name];
     const double ns = c.threaded ? m.wall_ns : m.cpu_ns;
     if (m.ran && m.error.empty()) ns_of[c.name] = c.per == bench::Per::kRun ? ns : ns / c.steps_per_iteration;
   }
   std::vector<Row> rows;
-  for (const bench::Case& c : cases) {
+  for (const bench::CaseInfo& c : cases) {
     if (!wanted.count(c.name)) continue;
     Row row;
     row.name = c.name;
     row.per = c.per == bench::Per::kStep ? "step" : c.per == bench::Per::kCurve ? "curve" : "run";
     row.clock = c.threaded ? "wall" : "cpu";
     row.note = c.note;
-    const Measured& m = measured[c.name];
+    const bench::Measured& m = measured[c.name];
     if (!c.skipped && !m.error.empty()) {
       row.note = "failed: " + m.error;
       *failed = true;
@@ -206,11 +177,16 @@ void RunBench(const BenchArgs& args) {
     Complain("--min-time must lie in (0, 60] seconds");
     throw Exit{kExitBadInput};
   }
-  const std::vector<bench::Case> cases = bench::AllCases();
+  const bench::BenchModuleTable& module = bench::BenchModule();
+  const std::vector<bench::CaseInfo> cases = module.cases();
   const std::set<std::string> wanted = WantedCases(args, cases);
   double load[1] = {0.0};
   const bool have_load = getloadavg(load, 1) == 1;
-  std::map<std::string, Measured> measured = RunCases(args, cases, wanted);
+  bench::Host host;
+  host.analyze = AnalyzeHere;
+  // one line per benchmark on stderr as it finishes
+  host.done = [](const std::string& name) { std::cerr << fmt::format("koppel bench: {} done\n", name); };
+  std::map<std::string, bench::Measured> measured = module.run(wanted, args.min_time, host);
   bool failed = false;
   const std::vector<Row> rows = RowsOf(cases, wanted, measured, &failed);
   const unsigned cores = std::thread::hardware_concurrency();

@@ -10,6 +10,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <string_view>
 
 namespace {
 
@@ -62,6 +63,14 @@ std::unique_ptr<CLI::App> MakeApp(int argc, char** argv) {
 }
 
 int Run(int argc, char** argv) {
+  // `koppel --version` alone, as CLI11 prints it (set_version_flag above), without the exception
+  // CLI11 throws for it, whose unwinding searches the executable's unwind tables: 6 % of the
+  // instructions and 5 of the 143 page faults of a start-up that has nothing else to do (issue
+  // 25). `--version` with anything else still goes through CLI11.
+  if (argc == 2 && std::string_view(argv[1]) == "--version") {
+    std::cout << "koppel " << koppel::Version() << '\n';
+    return koppel::cli::kExitOk;
+  }
   const std::unique_ptr<CLI::App> owned = MakeApp(argc, argv);
   CLI::App& app = *owned;
   // parse flags -> claim the outputs -> the command reads its inputs and works: a target that may

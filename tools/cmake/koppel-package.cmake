@@ -3,8 +3,9 @@
 #   find_package(koppel 0.1 CONFIG REQUIRED)
 #   target_link_libraries(app PRIVATE koppel::koppel)   # or koppel::analysis, ...
 # Only Eigen is a public dependency (core's headers use it). The private ones (Ceres, glog,
-# yaml-cpp, muparser, fmt, nlohmann_json) live inside koppel's shared libraries; a static build
-# has to hand them on to the consumer's link, so its config finds them too.
+# yaml-cpp, fmt, nlohmann_json) live inside koppel's shared libraries; a static build has to hand
+# them on to the consumer's link, so its config finds them too. Ceres and muparser are in the
+# modules libkoppel_ceres.so and libkoppel_muparser.so (installed in LIBDIR/koppel), never linked.
 include(CMakePackageConfigHelpers)
 
 # koppel::koppel: the library API (koppel/koppel.hpp) and, through it, every part.
@@ -16,7 +17,7 @@ install(TARGETS koppel_all EXPORT koppelTargets)
 
 set(KOPPEL_PRIVATE_DEPENDENCIES "")
 if(NOT BUILD_SHARED_LIBS)
-  foreach(dependency muparser yaml-cpp fmt nlohmann_json nanoflann)
+  foreach(dependency yaml-cpp fmt nlohmann_json nanoflann)
     string(APPEND KOPPEL_PRIVATE_DEPENDENCIES "find_dependency(${dependency})\n")
   endforeach()
 endif()

@@ -41,19 +41,26 @@ ParameterValues ParseParameterValues(const std::vector<std::string>& assignments
 Model::Model(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
 Model::~Model() = default;
 
-Model Model::FromSource(MechanismSource source, const ParameterValues& set) {
+Model Model::FromEvaluated(MechanismSource source, const ParameterValues& set, MechanismFile file) {
   auto impl = std::make_shared<Impl>();
   impl->source = std::make_shared<const MechanismSource>(std::move(source));
   impl->overrides = set;
-  impl->file = impl->source->Evaluate(set);
+  impl->file = std::move(file);
   impl->notes = AdmitMechanism(impl->file);  // as ReadAdmittedMechanism
   return Model(std::move(impl));
 }
 
-Model Model::Load(const std::string& path, const ParameterValues& set) { return FromSource(MechanismSource::Read(path), set); }
+// the file's YAML parsed once for the source and its first evaluation (MechanismSource::Read)
+Model Model::Load(const std::string& path, const ParameterValues& set) {
+  MechanismFile file;
+  MechanismSource source = MechanismSource::Read(path, set, &file);
+  return FromEvaluated(std::move(source), set, std::move(file));
+}
 
 Model Model::Parse(const std::string& yaml, const std::string& name, const ParameterValues& set) {
-  return FromSource(MechanismSource::Parse(yaml, name), set);
+  MechanismFile file;
+  MechanismSource source = MechanismSource::Parse(yaml, name, set, &file);
+  return FromEvaluated(std::move(source), set, std::move(file));
 }
 
 Model Model::FromMechanism(const Mechanism& mechanism) {

@@ -18,6 +18,12 @@ class MechanismSource {
   static MechanismSource Read(const std::string& name);
   // The text of a mechanism file; `file_name` stands for the file in messages.
   static MechanismSource Parse(const std::string& text, const std::string& file_name);
+  // Read (Parse) and then Evaluate(overrides) into `evaluated`, the YAML parsed once instead of
+  // twice: a program that reads a file and evaluates it once (`koppel analyze`) spent a third of
+  // its start-up in yaml-cpp parsing the same text twice (issue 25). Throws as both would.
+  static MechanismSource Read(const std::string& name, const Overrides& overrides, MechanismFile* evaluated);
+  static MechanismSource Parse(const std::string& text, const std::string& file_name, const Overrides& overrides,
+                               MechanismFile* evaluated);
 
   // The mechanism with `overrides` (NAME -> formula) in place of the parameters' formulas: the
   // same as ReadMechanismFile(path(), overrides). InputError for what does not evaluate or check.

@@ -192,6 +192,7 @@ using AtBranchPoint = BranchPointAction;
 AtBranchPoint ParseAtBranchPoint(const std::string& word);
 
 class MechanismSource;  // koppel/catalog/mechanism_source.hpp: the parsed file, private to the API
+struct MechanismFile;    // koppel/catalog/mechanism_file.hpp: a file evaluated
 
 class Model {
  public:
@@ -282,7 +283,8 @@ class Model {
 
  private:
   struct Impl;
-  static Model FromSource(MechanismSource source, const ParameterValues& set);
+  // `file`: source.Evaluate(set), already evaluated
+  static Model FromEvaluated(MechanismSource source, const ParameterValues& set, MechanismFile file);
   friend struct ModelAccess;  // the API's own sources reach the file read (model_impl.hpp)
   explicit Model(std::shared_ptr<const Impl> impl);
   std::shared_ptr<const Impl> impl_;  // never changed once made: copies share it

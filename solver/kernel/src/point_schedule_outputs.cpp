@@ -62,6 +62,7 @@ void PointSchedule::TransmissionLines(int output, Eigen::Vector2d coupler[3], Ei
   for (int k = 0; k < 3; ++k) motion[k] = Eigen::Vector2d(-(b.p[k].y() - pivot.p[k].y()), b.p[k].x() - pivot.p[k].x());
 }
 
+// long: one case per output kind, in the order and with the conventions of ConstraintSystem::Output
 void PointSchedule::OutputDerivatives(int order, double* out) const {
   using namespace point_outputs;
   const Mechanism& m = mechanism_;

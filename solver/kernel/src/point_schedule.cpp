@@ -125,17 +125,6 @@ int PointSchedule::CloseDyad(Stage& s, int k, const std::vector<bool>& posed, co
   return kb;
 }
 
-PointSchedule::PointJet PointSchedule::GlobalPoint(int link, const Eigen::Vector2d& local) const {
-  const LinkJet& l = now_[link];
-  const Eigen::Vector2d r(l.c * local.x() - l.s * local.y(), l.s * local.x() + l.c * local.y());
-  const Eigen::Vector2d turned = Perp(r);
-  PointJet g;
-  g.p[0] = l.origin[0] + r;
-  g.p[1] = l.origin[1] + l.theta[1] * turned;
-  g.p[2] = l.origin[2] + l.theta[2] * turned - l.theta[1] * l.theta[1] * r;
-  return g;
-}
-
 void PointSchedule::PoseByAngle(int link, const double theta[3], double c, double s, const Eigen::Vector2d& local,
                                 const PointJet& where) {
   LinkJet& l = now_[link];
@@ -168,8 +157,8 @@ bool PointSchedule::PoseByTwoPoints(int link, const Eigen::Vector2d& local_from,
   const double r2 = d.squaredNorm();
   // theta = atan2(d) - atan2(dl): its cos and sin without trigonometry, d's direction turned back
   // by dl's (+ 0.0: no -0 sine, which atan2 would put on the other side of the cut)
-  const Eigen::Vector2d e = d / std::sqrt(r2), el = dl / dl.norm();
-  const double c = e.x() * el.x() + e.y() * el.y(), sn = e.y() * el.x() - e.x() * el.y();
+  const double per_norms = 1.0 / std::sqrt(r2 * dl.squaredNorm());
+  const double c = d.dot(dl) * per_norms, sn = Cross(dl, d) * per_norms;
   const double t1 = Cross(d, d1) / r2;
   return PoseByCosSin(link, c, sn, t1, (Cross(d, d2) - 2.0 * d.dot(d1) * t1) / r2, local_from, from);
 }

@@ -209,4 +209,16 @@ class PointSchedule {
   double input_ = 0.0;
 };
 
+// Inline: the stages and the outputs ask for several points a step.
+inline PointSchedule::PointJet PointSchedule::GlobalPoint(int link, const Eigen::Vector2d& local) const {
+  const LinkJet& l = now_[link];
+  const Eigen::Vector2d r(l.c * local.x() - l.s * local.y(), l.s * local.x() + l.c * local.y());
+  const Eigen::Vector2d turned(-r.y(), r.x());
+  PointJet g;
+  g.p[0] = l.origin[0] + r;
+  g.p[1] = l.origin[1] + l.theta[1] * turned;
+  g.p[2] = l.origin[2] + l.theta[2] * turned - l.theta[1] * l.theta[1] * r;
+  return g;
+}
+
 }  // namespace koppel

@@ -109,7 +109,7 @@ void TimeWalk(benchmark::State& state, const Mechanism& mechanism, bool transfer
 }
 
 // The compiled joint-point step (point_schedule.hpp) over the same walk: positions, then every
-// output's 1st and 2nd derivative from its series, as Walker::Step.
+// output and its 1st and 2nd derivative from the schedule's jets, without the continuation.
 void TimePointWalk(benchmark::State& state, const Mechanism& mechanism,
                    const std::function<double(double, const std::vector<double>&)>& check) {
   PositionSolver solver(mechanism);
@@ -122,16 +122,12 @@ void TimePointWalk(benchmark::State& state, const Mechanism& mechanism,
   }
   schedule.Load(path.input(), path.q(), path.Series(2));
   std::vector<double> row(solver.OutputWidth(2));
-  Eigen::MatrixXd series(solver.NumCoordinates(), 3);
-  std::vector<double> trig(solver.system().TrigSize());
   int at = 0;
   bool up = true;
   auto step = [&] {
     const double next = assembly.input + (up ? at + 1 : kStepsPerTurn - 1 - at) * kStep;
     if (!schedule.Step(next)) return false;
-    schedule.Series(series);
-    schedule.Trig(trig.data());
-    solver.OutputDerivatives(series, 2, row.data(), trig.data());
+    schedule.OutputDerivatives(2, row.data());
     if (++at == kStepsPerTurn) {
       at = 0;
       up = !up;

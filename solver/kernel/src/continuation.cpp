@@ -232,7 +232,7 @@ SolveReport Continuation::Start(double input, const Eigen::VectorXd& q) {
     schedule_loaded_ = false;
     input_ = input;
     q_ = q_trial_;
-  q_pending_ = false;
+    q_pending_ = false;
     factorized_here_ = true;
     from_window_ = false;
     sign_ = solver_.JacobianSign();

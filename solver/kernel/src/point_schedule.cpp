@@ -440,13 +440,6 @@ void PointSchedule::Series(Eigen::MatrixXd& series) const {
   }
 }
 
-void PointSchedule::Trig(double* trig) const {
-  for (int l = 0; l < n_links_; ++l) {
-    trig[2 * l] = now_[l].c;
-    trig[2 * l + 1] = now_[l].s;
-  }
-}
-
 int PointSchedule::DeterminantSign() const {
   int sign = 1;
   for (const Stage& s : stages_) {

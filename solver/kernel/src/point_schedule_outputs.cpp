@@ -41,6 +41,14 @@ ScalarJet AbsJet(const ScalarJet& x) { return x.v < 0.0 ? ScalarJet{-x.v, -x.d1,
 
 }  // namespace point_outputs
 
+void PointSchedule::DirectionJet(int link, const Eigen::Vector2d& local, Eigen::Vector2d u[3]) const {
+  const LinkJet& l = now_[link];
+  u[0] = point_schedule_parts::Turned(l.c, l.s, local);
+  const Eigen::Vector2d turned = point_schedule_parts::Perp(u[0]);
+  u[1] = l.theta[1] * turned;
+  u[2] = l.theta[2] * turned - l.theta[1] * l.theta[1] * u[0];
+}
+
 void PointSchedule::TransmissionLines(int output, Eigen::Vector2d coupler[3], Eigen::Vector2d motion[3]) const {
   const Mechanism& m = mechanism_;
   const TransmissionGeometry& g = system_.transmission(output);
@@ -50,11 +58,7 @@ void PointSchedule::TransmissionLines(int output, Eigen::Vector2d coupler[3], Ei
   if (g.slide_joint >= 0) {
     // the slide's direction turns with its guide
     const Joint& j = m.joints[g.slide_joint];
-    const LinkJet& l = now_[j.link_a];
-    motion[0] = Eigen::Vector2d(l.c * j.axis.x() - l.s * j.axis.y(), l.s * j.axis.x() + l.c * j.axis.y());
-    const Eigen::Vector2d turned(-motion[0].y(), motion[0].x());
-    motion[1] = l.theta[1] * turned;
-    motion[2] = l.theta[2] * turned - l.theta[1] * l.theta[1] * motion[0];
+    DirectionJet(j.link_a, j.axis, motion);
     return;
   }
   // the output point's direction of motion about the pivot: (b - pivot) turned by +90 deg
@@ -73,14 +77,6 @@ void PointSchedule::OutputDerivatives(int order, double* out) const {
     if (order >= 2) out[column++] = y.d2;
   };
   auto point = [&](const PointRef& r) { return GlobalPoint(r.link, m.links[r.link].points[r.point].local); };
-  // a local direction of `link` in global coordinates, with its derivatives (it turns with theta)
-  auto direction = [&](int link, const Eigen::Vector2d& local, Eigen::Vector2d u[3]) {
-    const LinkJet& l = now_[link];
-    u[0] = Eigen::Vector2d(l.c * local.x() - l.s * local.y(), l.s * local.x() + l.c * local.y());
-    const Eigen::Vector2d turned(-u[0].y(), u[0].x());
-    u[1] = l.theta[1] * turned;
-    u[2] = l.theta[2] * turned - l.theta[1] * l.theta[1] * u[0];
-  };
   auto angle = [&](int link) { return ScalarJet{Angle(link), now_[link].theta[1], now_[link].theta[2]}; };
   for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
     const Output& output = m.outputs[o];
@@ -95,7 +91,7 @@ void PointSchedule::OutputDerivatives(int order, double* out) const {
         // the displacement along link_a's axis: u . (pb - pa)
         const PointJet pa = point({j.link_a, j.point_a}), pb = point({j.link_b, j.point_b});
         Eigen::Vector2d u[3], d[3];
-        direction(j.link_a, j.axis, u);
+        DirectionJet(j.link_a, j.axis, u);
         for (int k = 0; k < 3; ++k) d[k] = pb.p[k] - pa.p[k];
         write(Dot(u, d));
         break;

@@ -94,6 +94,14 @@ Mechanism WithEveryOutputKind(Mechanism m, const std::string& link_p, const std:
   return m;
 }
 
+// Both kernels walked all `steps` and agreed (see kAgreement), det J's sign with the dyads'.
+void CheckAgreement(const WalkResult& r, int steps) {
+  CHECK(r.steps == steps);
+  CHECK(r.worst <= kAgreement);
+  CHECK(r.worst_output <= kAgreement);
+  CHECK(r.sign_products == 1);
+}
+
 }  // namespace
 
 TEST_CASE("the schedule compiles dyad mechanisms and names what it cannot compile", "[point_schedule]") {
@@ -126,12 +134,8 @@ TEST_CASE("seed mechanisms: the schedule's poses and transfer functions equal th
                              WithEveryOutputKind(test::WattSixBar(), "crank", "A", "link6", "D", "C"),
                              WithEveryOutputKind(test::ProportionalLinkage(1.0, 0.5, 1.83), "slider", "D", "slot", "B0", "B0")}) {
     INFO(m.name);
-    const WalkResult r = WalkBoth(m, 720, step);
-    CHECK(r.steps == 720);
-    CHECK(r.worst <= kAgreement);
-    CHECK(r.worst_output <= kAgreement);
     // det J of the whole system and the product of the dyads' determinants change sign together
-    CHECK(r.sign_products == 1);
+    CheckAgreement(WalkBoth(m, 720, step), 720);
   }
 }
 
@@ -155,11 +159,7 @@ TEST_CASE("200 random crank-rockers and 100 random slider-cranks agree with the 
     const Eigen::Vector2d hint = crank_pin + 0.5 * across + side * Eigen::Vector2d(-across.y(), across.x());
     const Mechanism m = test::PlainFourBar(a, b, c, d, phi, hint);
     INFO("four-bar " << a << " " << b << " " << c << " " << d << " at " << phi);
-    const WalkResult r = WalkBoth(m, 720, DegToRad(1.0));
-    CHECK(r.steps == 720);
-    CHECK(r.worst <= kAgreement);
-    CHECK(r.worst_output <= kAgreement);
-    CHECK(r.sign_products == 1);
+    CheckAgreement(WalkBoth(m, 720, DegToRad(1.0)), 720);
     ++fourbars;
   }
   while (slider_cranks < 100) {
@@ -167,11 +167,7 @@ TEST_CASE("200 random crank-rockers and 100 random slider-cranks agree with the 
     if (coupler < 1.2 * (crank + std::abs(offset))) continue;  // a crank that turns round
     const Mechanism m = test::SliderCrank(crank, coupler, offset);
     INFO("slider-crank " << crank << " " << coupler << " " << offset);
-    const WalkResult r = WalkBoth(m, 720, DegToRad(1.0));
-    CHECK(r.steps == 720);
-    CHECK(r.worst <= kAgreement);
-    CHECK(r.worst_output <= kAgreement);
-    CHECK(r.sign_products == 1);
+    CheckAgreement(WalkBoth(m, 720, DegToRad(1.0)), 720);
     ++slider_cranks;
   }
 }
@@ -186,11 +182,7 @@ TEST_CASE("100 random proportional linkages (RPR and PRP dyads) agree with the g
     const double frame = 0.5 + 1.5 * unit(random), crank = (0.1 + 0.75 * unit(random)) * frame, h = (0.3 + 2.0 * unit(random)) * frame;
     const Mechanism m = test::ProportionalLinkage(frame, crank, h);
     INFO("proportional linkage " << frame << " " << crank << " " << h);
-    const WalkResult r = WalkBoth(m, 720, DegToRad(1.0));
-    CHECK(r.steps == 720);
-    CHECK(r.worst <= kAgreement);
-    CHECK(r.worst_output <= kAgreement);
-    CHECK(r.sign_products == 1);
+    CheckAgreement(WalkBoth(m, 720, DegToRad(1.0)), 720);
   }
 }
 

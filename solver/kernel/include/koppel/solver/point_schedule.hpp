@@ -77,8 +77,6 @@ class PointSchedule {
   // (`series` must have NumCoordinates() rows and at least 3 columns: the first 3 are written,
   // nothing is allocated)
   void Series(Eigen::MatrixXd& series) const;
-  // cos and sin of every link angle at the solved pose (ConstraintSystem::TrigSize() numbers).
-  void Trig(double* trig) const;
   // Product of the stages' 2 x 2 Jacobian determinant signs: it changes where det J of the whole
   // system does (block triangular form), so a change between steps means a singular position lies
   // between them. Smallest |det| of a stage's normalised Jacobian (a gauge in [0, 1]).
@@ -190,6 +188,8 @@ class PointSchedule {
   // the same for a link whose angle is known by cos and sin only: its turns counted against the
   // state stepped from; false when it turned by 90 degrees or more in the step
   bool PoseByCosSin(int link, double c, double s, double t1, double t2, const Eigen::Vector2d& local, const PointJet& at);
+  // a direction local to `link` in global coordinates, with its derivatives (it turns with theta)
+  void DirectionJet(int link, const Eigen::Vector2d& local, Eigen::Vector2d u[3]) const;
   // a transmission angle's coupler line and the output point's direction of motion, as jets
   void TransmissionLines(int output, Eigen::Vector2d coupler[3], Eigen::Vector2d motion[3]) const;
   static bool IsDyad(Kind k) { return k != Kind::kDriveR && k != Kind::kDriveP; }

@@ -187,7 +187,7 @@ std::string Continuation::Where(double input) const {
   return buffer;
 }
 
-WalkReport Continuation::Reached() const { return {WalkStatus::kReached, input_, ""}; }
+WalkReport Continuation::Reached() const { return {WalkStatus::kReached, input_, {}}; }
 
 WalkReport Continuation::Ended(WalkStatus status, std::string message) const {
   return {status, input_, std::move(message)};

@@ -17,6 +17,7 @@ PointSchedule::PointSchedule(const ConstraintSystem& system)
   const Mechanism& m = mechanism_;
   const int n_links = static_cast<int>(m.links.size());
   n_links_ = n_links;
+  frame_ = m.FrameLink();
   states_.assign(kHistory, std::vector<LinkJet>(n_links));
   state_input_.assign(kHistory, 0.0);
   now_ = states_[0].data();
@@ -89,6 +90,8 @@ bool PointSchedule::AddDyadStage(std::vector<bool>& posed, std::vector<bool>& us
       // the whole Jacobian's condition, which the continuation's gauge (kFastGauge) relies on
       const double shortest = kb < 0 ? 0.0 : s.kind == Kind::kDyadRR ? std::min(s.length_a, s.length_b) : s.length_a;
       if (kb < 0 || !(shortest >= kShortestDyadLink * length_scale_)) continue;
+      s.per_length_a = 1.0 / s.length_a;
+      s.per_length_b = s.kind == Kind::kDyadRR ? 1.0 / s.length_b : 0.0;
       used[k] = used[ka] = used[kb] = true;
       posed[a] = posed[b] = true;
       stages_.push_back(s);
@@ -128,7 +131,9 @@ int PointSchedule::CloseDyad(Stage& s, int k, const std::vector<bool>& posed, co
 void PointSchedule::PoseByAngle(int link, const double theta[3], double c, double s, const Eigen::Vector2d& local,
                                 const PointJet& where) {
   LinkJet& l = now_[link];
-  std::copy(theta, theta + 3, l.theta);
+  l.theta[0] = theta[0];  // (not std::copy: three doubles, not a call to memmove)
+  l.theta[1] = theta[1];
+  l.theta[2] = theta[2];
   l.angle_pending = false;
   l.turns = before_[link].turns;
   l.c = c;
@@ -151,16 +156,16 @@ double PointSchedule::AngleIn(const LinkJet* state, int l) {
 }
 
 bool PointSchedule::PoseByTwoPoints(int link, const Eigen::Vector2d& local_from, const PointJet& from,
-                                    const Eigen::Vector2d& local_to, const PointJet& to) {
+                                    const Eigen::Vector2d& local_to, double per_span, const PointJet& to) {
   const Eigen::Vector2d d = to.p[0] - from.p[0], d1 = to.p[1] - from.p[1], d2 = to.p[2] - from.p[2];
   const Eigen::Vector2d dl = local_to - local_from;
-  const double r2 = d.squaredNorm();
+  const double r2 = d.squaredNorm(), per_r2 = 1.0 / r2;
   // theta = atan2(d) - atan2(dl): its cos and sin without trigonometry, d's direction turned back
   // by dl's (+ 0.0: no -0 sine, which atan2 would put on the other side of the cut)
-  const double per_norms = 1.0 / std::sqrt(r2 * dl.squaredNorm());
+  const double per_norms = std::sqrt(per_r2) * per_span;
   const double c = d.dot(dl) * per_norms, sn = Cross(dl, d) * per_norms;
-  const double t1 = Cross(d, d1) / r2;
-  return PoseByCosSin(link, c, sn, t1, (Cross(d, d2) - 2.0 * d.dot(d1) * t1) / r2, local_from, from);
+  const double t1 = Cross(d, d1) * per_r2;
+  return PoseByCosSin(link, c, sn, t1, (Cross(d, d2) - 2.0 * d.dot(d1) * t1) * per_r2, local_from, from);
 }
 
 bool PointSchedule::PoseByCosSin(int link, double c, double sn, double t1, double t2, const Eigen::Vector2d& local, const PointJet& at) {
@@ -188,7 +193,7 @@ double PointSchedule::AngleBeforeTurns(int link, double input) const {
   return std::atan2(now_[link].s, now_[link].c);
 }
 
-void PointSchedule::PoseDrive(const Stage& s, double input) {
+[[gnu::flatten]] void PointSchedule::PoseDrive(const Stage& s, double input) {
   const LinkJet& base = now_[s.base];
   const double zero = mechanism_.drive.zero;
   if (s.kind == Kind::kDriveR) {
@@ -216,9 +221,10 @@ void PointSchedule::PoseDrive(const Stage& s, double input) {
 // offset from (both known: the block's angle is the guide's), with the block's angle.
 struct PointSchedule::DyadRows {
   PointJet a, b, x;
-  Eigen::Vector2d n[3] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
-  double block_theta[3] = {0, 0, 0};
-  double bc = 1.0, bs = 0.0;  // cos and sin of the block's angle
+  // (RP only, as block_theta, bc, bs)
+  Eigen::Vector2d n[3];
+  double block_theta[3];
+  double bc, bs;  // cos and sin of the block's angle
   // at the solved J: the Jacobian's rows (unnormalised: J - A, and J - B or n), its determinant
   Eigen::Vector2d r1, r2;
   double det = 0.0;
@@ -257,18 +263,29 @@ void PointSchedule::PrepareDyad(const Stage& s, DyadRows& d) const {
 int PointSchedule::NewtonDyad(const Stage& s, DyadRows& d, Eigen::Vector2d& j, const StepOptions& options) const {
   const double tolerance = options.tolerance * length_scale_;
   const bool rr = s.kind == Kind::kDyadRR;
+  // The rows scaled to r1 . dj = g1, r2 . dj = g2 (RR: [r1 / a; r2 / b], RP: [r1 / a; n]); the
+  // residuals (|r1|^2 - a^2) / 2a = -g1 / a and (RR) -g2 / b, (RP) -g2, within the tolerance.
+  const double a2 = s.length_a * s.length_a, b2 = s.length_b * s.length_b;
+  const double tolerance_1 = tolerance * s.length_a, tolerance_2 = rr ? tolerance * s.length_b : tolerance;
   for (int it = 0;; ++it) {
     d.r1 = j - d.a.p[0];
-    const double f1 = (d.r1.squaredNorm() - s.length_a * s.length_a) / (2.0 * s.length_a);
-    d.r2 = rr ? Eigen::Vector2d(j - d.b.p[0]) : d.n[0];
-    const double f2 = rr ? (d.r2.squaredNorm() - s.length_b * s.length_b) / (2.0 * s.length_b) : d.n[0].dot(j - d.x.p[0]);
+    const double g1 = 0.5 * (a2 - d.r1.squaredNorm());
+    double g2;
+    if (rr) {
+      d.r2 = j - d.b.p[0];
+      g2 = 0.5 * (b2 - d.r2.squaredNorm());
+    } else {
+      d.r2 = d.n[0];
+      g2 = d.n[0].dot(d.x.p[0] - j);
+    }
     d.det = Cross(d.r1, d.r2);
-    if (!std::isfinite(f1) || !std::isfinite(f2)) return -1;
-    const bool converged = std::max(std::abs(f1), std::abs(f2)) <= tolerance;
+    if (!std::isfinite(g1) || !std::isfinite(g2)) return -1;
+    const bool converged = std::abs(g1) <= tolerance_1 && std::abs(g2) <= tolerance_2;
     if (!converged && (it == options.max_iterations || d.det == 0.0)) return -1;
-    // the rows scaled back to r1 . dj = g1, r2 . dj = g2 (RR: [r1 / a; r2 / b], RP: [r1 / a; n])
-    const double g1 = -f1 * s.length_a, g2 = -f2 * (rr ? s.length_b : 1.0);
-    if (d.det != 0.0) j += Eigen::Vector2d(g1 * d.r2.y() - g2 * d.r1.y(), d.r1.x() * g2 - d.r2.x() * g1) / d.det;
+    if (d.det != 0.0) {
+      const double per_det = 1.0 / d.det;
+      j += per_det * Eigen::Vector2d(g1 * d.r2.y() - g2 * d.r1.y(), d.r1.x() * g2 - d.r2.x() * g1);
+    }
     if (converged) {
       // One step more from within the tolerance puts the residual at roundoff: the derivatives
       // carry the pose's error times 1/det, and near a singular position the tolerance's 1e-13 L
@@ -284,8 +301,9 @@ int PointSchedule::NewtonDyad(const Stage& s, DyadRows& d, Eigen::Vector2d& j, c
 PointSchedule::PointJet PointSchedule::DyadDerivatives(const Stage& s, const DyadRows& d, const Eigen::Vector2d& j) const {
   // r1 . J' = r1 . A', r2 . J' = rhs (RR: r2 . B'; RP: n . X' - n' . (J - X)), and so for J''
   // (the rows differentiated twice)
+  const double per_det = 1.0 / d.det;
   auto solve = [&](double g1, double g2) {
-    return Eigen::Vector2d((g1 * d.r2.y() - g2 * d.r1.y()) / d.det, (d.r1.x() * g2 - d.r2.x() * g1) / d.det);
+    return Eigen::Vector2d((g1 * d.r2.y() - g2 * d.r1.y()) * per_det, (d.r1.x() * g2 - d.r2.x() * g1) * per_det);
   };
   const PointJet& a = d.a;
   PointJet jj;
@@ -303,34 +321,35 @@ PointSchedule::PointJet PointSchedule::DyadDerivatives(const Stage& s, const Dya
   return jj;
 }
 
-bool PointSchedule::SolveDyad(Stage& s, double h, const StepOptions& options) {
+[[gnu::flatten]] bool PointSchedule::SolveDyad(Stage& s, double h, const StepOptions& options) {
   DyadRows d;
   PrepareDyad(s, d);
-  const Eigen::Vector2d predicted = s.j.p[0] + h * s.j.p[1] + (0.5 * h * h) * s.j.p[2];
+  const PointJet& before = s.j[read_];
+  const Eigen::Vector2d predicted = before.p[0] + h * before.p[1] + (0.5 * h * h) * before.p[2];
   Eigen::Vector2d j = predicted;
   const int it = NewtonDyad(s, d, j, options);
   if (it < 0) return false;
-  const double norm = s.kind == Kind::kDyadRR ? d.r1.norm() * d.r2.norm() : d.r1.norm();
-  const double gauge = norm > 0.0 ? std::abs(d.det) / norm : 0.0;
+  const StageGauge gauge{d.det, s.kind == Kind::kDyadRR ? d.r1.squaredNorm() * d.r2.squaredNorm() : d.r1.squaredNorm()};
   const int sign = d.det > 0.0 ? 1 : -1;
-  if (!(gauge > std::max(kSingularGauge, options.min_gauge))) return false;
-  if (s.det_sign != 0 && sign != s.det_sign) return false;
+  if (!gauge.Above(std::max(kSingularGauge, options.min_gauge))) return false;
+  if (s.det_sign[read_] != 0 && sign != s.det_sign[read_]) return false;
   if ((j - predicted).lpNorm<Eigen::Infinity>() > options.max_correction * length_scale_) return false;
   const PointJet jj = DyadDerivatives(s, d, j);
   // the first derivative must continue the predicted one (another branch changes it by O(1))
-  const Eigen::Vector2d tangent = s.j.p[1] + h * s.j.p[2];
+  const Eigen::Vector2d tangent = before.p[1] + h * before.p[2];
   if ((jj.p[1] - tangent).lpNorm<Eigen::Infinity>() > options.max_tangent_change * (length_scale_ + tangent.lpNorm<Eigen::Infinity>()))
     return false;
-  s.det_sign = sign;
-  s.gauge = gauge;
-  s.j = jj;
-  if (!PoseByTwoPoints(s.a, s.a_at_anchor, d.a, s.a_at_j, jj)) return false;
-  if (s.kind == Kind::kDyadRR) return PoseByTwoPoints(s.b, s.b_at_anchor, d.b, s.b_at_j, jj);
+  s.det_sign[write_] = sign;
+  s.gauge[write_] = gauge;
+  s.j[write_] = jj;
+  if (!PoseByTwoPoints(s.a, s.a_at_anchor, d.a, s.a_at_j, s.per_length_a, jj)) return false;
+  if (s.kind == Kind::kDyadRR) return PoseByTwoPoints(s.b, s.b_at_anchor, d.b, s.b_at_j, s.per_length_b, jj);
   PoseByAngle(s.b, d.block_theta, d.bc, d.bs, s.b_at_j, jj);
   return true;
 }
 
 void PointSchedule::Load(double input, const Eigen::VectorXd& q, const Eigen::MatrixXd& series) {
+  write_ = read_;  // the stages' solutions at the loaded pose
   for (int l = 0; l < n_links_; ++l) {
     LinkJet& jet = now_[l];
     const int i = system_.CoordinateOf(l);
@@ -358,19 +377,18 @@ void PointSchedule::Load(double input, const Eigen::VectorXd& q, const Eigen::Ma
     if (s.kind == Kind::kDyadPRP || s.kind == Kind::kDyadRPR) {
       LoadSlideDyad(s);
     } else if (s.kind == Kind::kDyadRR || s.kind == Kind::kDyadRP) {
-      s.j = GlobalPoint(s.a, s.a_at_j);
+      s.j[write_] = GlobalPoint(s.a, s.a_at_j);
       const PointJet a = GlobalPoint(s.anchor_a, s.anchor_a_point);
-      const Eigen::Vector2d r1 = s.j.p[0] - a.p[0];
+      const Eigen::Vector2d r1 = s.j[write_].p[0] - a.p[0];
       Eigen::Vector2d r2;
       if (s.kind == Kind::kDyadRR) {
-        r2 = s.j.p[0] - GlobalPoint(s.anchor_b, s.anchor_b_point).p[0];
+        r2 = s.j[write_].p[0] - GlobalPoint(s.anchor_b, s.anchor_b_point).p[0];
       } else {
         const LinkJet& line_link = now_[s.block_is_guide_side ? s.b : s.anchor_b];
         r2 = Perp(Eigen::Vector2d(line_link.c * s.axis.x() - line_link.s * s.axis.y(), line_link.s * s.axis.x() + line_link.c * s.axis.y()));
       }
-      s.det_sign = Cross(r1, r2) > 0.0 ? 1 : -1;
-      const double norm = r1.norm() * r2.norm();
-      s.gauge = norm > 0.0 ? std::abs(Cross(r1, r2)) / norm : 0.0;
+      s.det_sign[write_] = Cross(r1, r2) > 0.0 ? 1 : -1;
+      s.gauge[write_] = {Cross(r1, r2), r1.squaredNorm() * r2.squaredNorm()};
     }
   }
   input_ = input;
@@ -388,10 +406,7 @@ bool PointSchedule::Step(double input, const StepOptions& options) {
   const int next = (at_ + 1) % kHistory;
   before_ = now_;  // the state stepped from; the next slot is written stage by stage
   now_ = states_[next].data();
-  for (Stage& s : stages_) {
-    s.j_saved = s.j;
-    s.det_sign_saved = s.det_sign;
-  }
+  write_ = read_ ^ 1;
   for (Stage& s : stages_) {
     bool ok = true;
     if (s.kind == Kind::kDriveR || s.kind == Kind::kDriveP) {
@@ -401,14 +416,12 @@ bool PointSchedule::Step(double input, const StepOptions& options) {
     }
     if (!ok) {
       now_ = states_[at_].data();
-      for (Stage& t : stages_) {
-        t.j = t.j_saved;
-        t.det_sign = t.det_sign_saved;
-      }
+      write_ = read_;
       return false;
     }
   }
   at_ = next;
+  read_ = write_;
   state_input_[at_] = input;
   history_ = std::min(history_ + 1, kHistory);
   input_ = input;
@@ -443,7 +456,7 @@ void PointSchedule::Series(Eigen::MatrixXd& series) const {
 int PointSchedule::DeterminantSign() const {
   int sign = 1;
   for (const Stage& s : stages_) {
-    if (IsDyad(s.kind)) sign *= s.det_sign;
+    if (IsDyad(s.kind)) sign *= s.det_sign[read_];
   }
   return sign;
 }
@@ -451,7 +464,7 @@ int PointSchedule::DeterminantSign() const {
 double PointSchedule::Gauge() const {
   double gauge = 1.0;
   for (const Stage& s : stages_) {
-    if (IsDyad(s.kind)) gauge = std::min(gauge, s.gauge);
+    if (IsDyad(s.kind)) gauge = std::min(gauge, s.gauge[read_].Value());
   }
   return gauge;
 }

@@ -30,10 +30,10 @@ ScalarJet CrossJet(const V a[3], const V b[3]) {
 }
 // atan2(y, x) and its derivatives: theta' = (x y' - y x') / r^2, differentiated once more
 ScalarJet Atan2Jet(const ScalarJet& y, const ScalarJet& x) {
-  const double r2 = x.v * x.v + y.v * y.v;
+  const double per_r2 = 1.0 / (x.v * x.v + y.v * y.v);
   const double w = x.v * y.d1 - y.v * x.d1;
-  const double t1 = w / r2;
-  const double t2 = (x.v * y.d2 - y.v * x.d2 - 2.0 * (x.v * x.d1 + y.v * y.d1) * t1) / r2;
+  const double t1 = w * per_r2;
+  const double t2 = (x.v * y.d2 - y.v * x.d2 - 2.0 * (x.v * x.d1 + y.v * y.d1) * t1) * per_r2;
   return {std::atan2(y.v, x.v), t1, t2};
 }
 // |x| as ConstraintSystem's Abs: the sign of the value flips every derivative
@@ -67,7 +67,7 @@ void PointSchedule::TransmissionLines(int output, Eigen::Vector2d coupler[3], Ei
 }
 
 // long: one case per output kind, in the order and with the conventions of ConstraintSystem::Output
-void PointSchedule::OutputDerivatives(int order, double* out) const {
+[[gnu::flatten]] void PointSchedule::OutputDerivatives(int order, double* out) const {
   using namespace point_outputs;
   const Mechanism& m = mechanism_;
   int column = 0;
@@ -120,8 +120,8 @@ void PointSchedule::OutputDerivatives(int order, double* out) const {
           break;
         }
         // |d|' = d . d' / |d|, |d|'' = (d' . d' + d . d'' - |d|'^2) / |d|
-        const double v = d[0].norm(), v1 = d[0].dot(d[1]) / v;
-        write({v, v1, (d[1].squaredNorm() + d[0].dot(d[2]) - v1 * v1) / v});
+        const double v = d[0].norm(), per_v = 1.0 / v, v1 = d[0].dot(d[1]) * per_v;
+        write({v, v1, (d[1].squaredNorm() + d[0].dot(d[2]) - v1 * v1) * per_v});
         break;
       }
       case OutputKind::kTransmissionAngle: {

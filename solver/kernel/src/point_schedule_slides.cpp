@@ -127,7 +127,7 @@ void PointSchedule::CompileRPR(Stage& s, int k, int ka, int kb) const {
              s.normal.dot(Turned(s.line_b.cos_turn, s.line_b.sin_turn, s.line_b.block_point - s.a_at_anchor));
 }
 
-bool PointSchedule::SolvePRP(Stage& s, const StepOptions& options) {
+[[gnu::flatten]] bool PointSchedule::SolvePRP(Stage& s, const StepOptions& options) {
   LineRow ra, rb;
   PrepareLine(s.line_a, s.a_at_j, ra);
   PrepareLine(s.line_b, s.b_at_j, rb);
@@ -135,24 +135,25 @@ bool PointSchedule::SolvePRP(Stage& s, const StepOptions& options) {
   const Eigen::Vector2d& r1 = ra.n[0];
   const Eigen::Vector2d& r2 = rb.n[0];
   const double det = Cross(r1, r2);
-  const double gauge = std::abs(det);  // unit normals: the sine between the lines
+  const StageGauge gauge{det, 1.0};  // unit normals: the sine between the lines
   const int sign = det > 0.0 ? 1 : -1;
-  if (!(gauge > std::max(kSingularGauge, options.min_gauge))) return false;
-  if (s.det_sign != 0 && sign != s.det_sign) return false;
-  auto solve = [&](double g1, double g2) { return Eigen::Vector2d((g1 * r2.y() - g2 * r1.y()) / det, (r1.x() * g2 - r2.x() * g1) / det); };
+  if (!gauge.Above(std::max(kSingularGauge, options.min_gauge))) return false;
+  if (s.det_sign[read_] != 0 && sign != s.det_sign[read_]) return false;
+  const double per_det = 1.0 / det;
+  auto solve = [&](double g1, double g2) { return Eigen::Vector2d((g1 * r2.y() - g2 * r1.y()) * per_det, (r1.x() * g2 - r2.x() * g1) * per_det); };
   PointJet jj;
   jj.p[0] = solve(r1.dot(ra.x.p[0]), r2.dot(rb.x.p[0]));
   const Eigen::Vector2d oa = jj.p[0] - ra.x.p[0], ob = jj.p[0] - rb.x.p[0];
   jj.p[1] = solve(r1.dot(ra.x.p[1]) - ra.n[1].dot(oa), r2.dot(rb.x.p[1]) - rb.n[1].dot(ob));
   jj.p[2] = solve(r1.dot(ra.x.p[2]) - ra.n[2].dot(oa) - 2.0 * ra.n[1].dot(jj.p[1] - ra.x.p[1]),
                   r2.dot(rb.x.p[2]) - rb.n[2].dot(ob) - 2.0 * rb.n[1].dot(jj.p[1] - rb.x.p[1]));
-  s.det_sign = sign;
-  s.gauge = gauge;
-  s.j = jj;
+  s.det_sign[write_] = sign;
+  s.gauge[write_] = gauge;
+  s.j[write_] = jj;
   return PoseByCosSin(s.a, ra.bc, ra.bs, ra.t1, ra.t2, s.a_at_j, jj) && PoseByCosSin(s.b, rb.bc, rb.bs, rb.t1, rb.t2, s.b_at_j, jj);
 }
 
-bool PointSchedule::SolveRPR(Stage& s, const StepOptions& options) {
+[[gnu::flatten]] bool PointSchedule::SolveRPR(Stage& s, const StepOptions& options) {
   const PointJet a = GlobalPoint(s.anchor_a, s.anchor_a_point);  // the block's hinge
   const PointJet b = GlobalPoint(s.anchor_b, s.anchor_b_point);  // the line's pivot
   const Eigen::Vector2d d = a.p[0] - b.p[0], d1 = a.p[1] - b.p[1], d2 = a.p[2] - b.p[2];
@@ -160,17 +161,18 @@ bool PointSchedule::SolveRPR(Stage& s, const StepOptions& options) {
   if (!(root2 > 0.0)) return false;
   const double root = std::sqrt(root2);
   // n . d = offset, |n| = 1: n = (offset d + branch root perp(d)) / |d|^2
-  const Eigen::Vector2d n = (s.offset * d + s.branch * root * Perp(d)) / dd;
+  const Eigen::Vector2d n = (s.offset * d + s.branch * root * Perp(d)) * (1.0 / dd);
   const double det = Perp(n).dot(d);  // d(n . d)/d theta: -branch root
-  const double gauge = root / std::sqrt(dd);
+  const StageGauge gauge{root, dd};
   const int sign = det > 0.0 ? 1 : -1;
-  if (!(gauge > std::max(kSingularGauge, options.min_gauge))) return false;
-  if (s.det_sign != 0 && sign != s.det_sign) return false;
+  if (!gauge.Above(std::max(kSingularGauge, options.min_gauge))) return false;
+  if (s.det_sign[read_] != 0 && sign != s.det_sign[read_]) return false;
   // n' = theta' perp(n): theta' (perp(n) . d) + n . d' = 0, and once more
-  const double t1 = -n.dot(d1) / det;
-  const double t2 = (t1 * t1 * s.offset - 2.0 * t1 * Perp(n).dot(d1) - n.dot(d2)) / det;
-  s.det_sign = sign;
-  s.gauge = gauge;
+  const double per_det = 1.0 / det;
+  const double t1 = -n.dot(d1) * per_det;
+  const double t2 = (t1 * t1 * s.offset - 2.0 * t1 * Perp(n).dot(d1) - n.dot(d2)) * per_det;
+  s.det_sign[write_] = sign;
+  s.gauge[write_] = gauge;
   // n = R(theta) normal: cos and sin of the line's link; the block turned by the joint's angle
   const double c = s.normal.dot(n), sn = Cross(s.normal, n);
   const double bc = c * s.line_b.cos_turn - sn * s.line_b.sin_turn, bs = sn * s.line_b.cos_turn + c * s.line_b.sin_turn;
@@ -178,23 +180,23 @@ bool PointSchedule::SolveRPR(Stage& s, const StepOptions& options) {
 }
 
 void PointSchedule::LoadSlideDyad(Stage& s) {
-  double det = 0.0, norm = 1.0;
+  double det = 0.0, norm2 = 1.0;
   if (s.kind == Kind::kDyadPRP) {
     LineRow ra, rb;
     PrepareLine(s.line_a, s.a_at_j, ra);
     PrepareLine(s.line_b, s.b_at_j, rb);
     det = Cross(ra.n[0], rb.n[0]);
-    s.j = GlobalPoint(s.a, s.a_at_j);
+    s.j[write_] = GlobalPoint(s.a, s.a_at_j);
   } else {
     const Eigen::Vector2d d = GlobalPoint(s.anchor_a, s.anchor_a_point).p[0] - GlobalPoint(s.anchor_b, s.anchor_b_point).p[0];
     const LinkJet& line = now_[s.b];
     const Eigen::Vector2d n = Turned(line.c, line.s, s.normal);
     s.branch = Perp(d).dot(n) >= 0.0 ? 1.0 : -1.0;
     det = Perp(n).dot(d);
-    norm = d.norm();
+    norm2 = d.squaredNorm();
   }
-  s.det_sign = det > 0.0 ? 1 : -1;
-  s.gauge = norm > 0.0 ? std::abs(det) / norm : 0.0;
+  s.det_sign[write_] = det > 0.0 ? 1 : -1;
+  s.gauge[write_] = {det, norm2};
 }
 
 }  // namespace koppel

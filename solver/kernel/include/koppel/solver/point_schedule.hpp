@@ -26,6 +26,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -109,10 +110,18 @@ class PointSchedule {
   static double AngleIn(const LinkJet* state, int l);
   int Slot(int back) const { return (at_ - back + kHistory) % kHistory; }
   // A global point and its first and second derivatives.
+  // (not initialised: every stage writes all three)
   struct PointJet {
-    Eigen::Vector2d p[3] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+    Eigen::Vector2d p[3];
   };
   enum class Kind { kDriveR, kDriveP, kDyadRR, kDyadRP, kDyadPRP, kDyadRPR };
+  // A dyad's normalised determinant |det| / norm (in [0, 1]), kept as det and norm^2: a step
+  // compares det^2 with gauge^2 norm^2, without a square root or a division.
+  struct StageGauge {
+    double det = 1.0, norm2 = 1.0;
+    double Value() const { return norm2 > 0.0 ? std::abs(det) / std::sqrt(norm2) : 0.0; }
+    bool Above(double gauge) const { return norm2 > 0.0 && det * det > gauge * gauge * norm2; }
+  };
   // A slide (P joint) of a dyad: its line on `guide` through guide_point along axis, the block's
   // slide point, the block's angle the guide's turned by the joint's (cos_turn, sin_turn).
   struct Slide {
@@ -137,17 +146,20 @@ class PointSchedule {
     Eigen::Vector2d a_at_j, b_at_j;               // local: J on a, J on b
     Eigen::Vector2d b_at_anchor, anchor_b_point;  // RR: B on b, on anchor_b; RP: the slide's point on b and on the guide
     double length_a = 0.0, length_b = 0.0;        // |J - A| (on a), |J - B| (on b)
+    double per_length_a = 0.0, per_length_b = 0.0;  // their inverses (RR, RP: the step multiplies)
     bool block_is_guide_side = false;             // RP: the block is the P joint's link_a
-    // the solved J, its derivatives, and the last 2 x 2 determinant (sign and gauge)
     // PRP: two blocks (a, b) on the slides line_a, line_b, hinged to each other at J.
     // RPR: a block a on the line of link b (line_b), each hinged to a posed link (anchor_a at A,
     // anchor_b at B): b's angle from its normal n . (A - B) = offset, on the branch `branch`.
     Slide line_a, line_b;
     Eigen::Vector2d normal = Eigen::Vector2d::UnitY();  // RPR: the line's unit normal, local to b
     double offset = 0.0, branch = 1.0;
-    PointJet j, j_saved;
-    int det_sign = 0, det_sign_saved = 0;
-    double gauge = 1.0;
+    // The solved J, its derivatives, and the last 2 x 2 determinant (sign and gauge).
+    // Two of each, double-buffered: a step reads [read_] (the state stepped from) and writes
+    // [write_], so a refused step leaves the stage as it was without a copy.
+    PointJet j[2];
+    int det_sign[2] = {0, 0};
+    StageGauge gauge[2];
   };
 
   // Compiling: a stage for the drive, or for a dyad, when one can be posed next; false if none.
@@ -175,10 +187,11 @@ class PointSchedule {
   int NewtonDyad(const Stage& s, DyadRows& rows, Eigen::Vector2d& j, const StepOptions& options) const;
   PointJet DyadDerivatives(const Stage& s, const DyadRows& rows, const Eigen::Vector2d& j) const;
   bool SolveDyad(Stage& s, double h, const StepOptions& options);
-  // poses link `link` from its point `local_from` at `from` and `local_to` at `to` (jets); false
-  // when the link turned by 90 degrees or more in the step (its turns could not be counted)
+  // poses link `link` from its point `local_from` at `from` and `local_to` at `to` (jets;
+  // `per_span` the inverse distance between the two local points); false when the link turned
+  // by 90 degrees or more in the step (its turns could not be counted)
   bool PoseByTwoPoints(int link, const Eigen::Vector2d& local_from, const PointJet& from, const Eigen::Vector2d& local_to,
-                       const PointJet& to);
+                       double per_span, const PointJet& to);
   // the angle a stage gives link `link` before whole turns: the drive's, a block's, or for a
   // link posed by two points atan2(s, c) (Load counts the turns against q from it)
   double AngleBeforeTurns(int link, double input) const;
@@ -207,14 +220,22 @@ class PointSchedule {
   const LinkJet* before_ = nullptr;
   double length_scale_ = 1.0;
   double input_ = 0.0;
+  int frame_ = -1;
+  int read_ = 0, write_ = 0;  // the stages' buffers (Stage::j) of the solved state and of the step
 };
 
 // Inline: the stages and the outputs ask for several points a step.
-inline PointSchedule::PointJet PointSchedule::GlobalPoint(int link, const Eigen::Vector2d& local) const {
+[[gnu::always_inline]] inline PointSchedule::PointJet PointSchedule::GlobalPoint(int link, const Eigen::Vector2d& local) const {
+  PointJet g;
+  if (link == frame_) {  // at rest, in its own coordinates
+    g.p[0] = local;
+    g.p[1].setZero();
+    g.p[2].setZero();
+    return g;
+  }
   const LinkJet& l = now_[link];
   const Eigen::Vector2d r(l.c * local.x() - l.s * local.y(), l.s * local.x() + l.c * local.y());
   const Eigen::Vector2d turned(-r.y(), r.x());
-  PointJet g;
   g.p[0] = l.origin[0] + r;
   g.p[1] = l.origin[1] + l.theta[1] * turned;
   g.p[2] = l.origin[2] + l.theta[2] * turned - l.theta[1] * l.theta[1] * r;

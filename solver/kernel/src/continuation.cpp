@@ -142,6 +142,11 @@ Continuation::Continuation(PositionSolver& solver, ContinuationOptions options)
   if (!solver.options().dense) {
     schedule_ = std::make_unique<PointSchedule>(solver.system());
     if (!schedule_->compiled()) schedule_.reset();
+    schedule_options_.tolerance = solver.options().tolerance;
+    schedule_options_.max_iterations = options_.max_corrector_iterations;
+    schedule_options_.max_correction = options_.max_correction;
+    schedule_options_.max_tangent_change = options_.max_tangent_change;
+    schedule_options_.min_gauge = kFastGauge;
   }
   fill_pose_ = [this](Eigen::VectorXd& q) { q = this->q(); };
 }
@@ -378,13 +383,7 @@ Continuation::StepResult Continuation::TryCompiledStep(double next) {
     schedule_->Load(input_, q_, Series(2));
     schedule_loaded_ = true;
   }
-  PointSchedule::StepOptions o;
-  o.tolerance = solver_.options().tolerance;
-  o.max_iterations = options_.max_corrector_iterations;
-  o.max_correction = options_.max_correction;
-  o.max_tangent_change = options_.max_tangent_change;
-  o.min_gauge = kFastGauge;
-  if (!schedule_->Step(next, o)) return out;
+  if (!schedule_->Step(next, schedule_options_)) return out;
   input_ = next;
   q_pending_ = true;  // written when read (MaterializePose)
   solver_.AdoptPending(next, &fill_pose_);
@@ -682,7 +681,7 @@ WalkReport Continuation::AdvanceTo(double target, double max_step) {
     SetRegularPose(retreat_input_, retreat_q_);  // back onto the branch, then on as usual
   }
   const double cap = std::min(max_step, options_.max_step * input_scale_);
-  if (std::abs(target - input_) / cap > static_cast<double>(options_.max_steps)) {
+  if (std::abs(target - input_) > static_cast<double>(options_.max_steps) * cap) {
     return Ended(WalkStatus::kTooFar, Where(target) + " lies more than " + std::to_string(options_.max_steps) +
                                           " continuation steps from " + Where(input_));
   }

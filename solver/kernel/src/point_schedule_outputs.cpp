@@ -42,6 +42,12 @@ ScalarJet AbsJet(const ScalarJet& x) { return x.v < 0.0 ? ScalarJet{-x.v, -x.d1,
 }  // namespace point_outputs
 
 void PointSchedule::DirectionJet(int link, const Eigen::Vector2d& local, Eigen::Vector2d u[3]) const {
+  if (link == frame_) {  // at rest
+    u[0] = local;
+    u[1].setZero();
+    u[2].setZero();
+    return;
+  }
   const LinkJet& l = now_[link];
   u[0] = point_schedule_parts::Turned(l.c, l.s, local);
   const Eigen::Vector2d turned = point_schedule_parts::Perp(u[0]);

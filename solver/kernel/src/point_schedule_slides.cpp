@@ -41,6 +41,18 @@ struct PointSchedule::LineRow {
 };
 
 void PointSchedule::PrepareLine(const Slide& slide, const Eigen::Vector2d& at_j, LineRow& row) const {
+  if (slide.guide == frame_) {  // a line at rest: no derivatives
+    row.bc = slide.cos_turn;
+    row.bs = slide.sin_turn;
+    row.t1 = row.t2 = 0.0;
+    row.x.p[0] = slide.guide_point - Turned(row.bc, row.bs, slide.block_point - at_j);
+    row.n[0] = Perp(slide.axis);
+    row.x.p[1].setZero();
+    row.x.p[2].setZero();
+    row.n[1].setZero();
+    row.n[2].setZero();
+    return;
+  }
   const LinkJet& guide = now_[slide.guide];
   row.bc = guide.c * slide.cos_turn - guide.s * slide.sin_turn;
   row.bs = guide.s * slide.cos_turn + guide.c * slide.sin_turn;

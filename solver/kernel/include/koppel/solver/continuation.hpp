@@ -222,6 +222,7 @@ class Continuation {
   std::vector<SingularPoint> singular_points_;
   // the compiled step: null when the mechanism does not compile or the dense path is asked for
   std::unique_ptr<PointSchedule> schedule_;
+  PointSchedule::StepOptions schedule_options_;  // the walk's guards, as the schedule takes them
   bool schedule_loaded_ = false;  // the schedule's state is the current pose
   bool compiled_pose_ = false;    // the current pose came from the schedule (no factorisation)
   std::function<void(Eigen::VectorXd&)> fill_pose_;  // the solver's AdoptPending: the schedule's pose

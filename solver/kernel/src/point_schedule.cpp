@@ -138,12 +138,10 @@ void PointSchedule::PoseByAngle(int link, const double theta[3], double c, doubl
   l.turns = before_[link].turns;
   l.c = c;
   l.s = s;
-  // origin = where - R(theta) local, differentiated with R' = theta' R perp
-  const Eigen::Vector2d r(l.c * local.x() - l.s * local.y(), l.s * local.x() + l.c * local.y());
-  const Eigen::Vector2d turned = Perp(r);
-  l.origin[0] = where.p[0] - r;
-  l.origin[1] = where.p[1] - theta[1] * turned;
-  l.origin[2] = where.p[2] - theta[2] * turned + theta[1] * theta[1] * r;
+  l.at[0] = where.p[0];
+  l.at[1] = where.p[1];
+  l.at[2] = where.p[2];
+  l.at_local = local;
 }
 
 double PointSchedule::AngleIn(const LinkJet* state, int l) {
@@ -359,10 +357,11 @@ void PointSchedule::Load(double input, const Eigen::VectorXd& q, const Eigen::Ma
     }
     for (int k = 0; k < 3; ++k) {
       const double factor = k == 2 ? 2.0 : 1.0;  // the series holds d2/2
-      jet.origin[k] = factor * Eigen::Vector2d(series(i, k), series(i + 1, k));
+      jet.at[k] = factor * Eigen::Vector2d(series(i, k), series(i + 1, k));
       jet.theta[k] = factor * series(i + 2, k);
     }
-    jet.origin[0] = q.segment<2>(i);
+    jet.at[0] = q.segment<2>(i);  // the origin
+    jet.at_local.setZero();
     jet.theta[0] = q(i + 2);
     jet.angle_pending = false;
     SinCos(jet.theta[0], jet.s, jet.c);
@@ -434,7 +433,7 @@ void PointSchedule::HistoryPose(int back, Eigen::VectorXd& q) const {
   for (int l = 0; l < n_links_; ++l) {
     const int i = system_.CoordinateOf(l);
     if (i < 0) continue;
-    q.segment<2>(i) = state[l].origin[0];
+    q.segment<2>(i) = PointOf(state[l], Eigen::Vector2d::Zero()).p[0];
     q(i + 2) = AngleIn(state, l);
   }
 }
@@ -444,10 +443,11 @@ void PointSchedule::Series(Eigen::MatrixXd& series) const {
     const int i = system_.CoordinateOf(l);
     if (i < 0) continue;
     const LinkJet& jet = now_[l];
+    const PointJet origin = PointOf(jet, Eigen::Vector2d::Zero());
     for (int k = 0; k < 3; ++k) {
       const double factor = k == 2 ? 0.5 : 1.0;
-      series(i, k) = factor * jet.origin[k].x();
-      series(i + 1, k) = factor * jet.origin[k].y();
+      series(i, k) = factor * origin.p[k].x();
+      series(i + 1, k) = factor * origin.p[k].y();
       series(i + 2, k) = factor * (k == 0 ? Angle(l) : jet.theta[k]);
     }
   }

@@ -97,10 +97,13 @@ class PointSchedule {
   // them, and its angle is atan2(s, c) plus the whole turns counted as the walk crossed the
   // negative x axis (a step turns a link by less than 90 degrees, see PoseByTwoPoints); a link
   // posed by angle (the drive's, a block's) has theta[0] set, its turns fixed at Load.
+  // Its position is kept as the point it was posed by (`at`, the jet of its local point
+  // `at_local`), not as its origin: a step poses every link but asks few for other points.
   struct LinkJet {
     mutable double theta[3] = {0, 0, 0};  // theta[0]: valid unless angle_pending
     double c = 1.0, s = 0.0;
-    Eigen::Vector2d origin[3] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+    Eigen::Vector2d at[3] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+    Eigen::Vector2d at_local = Eigen::Vector2d::Zero();
     int turns = 0;
     mutable bool angle_pending = false;
   };
@@ -180,6 +183,7 @@ class PointSchedule {
   // its P joint on a posed guide (RP); that joint, or -1.
   int CloseDyad(Stage& s, int k, const std::vector<bool>& posed, const std::vector<bool>& used) const;
   PointJet GlobalPoint(int link, const Eigen::Vector2d& local) const;
+  static PointJet PointOf(const LinkJet& jet, const Eigen::Vector2d& local);  // the same in a given state
   void PoseDrive(const Stage& s, double input);
   struct DyadRows;
   void PrepareDyad(const Stage& s, DyadRows& rows) const;
@@ -225,21 +229,27 @@ class PointSchedule {
 };
 
 // Inline: the stages and the outputs ask for several points a step.
-[[gnu::always_inline]] inline PointSchedule::PointJet PointSchedule::GlobalPoint(int link, const Eigen::Vector2d& local) const {
+[[gnu::always_inline]] inline PointSchedule::PointJet PointSchedule::PointOf(const LinkJet& l, const Eigen::Vector2d& local) {
+  // local - at_local turned with the link, from `at`: R' = theta' R perp
+  const Eigen::Vector2d v = local - l.at_local;
+  const Eigen::Vector2d r(l.c * v.x() - l.s * v.y(), l.s * v.x() + l.c * v.y());
+  const Eigen::Vector2d turned(-r.y(), r.x());
   PointJet g;
+  g.p[0] = l.at[0] + r;
+  g.p[1] = l.at[1] + l.theta[1] * turned;
+  g.p[2] = l.at[2] + l.theta[2] * turned - l.theta[1] * l.theta[1] * r;
+  return g;
+}
+
+[[gnu::always_inline]] inline PointSchedule::PointJet PointSchedule::GlobalPoint(int link, const Eigen::Vector2d& local) const {
   if (link == frame_) {  // at rest, in its own coordinates
+    PointJet g;
     g.p[0] = local;
     g.p[1].setZero();
     g.p[2].setZero();
     return g;
   }
-  const LinkJet& l = now_[link];
-  const Eigen::Vector2d r(l.c * local.x() - l.s * local.y(), l.s * local.x() + l.c * local.y());
-  const Eigen::Vector2d turned(-r.y(), r.x());
-  g.p[0] = l.origin[0] + r;
-  g.p[1] = l.origin[1] + l.theta[1] * turned;
-  g.p[2] = l.origin[2] + l.theta[2] * turned - l.theta[1] * l.theta[1] * r;
-  return g;
+  return PointOf(now_[link], local);
 }
 
 }  // namespace koppel

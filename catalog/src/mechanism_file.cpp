@@ -423,11 +423,13 @@ class MechanismReader {
 
 }  // namespace
 
-MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides) {
-  return ParseMechanismNode(ParseYamlText(text, file_name), file_name, overrides);
+MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides,
+                                 CardFormulas card_formulas) {
+  return ParseMechanismNode(ParseYamlText(text, file_name), file_name, overrides, card_formulas);
 }
 
-MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file_name, const Overrides& overrides) {
+MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file_name, const Overrides& overrides,
+                                 CardFormulas card_formulas) {
   MechanismFile out;
   out.path = file_name;
   YamlReader reader(file_name, &out.parameters);
@@ -440,7 +442,7 @@ MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file
       for (const std::string& problem : CheckConsistency(out.mechanism)) reader.diagnostics().push_back({file_name, 1, 1, "", problem});
     }
     if (reader.diagnostics().empty() && root.IsMap() && root["catalog"].IsDefined()) {
-      out.card = ReadCard(reader, root["catalog"], out);
+      out.card = ReadCard(reader, root["catalog"], out, card_formulas);
     }
   } catch (const YAML::Exception& e) {
     // yaml-cpp throws on conversions we did not guard; report it at its place, never crash

@@ -8,6 +8,12 @@
 #include <utility>
 
 namespace koppel {
+namespace {
+
+// a source is read for its mechanism: the card's formulas are the catalog commands' (CardFormulas)
+constexpr CardFormulas kCardFormulas = CardFormulas::kUnparsed;
+
+}  // namespace
 
 MechanismSource::MechanismSource(std::shared_ptr<const std::string> text, std::string path)
     : text_(std::move(text)), path_(std::move(path)) {}
@@ -32,11 +38,13 @@ MechanismSource MechanismSource::Read(const std::string& name, const Overrides& 
 MechanismSource MechanismSource::Parse(const std::string& text, const std::string& file_name, const Overrides& overrides,
                                        MechanismFile* evaluated) {
   // what Evaluate parses from the kept text, parsed here once: the same tree, the same places
-  *evaluated = ParseMechanismNode(ParseYamlText(text, file_name), file_name, overrides);
+  *evaluated = ParseMechanismNode(ParseYamlText(text, file_name), file_name, overrides, kCardFormulas);
   return MechanismSource(std::make_shared<const std::string>(text), file_name);
 }
 
-MechanismFile MechanismSource::Evaluate(const Overrides& overrides) const { return ParseMechanismText(*text_, path_, overrides); }
+MechanismFile MechanismSource::Evaluate(const Overrides& overrides) const {
+  return ParseMechanismText(*text_, path_, overrides, kCardFormulas);
+}
 
 MechanismSource MechanismSource::WithoutCard() const {
   return MechanismSource(std::make_shared<const std::string>(MechanismTextWithoutCard(*text_, path_)), path_);

@@ -3,10 +3,13 @@
 #include "koppel/catalog/mechanism_source.hpp"
 
 #include "support/temp_file.hpp"
+#include "support/text.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
+#include <utility>
 
 namespace koppel::mechanism_source_test {
 namespace {
@@ -97,6 +100,47 @@ TEST_CASE("a text source names the given file in messages", "[source]") {
     FAIL("text that is no YAML was parsed");
   } catch (const InputError& e) {
     CHECK(e.diagnostics().at(0).file == "given.yaml");
+  }
+}
+
+// The 1-based line of the first occurrence of `fragment` in `text`: the reference for a message's line.
+int LineOf(const std::string& text, const std::string& fragment) {
+  const size_t at = text.find(fragment);
+  REQUIRE(at != std::string::npos);
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+}
+
+// Issue 25: a source is read for its mechanism (koppel::Model: analyze, curve ...). Its card's
+// formulas are the catalog commands' to parse (CardFormulas); the card's keys and words are
+// still checked, and ReadMechanismFile, which the catalog reads with, still refuses the formula.
+TEST_CASE("a source reads the card's structure but not its formulas; the catalog's reading refuses them", "[source][card]") {
+  const std::string good = test::ReadText(test::CatalogEntryPath("crank-rocker"));
+  const std::string broken = test::Replace(good, "K1: d/a", "K1: d/(a");
+  REQUIRE(broken != good);
+  MechanismFile evaluated;
+  MechanismSource::Parse(broken, "broken.yaml", {}, &evaluated);
+  CheckSame(evaluated, ParseMechanismText(good, "broken.yaml"));
+  CheckSame(MechanismSource::Parse(broken, "broken.yaml").Evaluate({{"a", "1.25"}}), ParseMechanismText(good, "broken.yaml", {{"a", "1.25"}}));
+  try {
+    ParseMechanismText(broken, "broken.yaml");
+    FAIL("the catalog's reading accepted a formula that does not parse");
+  } catch (const InputError& e) {
+    REQUIRE_FALSE(e.diagnostics().empty());  // first K1, then the `where` names that use K1
+    CHECK(e.diagnostics()[0].line == LineOf(broken, "K1: d/(a"));
+    CHECK(e.diagnostics()[0].path == "catalog.where.K1");
+    CHECK_THAT(e.diagnostics()[0].message, Catch::Contains("does not parse"));
+  }
+  // the card's structure: an unknown key and an unknown quantity are refused by the source too
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"  kind: transfer", "  knd: transfer"},
+                                 {"quantity: phase_ratio", "quantity: phase_ration"}}) {
+    const std::string wrong = test::Replace(good, from, to);
+    REQUIRE(wrong != good);
+    try {
+      MechanismSource::Parse(wrong, "wrong.yaml", {}, &evaluated);
+      FAIL("the source accepted a card with " << to);
+    } catch (const InputError& e) {
+      CHECK(e.diagnostics().at(0).line == LineOf(wrong, to));
+    }
   }
 }
 

@@ -26,8 +26,8 @@ const std::vector<std::string> kFigureKeys = {"name", "quantity", "output", "com
 
 class CardReader {
  public:
-  CardReader(YamlReader& reader, const MechanismFile& file, CatalogCard& card, CardFormulas formulas)
-      : r_(reader), file_(file), m_(file.mechanism), card_(card), formulas_(formulas), names_(file.parameters) {
+  CardReader(YamlReader& reader, const MechanismFile& file, CatalogCard& card)
+      : r_(reader), file_(file), m_(file.mechanism), card_(card), names_(file.parameters) {
     names_.DefineValue("phi", 0.5);  // the input, for equations and `where`
   }
 
@@ -171,14 +171,13 @@ class CardReader {
     }
   }
 
-  // Formulas are checked for parse errors and unknown names when the card is read (kParsed);
-  // their values (which may be undefined at some input) only when `check` runs.
+  // Formulas are checked for parse errors and unknown names when the card is read; their values
+  // (which may be undefined at some input) only when `check` runs.
   bool CheckFormula(const YAML::Node& node, const std::string& path, const ParameterSet& names) {
     if (!node.IsScalar()) {
       r_.Error(node, path, "expected a formula");
       return false;
     }
-    if (formulas_ == CardFormulas::kUnparsed) return true;
     // only the syntax is checked here: a value that is not finite yet may be one at check time
     const Expected<double> value = names.Evaluate(node.Scalar());
     if (!value && value.error().find("does not parse") != std::string::npos) {
@@ -359,16 +358,15 @@ class CardReader {
   const MechanismFile& file_;
   const Mechanism& m_;
   CatalogCard& card_;
-  const CardFormulas formulas_;
   ParameterSet names_;  // what an equation may name: parameters, phi and the `where` names
 };
 
 }  // namespace
 
-std::optional<CatalogCard> ReadCard(YamlReader& r, const YAML::Node& node, const MechanismFile& file, CardFormulas formulas) {
+std::optional<CatalogCard> ReadCard(YamlReader& r, const YAML::Node& node, const MechanismFile& file) {
   if (!r.ExpectMap(node, "catalog")) return std::nullopt;
   CatalogCard card;
-  CardReader(r, file, card, formulas).Read(node);
+  CardReader(r, file, card).Read(node);
   return card;
 }
 

@@ -424,12 +424,12 @@ class MechanismReader {
 }  // namespace
 
 MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides,
-                                 CardFormulas card_formulas) {
-  return ParseMechanismNode(ParseYamlText(text, file_name), file_name, overrides, card_formulas);
+                                 CardReading card) {
+  return ParseMechanismNode(ParseYamlText(text, file_name), file_name, overrides, card);
 }
 
 MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file_name, const Overrides& overrides,
-                                 CardFormulas card_formulas) {
+                                 CardReading card) {
   MechanismFile out;
   out.path = file_name;
   YamlReader reader(file_name, &out.parameters);
@@ -441,8 +441,8 @@ MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file
     if (reader.diagnostics().empty()) {
       for (const std::string& problem : CheckConsistency(out.mechanism)) reader.diagnostics().push_back({file_name, 1, 1, "", problem});
     }
-    if (reader.diagnostics().empty() && root.IsMap() && root["catalog"].IsDefined()) {
-      out.card = ReadCard(reader, root["catalog"], out, card_formulas);
+    if (card == CardReading::kRead && reader.diagnostics().empty() && root.IsMap() && root["catalog"].IsDefined()) {
+      out.card = ReadCard(reader, root["catalog"], out);
     }
   } catch (const YAML::Exception& e) {
     // yaml-cpp throws on conversions we did not guard; report it at its place, never crash

@@ -78,9 +78,8 @@ std::string Nearest(const std::string& word, const std::vector<std::string>& can
 // "unknown key 'x' (did you mean 'y'?)", or with the list of candidates when none is near.
 std::string UnknownName(const std::string& what, const std::string& word, const std::vector<std::string>& candidates);
 
-// Parses the `catalog` section of a mechanism file (card_reader.cpp); its formulas only with
-// CardFormulas::kParsed (mechanism_file.hpp).
-std::optional<CatalogCard> ReadCard(YamlReader& reader, const YAML::Node& node, const MechanismFile& file, CardFormulas formulas);
+// Parses the `catalog` section of a mechanism file (card_reader.cpp).
+std::optional<CatalogCard> ReadCard(YamlReader& reader, const YAML::Node& node, const MechanismFile& file);
 
 // Reads the masses (links.*.mass, cg, inertia), units, gravity and loads into file.loads
 // (loads_reader.cpp). Call once the links, joints, drive and outputs are read.

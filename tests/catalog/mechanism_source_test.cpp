@@ -110,38 +110,85 @@ int LineOf(const std::string& text, const std::string& fragment) {
   return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
 }
 
-// Issue 25: a source is read for its mechanism (koppel::Model: analyze, curve ...). Its card's
-// formulas are the catalog commands' to parse (CardFormulas); the card's keys and words are
-// still checked, and ReadMechanismFile, which the catalog reads with, still refuses the formula.
-TEST_CASE("a source reads the card's structure but not its formulas; the catalog's reading refuses them", "[source][card]") {
+// Issue 25: a source is read for its mechanism (koppel::Model: analyze, curve ...): its card is
+// the catalog commands' to read (CardReading), and its YAML is not parsed where BlankCard
+// (card_text.hpp) can blank it. The reference: the whole text read by ParseMechanismText, which
+// the catalog reads with and which refuses the card's problems at their lines.
+TEST_CASE("a source does not read the card; the catalog's reading refuses its problems", "[source][card]") {
   const std::string good = test::ReadText(test::CatalogEntryPath("crank-rocker"));
-  const std::string broken = test::Replace(good, "K1: d/a", "K1: d/(a");
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"K1: d/a", "K1: d/(a"},
+                                 {"  kind: transfer", "  knd: transfer"},
+                                 {"quantity: phase_ratio", "quantity: phase_ration"}}) {
+    const std::string broken = test::Replace(good, from, to);
+    REQUIRE(broken != good);
+    INFO(to);
+    MechanismFile evaluated;
+    MechanismSource::Parse(broken, "broken.yaml", {}, &evaluated);
+    CheckSame(evaluated, ParseMechanismText(good, "broken.yaml"));
+    CHECK_FALSE(evaluated.card.has_value());
+    CheckSame(MechanismSource::Parse(broken, "broken.yaml").Evaluate({{"a", "1.25"}}), ParseMechanismText(good, "broken.yaml", {{"a", "1.25"}}));
+    try {
+      ParseMechanismText(broken, "broken.yaml");
+      FAIL("the catalog's reading accepted the card");
+    } catch (const InputError& e) {
+      REQUIRE_FALSE(e.diagnostics().empty());  // a broken `where` name: then the names that use it
+      CHECK(e.diagnostics()[0].line == LineOf(broken, to));
+    }
+  }
+}
+
+// The whole text's YAML read without its card: the reference for what the source reads.
+MechanismFile WholeText(const std::string& text) { return ParseMechanismText(text, "t.yaml", {}, CardReading::kSkipped); }
+
+// The blanked card is not parsed at all: YAML that does not parse in it (a second `:` in a plain
+// scalar) leaves the source's reading alone, while the catalog's reading refuses it at its line.
+TEST_CASE("a plain card's YAML is not parsed by the source", "[source][card]") {
+  const std::string good = test::ReadText(test::CatalogEntryPath("crank-rocker"));
+  const std::string broken = test::Replace(good, "    en: Crank-rocker\n", "    en: Crank-rocker: the four-bar\n");
   REQUIRE(broken != good);
   MechanismFile evaluated;
   MechanismSource::Parse(broken, "broken.yaml", {}, &evaluated);
   CheckSame(evaluated, ParseMechanismText(good, "broken.yaml"));
-  CheckSame(MechanismSource::Parse(broken, "broken.yaml").Evaluate({{"a", "1.25"}}), ParseMechanismText(good, "broken.yaml", {{"a", "1.25"}}));
   try {
     ParseMechanismText(broken, "broken.yaml");
-    FAIL("the catalog's reading accepted a formula that does not parse");
+    FAIL("yaml-cpp parsed a plain scalar with a second ': '");
   } catch (const InputError& e) {
-    REQUIRE_FALSE(e.diagnostics().empty());  // first K1, then the `where` names that use K1
-    CHECK(e.diagnostics()[0].line == LineOf(broken, "K1: d/(a"));
-    CHECK(e.diagnostics()[0].path == "catalog.where.K1");
-    CHECK_THAT(e.diagnostics()[0].message, Catch::Contains("does not parse"));
+    CHECK(e.diagnostics().at(0).line == LineOf(broken, "    en: Crank-rocker: the"));
+    CHECK_THAT(e.diagnostics().at(0).message, Catch::Contains("YAML syntax error"));
   }
-  // the card's structure: an unknown key and an unknown quantity are refused by the source too
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{"  kind: transfer", "  knd: transfer"},
-                                 {"quantity: phase_ratio", "quantity: phase_ration"}}) {
-    const std::string wrong = test::Replace(good, from, to);
-    REQUIRE(wrong != good);
-    try {
-      MechanismSource::Parse(wrong, "wrong.yaml", {}, &evaluated);
-      FAIL("the source accepted a card with " << to);
-    } catch (const InputError& e) {
-      CHECK(e.diagnostics().at(0).line == LineOf(wrong, to));
-    }
-  }
+}
+
+// What the source reads of a mechanism, compared field by field with the whole text's reading.
+void CheckSameReading(const std::string& text) {
+  MechanismFile alone;
+  MechanismSource::Parse(text, "t.yaml", {}, &alone);
+  const MechanismFile whole = WholeText(text);
+  CheckSame(alone, whole);
+  CHECK(alone.mechanism.hint.input == whole.mechanism.hint.input);
+  CHECK(alone.title == whole.title);
+  CHECK(alone.description == whole.description);
+  CHECK(alone.sweep.from == whole.sweep.from);
+  CHECK(alone.sweep.to == whole.sweep.to);
+  CHECK(alone.formulas == whole.formulas);
+}
+
+TEST_CASE("the source reads the mechanism the whole text holds, however the card is written", "[source][card]") {
+  const std::string good = test::ReadText(test::CatalogEntryPath("crank-rocker"));
+  const std::string card = good.substr(good.find("\ncatalog:\n") + 1);
+  const std::string mechanism = good.substr(0, good.find("\ncatalog:\n") + 1);
+  CheckSameReading(good);
+  // the card first, then the mechanism's keys after it
+  CheckSameReading(test::Replace(mechanism, "sweep: {from: 0, to: 360, step: 1}\n", "") + card + "sweep: {from: 0, to: 90, step: 2}\n");
+  // yaml-cpp lets a quoted scalar run on at column 0: here the card's note holds the `assembly`
+  // and `sweep` lines, which the whole text's reading does not see as keys
+  const std::string run_on = test::Replace(test::Replace(mechanism, "assembly:\n  input: 90\n  points: {B: [3.5, 3]}\n", ""),
+                                           "sweep: {from: 0, to: 360, step: 1}\n", "") +
+                             "catalog:\n  title: \"a card\nassembly: {input: 270}\nsweep: {from: 0, to: 90, step: 2}\"\n";
+  CheckSameReading(run_on);
+  CHECK(WholeText(run_on).sweep.to == 360);  // the default: the sweep line is the title's
+  // the text before the card leaves its quote open: the card's lines belong to the title
+  CheckSameReading(test::Replace(mechanism, "title: Crank-rocker\n", "") + "title: \"open\ncatalog:\n  x\"\n");
+  CHECK(WholeText(test::Replace(mechanism, "title: Crank-rocker\n", "") + "title: \"open\ncatalog:\n  x\"\n").title == "open catalog: x");
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ struct MechanismFile {
   ParameterSet parameters;  // after overrides
   Mechanism mechanism;      // consistent, angles in radians
   SweepDefaults sweep;
-  std::optional<CatalogCard> card;  // the `catalog` section, when present (see CardFormulas)
+  std::optional<CatalogCard> card;  // the `catalog` section, when present (CardReading::kRead)
   Loads loads;  // masses, units, gravity and loads (loads.hpp); none when the file gives none
   // The text of every number of the model part (parameters, links .. sweep) as it was evaluated,
   // by key path in reading order: {"parameters.e", "0.3"} (the override when one was given),
@@ -42,15 +42,14 @@ struct MechanismFile {
 
 using Overrides = std::vector<std::pair<std::string, std::string>>;
 
-// Whether reading a file parses the formulas of its `catalog` card (`where`, the equations'
-// formulas, the figures' expected values and number arguments). The card does not make the
-// mechanism: the catalog's commands, which evaluate the card (`koppel catalog list|find|show|check`,
-// Catalog::Load, CheckEntry), read it with kParsed; a koppel::Model (analyze, curve, ...: the
-// mechanism alone) with kUnparsed, which checks the card's keys, words, names and counts but
-// not its formulas. muparser's parse of a catalog entry's formulas was a quarter of `koppel
-// analyze`'s start-up and loaded muparser for them (issue 25); `koppel catalog check` reports a
-// formula that does not parse, with its line.
-enum class CardFormulas { kParsed, kUnparsed };
+// Whether a reading reads the file's `catalog` card. The card does not make the mechanism: the
+// catalog's commands, which evaluate it (`koppel catalog list|find|show|check`: Catalog::Load,
+// CheckEntry), read it in full (kRead: its keys, words, counts and formulas, each problem with
+// its line); a koppel::Model (analyze, curve, ...: the mechanism alone) does not (kSkipped: card
+// stays empty), and MechanismSource does not even parse its YAML where its lines are plainly
+// its own. Reading a catalog entry's card was two thirds of `koppel analyze`'s start-up
+// (yaml-cpp scanning its prose, muparser parsing its formulas; issue 25).
+enum class CardReading { kRead, kSkipped };
 
 // Reads and checks a mechanism file: `path`, or the catalog entry when `path` is no file but a
 // catalog id (ResolveMechanismName in catalog.hpp; MechanismFile::path is then the entry's
@@ -58,7 +57,7 @@ enum class CardFormulas { kParsed, kUnparsed };
 // evaluation; overriding a name that is not a parameter is an error. Throws InputError.
 MechanismFile ReadMechanismFile(const std::string& path, const Overrides& overrides = {});
 MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides = {},
-                                 CardFormulas card_formulas = CardFormulas::kParsed);
+                                 CardReading card = CardReading::kRead);
 
 // "NAME=VALUE" -> {NAME, VALUE}; throws InputError for a malformed argument.
 std::pair<std::string, std::string> ParseAssignment(const std::string& name_eq_value);

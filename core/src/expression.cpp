@@ -37,9 +37,9 @@ detail::FormulaParser& SharedParser() {
 
 // A plain decimal number: an optional '-', digits, optionally '.' and digits, optionally an
 // exponent; nothing else (no spaces, no '+', no ".5" or "2."). Its value as muparser gives it:
-// muparser reads a number with the C locale's strtod (through a stream), correctly rounded, as
-// std::from_chars is; a leading '-' is muparser's sign change, exact. nullopt for anything else,
-// and for what overflows or lands among the subnormals (muparser decides those).
+// the nearest double, as std::from_chars gives it; a leading '-' is muparser's sign change,
+// exact (expression_test.cpp checks both bit for bit). nullopt for anything else, and for what
+// overflows or lands among the subnormals (muparser decides those).
 std::optional<double> PlainNumber(const std::string& text) {
   size_t i = text.empty() || text[0] != '-' ? 0 : 1;
   const auto digits = [&] {

@@ -1,6 +1,6 @@
 #include "card_text.hpp"
 
-#include <cctype>
+#include <cstring>
 #include <vector>
 
 namespace koppel {
@@ -39,16 +39,28 @@ bool Blank(const std::string& text, const Line& line) {
   return true;
 }
 
+// Where yaml-cpp may start a token, a quoted scalar: at the line's start, after a blank or one
+// of []{},:, right after a quoted scalar, or right after a tag (`!!str"x"` is a quoted scalar to
+// yaml-cpp). Elsewhere a quote is a character of a plain scalar ("Grashof's", x'').
+bool TokenStart(const std::string& text, const Line& line, size_t i, size_t after_quoted) {
+  static const char* const kBefore = " \t[]{},:";
+  if (i == line.begin || i == after_quoted || std::strchr(kBefore, text[i - 1]) != nullptr) return true;
+  size_t word = i;  // the run of characters before the quote: a tag when it begins with '!'
+  while (word > line.begin && std::strchr(kBefore, text[word - 1]) == nullptr) --word;
+  return text[word] == '!';
+}
+
 // Every quoted scalar and flow collection the line opens closes on it (see BlankCard).
 bool ClosesOnItsLine(const std::string& text, const Line& line) {
   int depth = 0;
+  size_t after_quoted = std::string::npos;
   for (size_t i = line.begin; i < line.end; ++i) {
     const char c = text[i];
-    const bool after_word = i > line.begin && std::isalnum(static_cast<unsigned char>(text[i - 1]));
+    const bool token_start = TokenStart(text, line, i, after_quoted);
     if (c == '#' && (i == line.begin || text[i - 1] == ' ' || text[i - 1] == '\t')) break;  // a comment
     if (c == '[' || c == '{') ++depth;
     if ((c == ']' || c == '}') && --depth < 0) return false;
-    if ((c == '"' || c == '\'') && !after_word) {
+    if ((c == '"' || c == '\'') && token_start) {
       // to its closing quote: "\"" escapes in double quotes, '' stands for ' in single ones
       for (++i;; ++i) {
         if (i >= line.end) return false;
@@ -59,6 +71,7 @@ bool ClosesOnItsLine(const std::string& text, const Line& line) {
           else break;
         }
       }
+      after_quoted = i + 1;
     }
   }
   return depth == 0;

@@ -20,8 +20,10 @@ struct BlankedCard {
 // indented by spaces (a tab there: not blanked), up to the first line that starts at column 0 (it must not be `---` or `...`), on
 // each of which every quoted scalar and flow collection closes (the card's value cannot run on
 // past that line, as yaml-cpp lets a quoted scalar or a flow collection continue at column 0).
-// A quote counts as opening unless a letter or digit precedes it (an apostrophe), and a
-// bracket wherever it stands: when unsure, the card is not blanked. nullopt: no such card.
+// A quote counts as opening wherever yaml-cpp may start a token (at a line's start, after a
+// blank, one of []{},:, a quoted scalar or a tag; elsewhere it is a character of a plain scalar:
+// "Grashof's", x''), a bracket wherever it stands: when unsure, the card is not blanked.
+// nullopt: no such card.
 // What the caller still owes: that the text before the card ended its last value and the card
 // ended before next_line, shown by yaml-cpp finding top-level keys at key_line and next_line,
 // column 1 (yaml-cpp takes a quote left open at the end of the text as closed there).

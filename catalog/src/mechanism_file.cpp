@@ -423,11 +423,13 @@ class MechanismReader {
 
 }  // namespace
 
-MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides) {
-  return ParseMechanismNode(ParseYamlText(text, file_name), file_name, overrides);
+MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides,
+                                 CardReading card) {
+  return ParseMechanismNode(ParseYamlText(text, file_name), file_name, overrides, card);
 }
 
-MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file_name, const Overrides& overrides) {
+MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file_name, const Overrides& overrides,
+                                 CardReading card) {
   MechanismFile out;
   out.path = file_name;
   YamlReader reader(file_name, &out.parameters);
@@ -439,7 +441,7 @@ MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file
     if (reader.diagnostics().empty()) {
       for (const std::string& problem : CheckConsistency(out.mechanism)) reader.diagnostics().push_back({file_name, 1, 1, "", problem});
     }
-    if (reader.diagnostics().empty() && root.IsMap() && root["catalog"].IsDefined()) {
+    if (card == CardReading::kRead && reader.diagnostics().empty() && root.IsMap() && root["catalog"].IsDefined()) {
       out.card = ReadCard(reader, root["catalog"], out);
     }
   } catch (const YAML::Exception& e) {

@@ -11,7 +11,8 @@
 
 namespace koppel {
 
-MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file_name, const Overrides& overrides);
+MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file_name, const Overrides& overrides,
+                                 CardReading card = CardReading::kRead);
 
 // The text of the mechanism file `name`, or of the catalog entry when `name` is no file but a
 // catalog id; `resolved` receives the path read. InputError naming both when it is neither.

@@ -8,6 +8,8 @@
 
 #include <atomic>
 #include <cctype>
+#include <charconv>
+#include <cfloat>
 #include <cmath>
 
 namespace koppel {
@@ -33,7 +35,60 @@ detail::FormulaParser& SharedParser() {
   return *parser;
 }
 
+// A plain decimal number: an optional '-', digits, optionally '.' and digits, optionally an
+// exponent; nothing else (no spaces, no '+', no ".5" or "2."). Its value as muparser gives it:
+// the nearest double, as std::from_chars gives it; a leading '-' is muparser's sign change,
+// exact (expression_test.cpp checks both bit for bit). nullopt for anything else, and for what
+// overflows or lands among the subnormals (muparser decides those).
+std::optional<double> PlainNumber(const std::string& text) {
+  size_t i = text.empty() || text[0] != '-' ? 0 : 1;
+  const auto digits = [&] {
+    const size_t start = i;
+    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+    return i > start;
+  };
+  if (!digits()) return std::nullopt;
+  if (i < text.size() && text[i] == '.' && (++i, !digits())) return std::nullopt;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    if (!digits()) return std::nullopt;
+  }
+  if (i != text.size()) return std::nullopt;
+  double value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+  if (value != 0 && std::abs(value) < DBL_MIN) return std::nullopt;
+  return value;
+}
+
+// A bare name, optionally negated ("d", "-e"): a letter then letters, digits, '_' — not a name
+// muparser would read as its own constant (pi, deg, and _pi, _e, which begin with '_').
+bool PlainName(const std::string& text, size_t start) {
+  if (start >= text.size() || !std::isalpha(static_cast<unsigned char>(text[start]))) return false;
+  for (size_t i = start; i < text.size(); ++i) {
+    if (!(std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_')) return false;
+  }
+  return text.compare(start, std::string::npos, "pi") != 0 && text.compare(start, std::string::npos, "deg") != 0;
+}
+
 }  // namespace
+
+// A number or a parameter's name alone, without muparser: most of a mechanism file's values are
+// one or the other ("a: 1", "[d, 0]"), and muparser is a module loaded by its first formula
+// (formula_parser.hpp), with libgomp, about a millisecond of `koppel analyze`'s start-up (issue
+// 25). The value is muparser's own, bit for bit (tests/core/expression_test.cpp compares them);
+// anything else, or a name with no finite value, goes to muparser for its value or its message.
+std::optional<double> ParameterSet::PlainValue(const std::string& formula) const {
+  if (std::optional<double> number = PlainNumber(formula)) return number;
+  const size_t start = !formula.empty() && formula[0] == '-' ? 1 : 0;
+  if (!PlainName(formula, start)) return std::nullopt;
+  const auto it = index_.find(start ? formula.substr(1) : formula);
+  if (it == index_.end() || !std::isfinite(values_[it->second].second)) return std::nullopt;
+  parameter_reads.fetch_add(1, std::memory_order_relaxed);
+  const double value = values_[it->second].second;
+  return start ? -value : value;
+}
 
 // muparser asks for each name a formula uses, once per formula: the cost of a formula is its
 // own length, never the number of parameters defined before it.
@@ -53,6 +108,7 @@ Expected<double> ParameterSet::Evaluate(const std::string& formula) const {
                                    " characters is longer than the limit of " + std::to_string(kMaxFormulaLength) +
                                    " (kMaxFormulaLength)");
   }
+  if (const std::optional<double> plain = PlainValue(formula)) return *plain;
   detail::FormulaParser& parser = SharedParser();
   // muparser only reads through the bound addresses
   parser.SetVarFactory(BindName, const_cast<ParameterSet*>(this));

@@ -5,6 +5,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
 
 namespace koppel::expression_test {
 
@@ -126,6 +132,55 @@ TEST_CASE("a list of values is cut at its top-level commas and its count checked
   CHECK_THAT(three.error(), Catch::Contains("decimal comma"));
   CHECK_FALSE(p.EvaluateList("1", 2, "X,Y"));
   CHECK_THAT(p.EvaluateList("1,zz", 2, "X,Y").error(), Catch::Contains("unknown name 'zz'"));
+}
+
+}  // namespace koppel::expression_test
+
+namespace koppel::expression_test {
+
+// The bits of a result, or "none" with no value: a plain number or name (valued without muparser,
+// issue 25) must give what muparser gives for the same text in brackets, bit for bit, sign of
+// zero included, and fail where muparser fails.
+std::string Bits(const Expected<double>& value) {
+  if (!value) return "none";
+  uint64_t bits = 0;
+  std::memcpy(&bits, &*value, sizeof bits);
+  return std::to_string(bits);
+}
+
+TEST_CASE("a plain number or name is valued without muparser, as muparser values it", "[expression]") {
+  ParameterSet p;
+  // names muparser might read otherwise: functions without brackets, number-like words, 'e'
+  for (const char* name : {"a", "e", "E", "sin", "min", "inf", "nan", "x1e5", "d_2", "zero"}) p.DefineValue(name, 0);
+  p.DefineValue("a", 1.5);
+  p.DefineValue("e", 0.3);
+  p.DefineValue("E", -2.25);
+  p.DefineValue("x1e5", 1e-300);
+  p.DefineValue("d_2", 4.0 / 3);
+  std::vector<std::string> texts = {"0", "-0", "1", "-1", "3.5", "007", "0.1", "1e5", "1E-9", "1e+3", "-2.5e-3",
+                                    "123456789012345678901234567890", "0.30000000000000004", "1.7976931348623157e308",
+                                    "2.2250738585072014e-308", "1e400", "1e-400", "4.9e-324", "1.", ".5", "+1", "1e", "1.e5",
+                                    "- 1", "--1", "0x10", " 1", "1 "};
+  for (const char* name : {"a", "e", "E", "sin", "min", "inf", "nan", "x1e5", "d_2", "zero", "pi", "deg", "_pi", "_e", "q"}) {
+    texts.push_back(name);
+    texts.push_back(std::string("-") + name);
+  }
+  // numbers of every magnitude as people and programs write them
+  std::mt19937_64 random(25);
+  std::uniform_real_distribution<double> mantissa(-10, 10);
+  std::uniform_int_distribution<int> exponent(-320, 308), digits(1, 17);
+  for (int i = 0; i < 3000; ++i) {
+    char text[64];
+    std::snprintf(text, sizeof text, i % 3 ? "%.*g" : "%.*f", digits(random), mantissa(random) * std::pow(10.0, i % 2 ? exponent(random) : exponent(random) % 6));
+    texts.push_back(text);
+  }
+  for (const std::string& text : texts) {
+    INFO(text);
+    CHECK(Bits(p.Evaluate(text)) == Bits(p.Evaluate("(" + text + ")")));
+  }
+  CHECK(Bits(p.Evaluate("d_2")) == Bits(4.0 / 3));
+  CHECK_THAT(p.Evaluate("q").error(), Catch::Contains("unknown name 'q'"));
+  CHECK_FALSE(p.Evaluate("1e400"));  // muparser's answer: no number it reads ("unknown name")
 }
 
 }  // namespace koppel::expression_test

@@ -8,7 +8,8 @@
 # - tests/packaging/cpp (find_package, koppel::koppel) computes the slider-crank's stroke;
 # - tests/packaging/analysis_only (koppel::analysis) does too, and neither its dependencies, nor
 #   the libraries it loads, nor the code linked into it is Ceres, glog or yaml-cpp;
-# - the installed koppel loads neither Ceres nor cairo at start-up (they are modules, lib/koppel);
+# - the installed koppel loads neither Ceres nor cairo at start-up (they are modules, lib/koppel),
+#   nor muparser to analyze a catalog entry;
 # - with the Python module (PYTHON_DIR, relative to the prefix; empty: not built)
 #   tests/packaging/python/stroke.py does the same against the installed module;
 # - the C++ and Python examples of README.md's "Using koppel as a library" run as written.
@@ -87,6 +88,13 @@ for module in ceres gif muparser bench; do
   [ -n "$(find "$prefix" -path "*/koppel/libkoppel_$module.so")" ] || fail "the module libkoppel_$module.so is not installed"
 done
 echo "koppel: $(wc -l < "$work/koppel_ldd.txt") libraries loaded at start-up"
+# nor muparser (with libgomp) for `koppel analyze` of an entry whose mechanism part holds numbers
+# and names alone: its card's formulas are the catalog commands' to parse (issue 25); the loader's
+# own trace (LD_DEBUG=files) names every library mapped, at start or by dlopen
+(cd "$work" && LD_DEBUG=files "$prefix/bin/koppel" analyze crank-rocker) > /dev/null 2> "$work/analyze_libs.txt" ||
+  fail "koppel analyze crank-rocker"
+grep -q 'libstdc++' "$work/analyze_libs.txt" || fail "LD_DEBUG=files traced no library"
+if grep -Ei 'muparser|gomp' "$work/analyze_libs.txt"; then fail "koppel analyze crank-rocker maps muparser"; fi
 
 # README.md's examples, as written
 readme_block() {  # LANGUAGE: the first fenced block of that language in the library section

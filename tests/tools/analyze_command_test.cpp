@@ -2,13 +2,17 @@
 // interface scripts rely on, bad input exits 2 with file:line, a stopped sweep exits 1.
 #include "support/run.hpp"
 #include "support/temp_file.hpp"
+#include "support/text.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <sys/wait.h>
 
 namespace koppel::analyze_command_test {
 namespace {
@@ -145,6 +149,55 @@ TEST_CASE("--help teaches", "[cli]") {
   const test::RunResult r = test::RunKoppel("analyze --help");
   CHECK(r.exit_code == 0);
   CHECK_THAT(r.out, Catch::Contains("NAME_d1") && Catch::Contains("degrees") && Catch::Contains("Example"));
+}
+
+}  // namespace koppel::analyze_command_test
+
+namespace koppel::analyze_command_test {
+
+// `koppel` run with the dynamic loader's LD_DEBUG=files: its stderr names every library the
+// process maps, at start or later (dlopen).
+// (as test::RunKoppel, the variable set for koppel alone, not for the shell that starts it)
+test::RunResult RunTracingLibraries(const std::string& arguments) {
+  test::TempDir dir;
+  const std::string out = (dir.path() / "out").string(), err = (dir.path() / "err").string();
+  const int status = std::system(("LD_DEBUG=files " + std::string(KOPPEL_EXECUTABLE) + " " + arguments + " > " + out + " 2> " + err + " < /dev/null").c_str());
+  test::RunResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = test::ReadText(out);
+  r.err = test::ReadText(err);
+  return r;
+}
+
+// Issue 25: analyze reads a file for its mechanism; a catalog card's formulas are parsed by the
+// catalog's commands (CardFormulas, koppel/catalog/mechanism_file.hpp). The references: the
+// table of the unbroken entry, and the loader's own list of what it mapped.
+TEST_CASE("analyze leaves a card's formulas to catalog check, and maps muparser only for a formula of the mechanism", "[cli]") {
+  test::TempDir dir;
+  const std::string good = test::ReadText(test::CatalogEntryPath("crank-rocker"));
+  const std::string broken = test::Replace(good, "K1: d/a", "K1: d/(a");
+  REQUIRE(broken != good);
+  const std::string path = dir.Write("crank-rocker.yaml", broken);
+  const test::RunResult reference = test::RunKoppel("analyze " + test::CatalogEntryPath("crank-rocker"));
+  REQUIRE(reference.exit_code == 0);
+  const test::RunResult analyzed = RunTracingLibraries("analyze " + path);
+  CHECK(analyzed.exit_code == 0);
+  CHECK(analyzed.out == reference.out);
+  CHECK(analyzed.err.find("libstdc++") != std::string::npos);  // the trace is there
+  CHECK(analyzed.err.find("libkoppel_muparser") == std::string::npos);
+  CHECK(analyzed.err.find("libgomp") == std::string::npos);
+  // the catalog's check refuses the card, at the formula's line
+  const int line = 1 + static_cast<int>(std::count(broken.begin(), broken.begin() + static_cast<std::ptrdiff_t>(broken.find("K1: d/(a")), '\n'));
+  const test::RunResult checked = test::RunKoppel("catalog check --catalog " + dir.path().string() + " crank-rocker");
+  CHECK(checked.exit_code == 2);
+  CHECK_THAT(checked.err, Catch::Contains("crank-rocker.yaml:" + std::to_string(line) + ":") && Catch::Contains("does not parse"));
+  // a formula in the mechanism part maps muparser, with libgomp: the trace would show it
+  const std::string formula = dir.Write("formula.yaml", test::Replace(good, "  a: 1 ", "  a: 2/2 "));
+  REQUIRE(test::ReadText(formula) != good);
+  const test::RunResult with_formula = RunTracingLibraries("analyze " + formula);
+  CHECK(with_formula.exit_code == 0);
+  CHECK(with_formula.out == reference.out);
+  CHECK(with_formula.err.find("libkoppel_muparser") != std::string::npos);
 }
 
 }  // namespace koppel::analyze_command_test

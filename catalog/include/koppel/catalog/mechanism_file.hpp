@@ -31,7 +31,7 @@ struct MechanismFile {
   ParameterSet parameters;  // after overrides
   Mechanism mechanism;      // consistent, angles in radians
   SweepDefaults sweep;
-  std::optional<CatalogCard> card;  // the `catalog` section, when present
+  std::optional<CatalogCard> card;  // the `catalog` section, when present (CardReading::kRead)
   Loads loads;  // masses, units, gravity and loads (loads.hpp); none when the file gives none
   // The text of every number of the model part (parameters, links .. sweep) as it was evaluated,
   // by key path in reading order: {"parameters.e", "0.3"} (the override when one was given),
@@ -42,12 +42,22 @@ struct MechanismFile {
 
 using Overrides = std::vector<std::pair<std::string, std::string>>;
 
+// Whether a reading reads the file's `catalog` card. The card does not make the mechanism: the
+// catalog's commands, which evaluate it (`koppel catalog list|find|show|check`: Catalog::Load,
+// CheckEntry), read it in full (kRead: its keys, words, counts and formulas, each problem with
+// its line); a koppel::Model (analyze, curve, ...: the mechanism alone) does not (kSkipped: card
+// stays empty), and MechanismSource does not even parse its YAML where its lines are plainly
+// its own. Reading a catalog entry's card was two thirds of `koppel analyze`'s start-up
+// (yaml-cpp scanning its prose, muparser parsing its formulas; issue 25).
+enum class CardReading { kRead, kSkipped };
+
 // Reads and checks a mechanism file: `path`, or the catalog entry when `path` is no file but a
 // catalog id (ResolveMechanismName in catalog.hpp; MechanismFile::path is then the entry's
 // file). `overrides` (NAME -> formula, from --set) replace parameter formulas before
 // evaluation; overriding a name that is not a parameter is an error. Throws InputError.
 MechanismFile ReadMechanismFile(const std::string& path, const Overrides& overrides = {});
-MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides = {});
+MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides = {},
+                                 CardReading card = CardReading::kRead);
 
 // "NAME=VALUE" -> {NAME, VALUE}; throws InputError for a malformed argument.
 std::pair<std::string, std::string> ParseAssignment(const std::string& name_eq_value);

@@ -1,7 +1,9 @@
 // A mechanism file read once, evaluated with any parameter overrides without reading the file
 // again: what a koppel::Model keeps to re-evaluate its parameters (Model::Set, a tolerance's
 // samples) and shares between its copies. Each evaluation parses the kept text anew, so every
-// problem keeps its line and column (a copied YAML tree loses them).
+// problem keeps its line and column (a copied YAML tree loses them). The file is read for its
+// mechanism: its catalog card is not read (CardReading::kSkipped, mechanism_file.hpp; the
+// evaluations' MechanismFile::card is empty), and not parsed where its lines are plainly its own.
 #pragma once
 
 #include "koppel/catalog/mechanism_file.hpp"
@@ -26,7 +28,8 @@ class MechanismSource {
                                MechanismFile* evaluated);
 
   // The mechanism with `overrides` (NAME -> formula) in place of the parameters' formulas: the
-  // same as ReadMechanismFile(path(), overrides). InputError for what does not evaluate or check.
+  // same as ReadMechanismFile(path(), overrides) but for the card, not read.
+  // InputError for what does not evaluate or check.
   MechanismFile Evaluate(const Overrides& overrides = {}) const;
   const std::string& path() const { return path_; }
   const std::string& text() const { return *text_; }

@@ -54,6 +54,9 @@ class ParameterSet {
   static long long ParameterReads();
 
  private:
+  // A formula that is a plain number or a parameter's name (either negated), valued without
+  // muparser, as muparser values it; nullopt for any other formula.
+  std::optional<double> PlainValue(const std::string& formula) const;
   // muparser's variable factory: the address of a parameter's value for the formula being parsed.
   static double* BindName(const char* name, void* set);
 

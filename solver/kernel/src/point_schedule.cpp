@@ -132,12 +132,10 @@ void PointSchedule::PoseByAngle(int link, const double theta[3], double c, doubl
                                 const PointJet& where) {
   LinkJet& l = now_[link];
   l.theta[0] = theta[0];  // (not std::copy: three doubles, not a call to memmove)
-  l.theta[1] = theta[1];
-  l.theta[2] = theta[2];
+  StorePair(&l.theta[1], theta[1], theta[2]);
   l.angle_pending = false;
   l.turns = before_[link].turns;
-  l.c = c;
-  l.s = s;
+  StorePair(&l.c, c, s);
   l.at[0] = where.p[0];
   l.at[1] = where.p[1];
   l.at[2] = where.p[2];

@@ -230,14 +230,19 @@ class PointSchedule {
 
 // Inline: the stages and the outputs ask for several points a step.
 [[gnu::always_inline]] inline PointSchedule::PointJet PointSchedule::PointOf(const LinkJet& l, const Eigen::Vector2d& local) {
-  // local - at_local turned with the link, from `at`: R' = theta' R perp
-  const Eigen::Vector2d v = local - l.at_local;
-  const Eigen::Vector2d r(l.c * v.x() - l.s * v.y(), l.s * v.x() + l.c * v.y());
-  const Eigen::Vector2d turned(-r.y(), r.x());
+  // local - at_local turned with the link (r), from `at`: R' = theta' R perp. Written in scalars:
+  // a 2-vector built from two scalars and then added as a pair goes through the stack, where
+  // the pair's load waits for the two stores (a store-forwarding stall, 10 % of a step).
+  const double vx = local.x() - l.at_local.x(), vy = local.y() - l.at_local.y();
+  const double rx = l.c * vx - l.s * vy, ry = l.s * vx + l.c * vy;
+  const double t1 = l.theta[1], t2 = l.theta[2], t11 = t1 * t1;
   PointJet g;
-  g.p[0] = l.at[0] + r;
-  g.p[1] = l.at[1] + l.theta[1] * turned;
-  g.p[2] = l.at[2] + l.theta[2] * turned - l.theta[1] * l.theta[1] * r;
+  g.p[0].x() = l.at[0].x() + rx;
+  g.p[0].y() = l.at[0].y() + ry;
+  g.p[1].x() = l.at[1].x() - t1 * ry;
+  g.p[1].y() = l.at[1].y() + t1 * rx;
+  g.p[2].x() = l.at[2].x() - t2 * ry - t11 * rx;
+  g.p[2].y() = l.at[2].y() + t2 * rx - t11 * ry;
   return g;
 }
 

@@ -174,13 +174,14 @@ void PointSchedule::CompileRPR(Stage& s, int k, int ka, int kb) const {
   const double root = std::sqrt(root2);
   // n . d = offset, |n| = 1: n = (offset d + branch root perp(d)) / |d|^2
   const Eigen::Vector2d n = (s.offset * d + s.branch * root * Perp(d)) * (1.0 / dd);
-  const double det = Perp(n).dot(d);  // d(n . d)/d theta: -branch root
+  // d(n . d)/d theta = perp(n) . d = -branch root (perp(perp(d)) = -d): its inverse taken from
+  // root, beside 1 / dd rather than after it
+  const double det = -s.branch * root, per_det = -s.branch / root;
   const StageGauge gauge{root, dd};
   const int sign = det > 0.0 ? 1 : -1;
   if (!gauge.Above(std::max(kSingularGauge, options.min_gauge))) return false;
   if (s.det_sign[read_] != 0 && sign != s.det_sign[read_]) return false;
   // n' = theta' perp(n): theta' (perp(n) . d) + n . d' = 0, and once more
-  const double per_det = 1.0 / det;
   const double t1 = -n.dot(d1) * per_det;
   const double t2 = (t1 * t1 * s.offset - 2.0 * t1 * Perp(n).dot(d1) - n.dot(d2)) * per_det;
   s.det_sign[write_] = sign;

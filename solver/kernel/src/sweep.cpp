@@ -116,7 +116,7 @@ struct SweepWalks {
              int samples_, double step_)
       : m(m_), options(options_), solver(solver_), assembly(assembly_), samples(samples_), step(step_),
         input_scale(m_.InputIsAngle() ? 1.0 : solver_.system().length_scale()),
-        width(solver_.OutputWidth(options_.order)), outputs(samples_, width), poses(samples_, solver_.NumCoordinates()),
+        width(solver_.OutputWidth(options_.order)), outputs(samples_, width), poses(samples_, options_.poses ? solver_.NumCoordinates() : 0),
         done(samples_, 0), singular(samples_, 0), valid(samples_, static_cast<std::int8_t>(options_.order)),
         target(samples_) {
     for (int i = 0; i < samples; ++i) target[i] = options.from + i * step;
@@ -174,7 +174,7 @@ void RecordSample(SweepWalks& w, int i, Continuation& path) {
     }
   }
   w.singular[i] = path.AtSingularPose() ? 1 : 0;
-  w.poses.row(i) = path.q().transpose();
+  if (w.options.poses) w.poses.row(i) = path.q().transpose();
   w.done[i] = 1;
 }
 

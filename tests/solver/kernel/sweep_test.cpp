@@ -299,4 +299,23 @@ TEST_CASE("sample counts", "[sweep]") {
   CHECK(SampleCount(5, 5, 1) == 1);
 }
 
+TEST_CASE("a sweep without poses has the same rows, flags and events as one with them", "[sweep]") {
+  // reference: the same sweep keeping its poses; only SweepResult::poses may differ (no columns)
+  for (const Mechanism& m : {test::SliderCrank(1.0, 2.6, 0.8), test::FourBar(1.0, 3.5, 3.0, 4.0, 2.0, 0.5, 1)}) {
+    SweepOptions with = FullTurn(3), without = FullTurn(3);
+    without.poses = false;
+    const SweepResult a = Sweep(m, with), b = Sweep(m, without);
+    REQUIRE(a.complete());
+    REQUIRE(b.complete());
+    CHECK(a.poses.rows() == static_cast<Eigen::Index>(a.inputs.size()));
+    CHECK(a.poses.cols() > 0);
+    CHECK(b.poses.cols() == 0);
+    CHECK(b.inputs == a.inputs);
+    CHECK(b.outputs == a.outputs);  // bit for bit: the same walk, the angles only not read
+    CHECK(b.singular == a.singular);
+    CHECK(b.valid_order == a.valid_order);
+    CHECK(b.singular_points.size() == a.singular_points.size());
+  }
+}
+
 }  // namespace koppel::sweep_test

@@ -101,7 +101,9 @@ namespace {
 template <class Emit>
 SweepTable SweepRows(const Model& model, double from, double to, double step, int order, AtBranchPoint action, Emit&& emit) {
   const Mechanism& m = model.mechanism();
-  const SweepResult result = koppel::Sweep(m, Options(model, from, to, step, order, action));
+  SweepOptions options = Options(model, from, to, step, order, action);
+  options.poses = false;  // a table shows the outputs
+  const SweepResult result = koppel::Sweep(m, options);
   const SweepColumns layout = SweepLayout(m, order, model.length_unit());
   SweepTable t;
   t.status = FromSweep(result.status);

@@ -32,6 +32,10 @@ struct SweepOptions {
   int order = 2;  // highest transfer function order in the table (0..kMaxOrder)
   ContinuationOptions continuation;
   NewtonOptions newton;  // the corrector; newton.dense: the reference path (see NewtonOptions)
+  // Keep every sample's pose (SweepResult::poses). false: poses has no columns, and a compiled
+  // walk step never writes its link angles (an atan2 a link a row) for a caller that shows only
+  // the outputs (the API's tables).
+  bool poses = true;
 
   // Empty *why and true when usable: finite from/to/step, step != 0, order in 0..kMaxOrder, at
   // most kMaxSweepSamples samples, valid continuation options.
@@ -62,7 +66,7 @@ struct SweepResult {
   int requested_samples = 0;
   std::vector<double> inputs;  // the computed samples, in sweep order
   Table outputs;               // inputs.size() x OutputWidth(order), see OutputDerivatives
-  Table poses;                 // inputs.size() x NumCoordinates()
+  Table poses;                 // inputs.size() x NumCoordinates() (x 0 without SweepOptions::poses)
   std::vector<std::uint8_t> singular;   // per row: 1 when its pose is singular (rcond < kSingularRowRcond)
   std::vector<std::int8_t> valid_order;  // per row: transfer functions above this order are not computable there (stored as 0)
   std::vector<SingularPoint> singular_points;  // met by the walks, in input order

@@ -673,12 +673,13 @@ bool Continuation::FinishAtLimitPoint(double target, double direction, WalkRepor
   return true;
 }
 
+bool Continuation::OneCompiledStepTo(double target, double max_step) {
+  return schedule_ && started_ && !at_limit_ && !window_ && target != input_ &&
+         std::abs(target - input_) <= std::min(max_step, options_.max_step * input_scale_) && TryCompiledStep(target).accepted;
+}
+
 WalkReport Continuation::AdvanceTo(double target, double max_step) {
-  // The common case first: a target within one step of a regular pose, reached by the compiled
-  // step (which never crosses a sign change of det J). Otherwise, the walk below from the start.
-  if (schedule_ && started_ && !at_limit_ && !window_ && target != input_ &&
-      std::abs(target - input_) <= std::min(max_step, options_.max_step * input_scale_) && TryCompiledStep(target).accepted)
-    return Reached();
+  if (OneCompiledStepTo(target, max_step)) return Reached();  // the common case, without the walk's setup
   if (!started_) return Ended(WalkStatus::kFailed, "the walk was not started");
   if (!std::isfinite(target) || !(max_step > 0.0)) return Ended(WalkStatus::kFailed, "invalid target or step");
   if (at_limit_) {

@@ -140,6 +140,9 @@ class Continuation {
   StepResult TryStep(double next);
   // The schedule's step; accepted poses are regular (every dyad's gauge above kFastGauge).
   StepResult TryCompiledStep(double next);
+  // AdvanceTo's common case: `target` within one step of a regular pose, reached by the
+  // compiled step (which never crosses a sign change of det J); false: the walk's full loop.
+  bool OneCompiledStepTo(double target, double max_step);
   // After compiled steps: the general kernel's factorisation, sign and gauge at the current pose.
   void EnsureFactorized();
   // Keeps the current pose as the last regular one when `regular`, else forgets the last one (the

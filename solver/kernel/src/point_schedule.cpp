@@ -36,7 +36,11 @@ PointSchedule::PointSchedule(const ConstraintSystem& system)
   for (size_t k = 0; k < used.size() && why_not_.empty(); ++k) {
     if (!used[k]) why_not_ = "joint '" + m.joints[k].name + "' is not part of a drive or a dyad";
   }
-  if (!why_not_.empty()) stages_.clear();
+  if (!why_not_.empty()) {
+    stages_.clear();
+    return;
+  }
+  CompileOutputs();
 }
 
 bool PointSchedule::AddDriveStage(std::vector<bool>& posed, std::vector<bool>& used) {
@@ -125,6 +129,11 @@ int PointSchedule::CloseDyad(Stage& s, int k, const std::vector<bool>& posed, co
   // the slide's point on the block (b_at_anchor) and on the guide (anchor_b_point)
   s.b_at_anchor = LocalAt(m, kb, b);
   s.anchor_b_point = LocalAt(m, kb, s.anchor_b);
+  s.line_at_rest = s.anchor_b == frame_;
+  if (s.line_at_rest) {  // the frame's angle is 0: the block's is the joint's, the line's either
+    s.rest_x = s.anchor_b_point - Turned(s.cos_turn, s.sin_turn, s.b_at_anchor - s.b_at_j);
+    s.rest_n = s.block_is_guide_side ? Perp(Turned(s.cos_turn, s.sin_turn, s.axis)) : Perp(s.axis);
+  }
   return kb;
 }
 
@@ -232,8 +241,17 @@ void PointSchedule::PrepareDyad(const Stage& s, DyadRows& d) const {
     d.b = GlobalPoint(s.anchor_b, s.anchor_b_point);
     return;
   }
-  const LinkJet& guide = now_[s.anchor_b];
   const double sign = s.block_is_guide_side ? -1.0 : 1.0;
+  if (s.line_at_rest) {
+    d.block_theta[0] = sign * s.angle + 2.0 * kPi * before_[s.b].turns;
+    d.block_theta[1] = d.block_theta[2] = 0.0;
+    d.bc = s.cos_turn;
+    d.bs = s.sin_turn;
+    d.x.p[0] = s.rest_x;
+    d.n[0] = s.rest_n;
+    return;
+  }
+  const LinkJet& guide = now_[s.anchor_b];
   d.block_theta[0] = Angle(s.anchor_b) + sign * s.angle + 2.0 * kPi * before_[s.b].turns;
   d.block_theta[1] = guide.theta[1];
   d.block_theta[2] = guide.theta[2];
@@ -261,34 +279,50 @@ int PointSchedule::NewtonDyad(const Stage& s, DyadRows& d, Eigen::Vector2d& j, c
   const bool rr = s.kind == Kind::kDyadRR;
   // The rows scaled to r1 . dj = g1, r2 . dj = g2 (RR: [r1 / a; r2 / b], RP: [r1 / a; n]); the
   // residuals (|r1|^2 - a^2) / 2a = -g1 / a and (RR) -g2 / b, (RP) -g2, within the tolerance.
+  // In scalars: the points come from PointOf's scalars, and 2-vectors built from them would go
+  // through the stack (see PointOf).
   const double a2 = s.length_a * s.length_a, b2 = s.length_b * s.length_b;
   const double tolerance_1 = tolerance * s.length_a, tolerance_2 = rr ? tolerance * s.length_b : tolerance;
+  const double ax = d.a.p[0].x(), ay = d.a.p[0].y();
+  // RR: B; RP: the line's normal and the point X
+  const double bx = rr ? d.b.p[0].x() : d.x.p[0].x(), by = rr ? d.b.p[0].y() : d.x.p[0].y();
+  const double nx = rr ? 0.0 : d.n[0].x(), ny = rr ? 0.0 : d.n[0].y();
+  double jx = j.x(), jy = j.y(), r1x = 0.0, r1y = 0.0, r2x = nx, r2y = ny, det = 0.0;
   for (int it = 0;; ++it) {
-    d.r1 = j - d.a.p[0];
-    const double g1 = 0.5 * (a2 - d.r1.squaredNorm());
+    r1x = jx - ax;
+    r1y = jy - ay;
+    const double g1 = 0.5 * (a2 - (r1x * r1x + r1y * r1y));
     double g2;
     if (rr) {
-      d.r2 = j - d.b.p[0];
-      g2 = 0.5 * (b2 - d.r2.squaredNorm());
+      r2x = jx - bx;
+      r2y = jy - by;
+      g2 = 0.5 * (b2 - (r2x * r2x + r2y * r2y));
     } else {
-      d.r2 = d.n[0];
-      g2 = d.n[0].dot(d.x.p[0] - j);
+      g2 = nx * (bx - jx) + ny * (by - jy);
     }
-    d.det = Cross(d.r1, d.r2);
-    if (!std::isfinite(g1) || !std::isfinite(g2)) return -1;
+    det = r1x * r2y - r1y * r2x;
+    if (!std::isfinite(g1 + g2)) return -1;  // (either not finite, or both beyond any length)
     const bool converged = std::abs(g1) <= tolerance_1 && std::abs(g2) <= tolerance_2;
-    if (!converged && (it == options.max_iterations || d.det == 0.0)) return -1;
-    if (d.det != 0.0) {
-      const double per_det = 1.0 / d.det;
-      j += per_det * Eigen::Vector2d(g1 * d.r2.y() - g2 * d.r1.y(), d.r1.x() * g2 - d.r2.x() * g1);
+    if (!converged && (it == options.max_iterations || det == 0.0)) return -1;
+    if (det != 0.0) {
+      const double per_det = 1.0 / det;
+      jx += per_det * (g1 * r2y - g2 * r1y);
+      jy += per_det * (r1x * g2 - r2x * g1);
     }
     if (converged) {
       // One step more from within the tolerance puts the residual at roundoff: the derivatives
       // carry the pose's error times 1/det, and near a singular position the tolerance's 1e-13 L
       // would show in them (the general kernel's iterates differ from these).
-      d.r1 = j - d.a.p[0];
-      if (rr) d.r2 = j - d.b.p[0];
-      d.det = Cross(d.r1, d.r2);
+      r1x = jx - ax;
+      r1y = jy - ay;
+      if (rr) {
+        r2x = jx - bx;
+        r2y = jy - by;
+      }
+      d.r1 = Eigen::Vector2d(r1x, r1y);
+      d.r2 = Eigen::Vector2d(r2x, r2y);
+      d.det = r1x * r2y - r1y * r2x;
+      j = Eigen::Vector2d(jx, jy);
       return it;
     }
   }
@@ -296,23 +330,34 @@ int PointSchedule::NewtonDyad(const Stage& s, DyadRows& d, Eigen::Vector2d& j, c
 
 PointSchedule::PointJet PointSchedule::DyadDerivatives(const Stage& s, const DyadRows& d, const Eigen::Vector2d& j) const {
   // r1 . J' = r1 . A', r2 . J' = rhs (RR: r2 . B'; RP: n . X' - n' . (J - X)), and so for J''
-  // (the rows differentiated twice)
+  // (the rows differentiated twice); in scalars, as NewtonDyad
   const double per_det = 1.0 / d.det;
-  auto solve = [&](double g1, double g2) {
-    return Eigen::Vector2d((g1 * d.r2.y() - g2 * d.r1.y()) * per_det, (d.r1.x() * g2 - d.r2.x() * g1) * per_det);
-  };
-  const PointJet& a = d.a;
+  const double r1x = d.r1.x(), r1y = d.r1.y(), r2x = d.r2.x(), r2y = d.r2.y();
   PointJet jj;
   jj.p[0] = j;
+  auto solve = [&](double g1, double g2, Eigen::Vector2d& to) {
+    to.x() = (g1 * r2y - g2 * r1y) * per_det;
+    to.y() = (r1x * g2 - r2x * g1) * per_det;
+  };
+  const Eigen::Vector2d* a = d.a.p;
+  auto dot = [](double x, double y, const Eigen::Vector2d& v) { return x * v.x() + y * v.y(); };
+  auto square = [](double x, double y) { return x * x + y * y; };
+  const double ra1 = dot(r1x, r1y, a[1]), ra2 = dot(r1x, r1y, a[2]);
   if (s.kind == Kind::kDyadRR) {
-    const PointJet& b = d.b;
-    jj.p[1] = solve(d.r1.dot(a.p[1]), d.r2.dot(b.p[1]));
-    jj.p[2] = solve(d.r1.dot(a.p[2]) - (jj.p[1] - a.p[1]).squaredNorm(), d.r2.dot(b.p[2]) - (jj.p[1] - b.p[1]).squaredNorm());
+    const Eigen::Vector2d* b = d.b.p;
+    solve(ra1, dot(r2x, r2y, b[1]), jj.p[1]);
+    const double j1x = jj.p[1].x(), j1y = jj.p[1].y();
+    solve(ra2 - square(j1x - a[1].x(), j1y - a[1].y()), dot(r2x, r2y, b[2]) - square(j1x - b[1].x(), j1y - b[1].y()), jj.p[2]);
+  } else if (s.line_at_rest) {  // n . J' = 0 and n . J'' = 0
+    solve(ra1, 0.0, jj.p[1]);
+    solve(ra2 - square(jj.p[1].x() - a[1].x(), jj.p[1].y() - a[1].y()), 0.0, jj.p[2]);
   } else {
-    const Eigen::Vector2d off = j - d.x.p[0];
-    jj.p[1] = solve(d.r1.dot(a.p[1]), d.n[0].dot(d.x.p[1]) - d.n[1].dot(off));
-    jj.p[2] = solve(d.r1.dot(a.p[2]) - (jj.p[1] - a.p[1]).squaredNorm(),
-                    d.n[0].dot(d.x.p[2]) - d.n[2].dot(off) - 2.0 * d.n[1].dot(jj.p[1] - d.x.p[1]));
+    const Eigen::Vector2d* x = d.x.p;
+    const double offx = j.x() - x[0].x(), offy = j.y() - x[0].y();
+    solve(ra1, dot(r2x, r2y, x[1]) - dot(offx, offy, d.n[1]), jj.p[1]);
+    const double j1x = jj.p[1].x(), j1y = jj.p[1].y();
+    solve(ra2 - square(j1x - a[1].x(), j1y - a[1].y()),
+          dot(r2x, r2y, x[2]) - dot(offx, offy, d.n[2]) - 2.0 * dot(j1x - x[1].x(), j1y - x[1].y(), d.n[1]), jj.p[2]);
   }
   return jj;
 }

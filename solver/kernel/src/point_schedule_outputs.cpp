@@ -55,73 +55,117 @@ void PointSchedule::DirectionJet(int link, const Eigen::Vector2d& local, Eigen::
   u[2] = l.theta[2] * turned - l.theta[1] * l.theta[1] * u[0];
 }
 
-void PointSchedule::TransmissionLines(int output, Eigen::Vector2d coupler[3], Eigen::Vector2d motion[3]) const {
+void PointSchedule::CompileOutputs() {
   const Mechanism& m = mechanism_;
-  const TransmissionGeometry& g = system_.transmission(output);
-  auto point = [&](const PointRef& r) { return GlobalPoint(r.link, m.links[r.link].points[r.point].local); };
-  const PointJet a = point(g.coupler_from), b = point(g.coupler_to);
-  for (int k = 0; k < 3; ++k) coupler[k] = b.p[k] - a.p[k];
-  if (g.slide_joint >= 0) {
-    // the slide's direction turns with its guide
-    const Joint& j = m.joints[g.slide_joint];
-    DirectionJet(j.link_a, j.axis, motion);
-    return;
-  }
-  // the output point's direction of motion about the pivot: (b - pivot) turned by +90 deg
-  const PointJet pivot = point(g.pivot);
-  for (int k = 0; k < 3; ++k) motion[k] = Eigen::Vector2d(-(b.p[k].y() - pivot.p[k].y()), b.p[k].x() - pivot.p[k].x());
-}
-
-// long: one case per output kind, in the order and with the conventions of ConstraintSystem::Output
-[[gnu::flatten]] void PointSchedule::OutputDerivatives(int order, double* out) const {
-  using namespace point_outputs;
-  const Mechanism& m = mechanism_;
-  int column = 0;
-  auto write = [&](const ScalarJet& y) {
-    out[column++] = y.v;
-    if (order >= 1) out[column++] = y.d1;
-    if (order >= 2) out[column++] = y.d2;
-  };
-  auto point = [&](const PointRef& r) { return GlobalPoint(r.link, m.links[r.link].points[r.point].local); };
-  auto angle = [&](int link) { return ScalarJet{Angle(link), now_[link].theta[1], now_[link].theta[2]}; };
+  auto local = [&](const PointRef& r) { return m.links[r.link].points[r.point].local; };
   for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
     const Output& output = m.outputs[o];
+    OutputPlan plan;
+    plan.kind = output.kind;
+    plan.offset = output.offset;
     switch (output.kind) {
       case OutputKind::kJoint: {
         const Joint& j = m.joints[output.joint];
-        if (j.type == JointType::kRevolute) {
-          const ScalarJet a = angle(j.link_a), b = angle(j.link_b);
-          write({b.v - a.v - output.offset, b.d1 - a.d1, b.d2 - a.d2});
+        plan.slide = j.type == JointType::kPrismatic;
+        plan.link_p = plan.axis_link = j.link_a;
+        plan.link_q = j.link_b;
+        plan.p = local({j.link_a, j.point_a});
+        plan.q = local({j.link_b, j.point_b});
+        plan.axis = j.axis;
+        break;
+      }
+      case OutputKind::kLinkAngle:
+        plan.link_p = output.link;
+        break;
+      case OutputKind::kPoint:
+      case OutputKind::kDistance:
+      case OutputKind::kDirection:
+        plan.link_p = output.p.link;
+        plan.p = local(output.p);
+        if (output.kind != OutputKind::kPoint) {
+          plan.link_q = output.q.link;
+          plan.q = local(output.q);
+        }
+        break;
+      case OutputKind::kTransmissionAngle: {
+        const TransmissionGeometry& g = system_.transmission(o);
+        plan.link_p = g.coupler_from.link;
+        plan.p = local(g.coupler_from);
+        plan.link_q = g.coupler_to.link;  // the coupler, as link_p (ResolveTransmission)
+        plan.q = local(g.coupler_to);
+        plan.slide = g.slide_joint >= 0;
+        if (plan.slide) {  // the slide's direction turns with its guide
+          const Joint& j = m.joints[g.slide_joint];
+          plan.axis_link = j.link_a;
+          plan.axis = j.axis;
+        } else {
+          plan.pivot_link = g.pivot.link;
+          plan.pivot = local(g.pivot);
+        }
+        break;
+      }
+    }
+    outputs_.push_back(plan);
+  }
+}
+
+void PointSchedule::OutputDerivatives(int order, double* out) const {
+  if (order <= 0) {
+    WriteOutputs<0>(out);
+  } else if (order == 1) {
+    WriteOutputs<1>(out);
+  } else {
+    WriteOutputs<2>(out);
+  }
+}
+
+// One case per output kind, in the order and with the conventions of ConstraintSystem::Output.
+// (Order a template argument: the columns written per value are fixed in the loop.)
+template <int Order>
+[[gnu::flatten]] void PointSchedule::WriteOutputs(double* out) const {
+  using namespace point_outputs;
+  auto write = [&](const ScalarJet& y) {
+    *out++ = y.v;
+    if constexpr (Order >= 1) *out++ = y.d1;
+    if constexpr (Order >= 2) *out++ = y.d2;
+  };
+  auto angle = [&](int link) { return ScalarJet{Angle(link), now_[link].theta[1], now_[link].theta[2]}; };
+  for (const OutputPlan& plan : outputs_) {
+    switch (plan.kind) {
+      case OutputKind::kJoint: {
+        if (!plan.slide) {
+          const ScalarJet a = angle(plan.link_p), b = angle(plan.link_q);
+          write({b.v - a.v - plan.offset, b.d1 - a.d1, b.d2 - a.d2});
           break;
         }
         // the displacement along link_a's axis: u . (pb - pa)
-        const PointJet pa = point({j.link_a, j.point_a}), pb = point({j.link_b, j.point_b});
+        const PointJet pa = GlobalPoint(plan.link_p, plan.p), pb = GlobalPoint(plan.link_q, plan.q);
         Eigen::Vector2d u[3], d[3];
-        DirectionJet(j.link_a, j.axis, u);
+        DirectionJet(plan.axis_link, plan.axis, u);
         for (int k = 0; k < 3; ++k) d[k] = pb.p[k] - pa.p[k];
         write(Dot(u, d));
         break;
       }
       case OutputKind::kLinkAngle: {
-        ScalarJet a = angle(output.link);
-        a.v -= output.offset;
+        ScalarJet a = angle(plan.link_p);
+        a.v -= plan.offset;
         write(a);
         break;
       }
       case OutputKind::kPoint: {
-        const PointJet p = point(output.p);
+        const PointJet p = GlobalPoint(plan.link_p, plan.p);
         write({p.p[0].x(), p.p[1].x(), p.p[2].x()});
         write({p.p[0].y(), p.p[1].y(), p.p[2].y()});
         break;
       }
       case OutputKind::kDistance:
       case OutputKind::kDirection: {
-        const PointJet p = point(output.p), q = point(output.q);
+        const PointJet p = GlobalPoint(plan.link_p, plan.p), q = GlobalPoint(plan.link_q, plan.q);
         Eigen::Vector2d d[3];
         for (int k = 0; k < 3; ++k) d[k] = q.p[k] - p.p[k];
-        if (output.kind == OutputKind::kDirection) {
+        if (plan.kind == OutputKind::kDirection) {
           ScalarJet a = Atan2Jet({d[0].y(), d[1].y(), d[2].y()}, {d[0].x(), d[1].x(), d[2].x()});
-          a.v -= output.offset;
+          a.v -= plan.offset;
           write(a);
           break;
         }
@@ -131,8 +175,17 @@ void PointSchedule::TransmissionLines(int output, Eigen::Vector2d coupler[3], Ei
         break;
       }
       case OutputKind::kTransmissionAngle: {
+        // the coupler's line (both points on the coupler: q - p turned with it), and the output
+        // point's direction of motion: along the slide, or about the pivot ((q - pivot) turned
+        // by +90 deg)
         Eigen::Vector2d c[3], v[3];
-        TransmissionLines(o, c, v);
+        DirectionJet(plan.link_p, plan.q - plan.p, c);
+        if (plan.slide) {
+          DirectionJet(plan.axis_link, plan.axis, v);
+        } else {
+          const PointJet b = GlobalPoint(plan.link_q, plan.q), pivot = GlobalPoint(plan.pivot_link, plan.pivot);
+          for (int k = 0; k < 3; ++k) v[k] = Eigen::Vector2d(-(b.p[k].y() - pivot.p[k].y()), b.p[k].x() - pivot.p[k].x());
+        }
         write(Atan2Jet(AbsJet(Dot(c, v)), AbsJet(CrossJet(c, v))));
         break;
       }

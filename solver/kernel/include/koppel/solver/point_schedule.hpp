@@ -151,6 +151,10 @@ class PointSchedule {
     double length_a = 0.0, length_b = 0.0;        // |J - A| (on a), |J - B| (on b)
     double per_length_a = 0.0, per_length_b = 0.0;  // their inverses (RR, RP: the step multiplies)
     bool block_is_guide_side = false;             // RP: the block is the P joint's link_a
+    // RP on a guide at rest (the frame): the block does not turn, so its line's normal and the
+    // point X that J keeps the line's offset from are constants, without derivatives
+    bool line_at_rest = false;
+    Eigen::Vector2d rest_x, rest_n;
     // PRP: two blocks (a, b) on the slides line_a, line_b, hinged to each other at J.
     // RPR: a block a on the line of link b (line_b), each hinged to a posed link (anchor_a at A,
     // anchor_b at B): b's angle from its normal n . (A - B) = offset, on the branch `branch`.
@@ -205,16 +209,37 @@ class PointSchedule {
   // the same for a link whose angle is known by cos and sin only: its turns counted against the
   // state stepped from; false when it turned by 90 degrees or more in the step
   bool PoseByCosSin(int link, double c, double s, double t1, double t2, const Eigen::Vector2d& local, const PointJet& at);
+  // An output compiled once (point_schedule_outputs.cpp): its points and directions as links and
+  // local coordinates, so that a step's outputs look nothing up in the mechanism.
+  struct OutputPlan {
+    OutputKind kind = OutputKind::kJoint;
+    // kJoint: a P joint (else R); kTransmissionAngle: the output link slides (else it turns
+    // about `pivot`)
+    bool slide = false;
+    // the points p and q: kJoint the joint's on link_a and link_b (R: only the links);
+    // kLinkAngle: link_p; kPoint: p; kDistance, kDirection: p and q; kTransmissionAngle: the
+    // coupler's line from p to q
+    int link_p = -1, link_q = -1;
+    Eigen::Vector2d p = Eigen::Vector2d::Zero(), q = Eigen::Vector2d::Zero();
+    // a P joint's axis (kJoint, kTransmissionAngle on a slide), local to axis_link
+    int axis_link = -1;
+    Eigen::Vector2d axis = Eigen::Vector2d::UnitX();
+    int pivot_link = -1;
+    Eigen::Vector2d pivot = Eigen::Vector2d::Zero();
+    double offset = 0.0;  // angle outputs: subtracted from the value
+  };
+  void CompileOutputs();
+  template <int Order>
+  void WriteOutputs(double* out) const;
   // a direction local to `link` in global coordinates, with its derivatives (it turns with theta)
   void DirectionJet(int link, const Eigen::Vector2d& local, Eigen::Vector2d u[3]) const;
-  // a transmission angle's coupler line and the output point's direction of motion, as jets
-  void TransmissionLines(int output, Eigen::Vector2d coupler[3], Eigen::Vector2d motion[3]) const;
   static bool IsDyad(Kind k) { return k != Kind::kDriveR && k != Kind::kDriveP; }
 
   const ConstraintSystem& system_;
   const Mechanism& mechanism_;
   std::string why_not_;
   std::vector<Stage> stages_;
+  std::vector<OutputPlan> outputs_;
   // The states: kHistory slots of one LinkJet per link, the solved state in slot at_. A step
   // writes the next slot (now_) from the solved one (before_); a refused step leaves at_.
   std::vector<std::vector<LinkJet>> states_;

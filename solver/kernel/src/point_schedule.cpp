@@ -164,10 +164,14 @@ bool PointSchedule::PoseByTwoPoints(int link, const Eigen::Vector2d& local_from,
                                     const Eigen::Vector2d& local_to, double per_span, const PointJet& to) {
   const Eigen::Vector2d d = to.p[0] - from.p[0], d1 = to.p[1] - from.p[1], d2 = to.p[2] - from.p[2];
   const Eigen::Vector2d dl = local_to - local_from;
-  const double r2 = d.squaredNorm(), per_r2 = 1.0 / r2;
+  // |d| is the span (a dyad's equation, within the tolerance): 1 / |d|^2 and 1 / (|d| span) by
+  // one Newton step for the reciprocal and for the reciprocal square root from the span's, whose
+  // error is the square of d's relative misfit (within 2e-11 at the tolerance and the shortest
+  // link, 1e-16 as Newton lands): roundoff, without a division or a square root after Newton.
+  const double per_span2 = per_span * per_span, misfit = d.squaredNorm() * per_span2;
+  const double per_r2 = per_span2 * (2.0 - misfit), per_norms = per_span2 * (1.5 - 0.5 * misfit);
   // theta = atan2(d) - atan2(dl): its cos and sin without trigonometry, d's direction turned back
   // by dl's (+ 0.0: no -0 sine, which atan2 would put on the other side of the cut)
-  const double per_norms = std::sqrt(per_r2) * per_span;
   const double c = d.dot(dl) * per_norms, sn = Cross(dl, d) * per_norms;
   const double t1 = Cross(d, d1) * per_r2;
   return PoseByCosSin(link, c, sn, t1, (Cross(d, d2) - 2.0 * d.dot(d1) * t1) * per_r2, local_from, from);
@@ -287,44 +291,43 @@ int PointSchedule::NewtonDyad(const Stage& s, DyadRows& d, Eigen::Vector2d& j, c
   // RR: B; RP: the line's normal and the point X
   const double bx = rr ? d.b.p[0].x() : d.x.p[0].x(), by = rr ? d.b.p[0].y() : d.x.p[0].y();
   const double nx = rr ? 0.0 : d.n[0].x(), ny = rr ? 0.0 : d.n[0].y();
+  // An update from residuals within the reach (kQuadraticReach times the squared gauge) lands at
+  // roundoff: the point it lands on is returned once its own residuals are checked within the
+  // tolerance. A close prediction takes one update and one check.
+  const double reach = kQuadraticReach * length_scale_;
+  const double reach_1 = reach * s.length_a, reach_2 = rr ? reach * s.length_b : reach;
+  bool landed = false;
   double jx = j.x(), jy = j.y(), r1x = 0.0, r1y = 0.0, r2x = nx, r2y = ny, det = 0.0;
   for (int it = 0;; ++it) {
     r1x = jx - ax;
     r1y = jy - ay;
-    const double g1 = 0.5 * (a2 - (r1x * r1x + r1y * r1y));
-    double g2;
+    const double r1_2 = r1x * r1x + r1y * r1y, g1 = 0.5 * (a2 - r1_2);
+    double g2, norm2 = r1_2;  // |r1|^2 |r2|^2, the rows' (n: a unit vector)
     if (rr) {
       r2x = jx - bx;
       r2y = jy - by;
-      g2 = 0.5 * (b2 - (r2x * r2x + r2y * r2y));
+      const double r2_2 = r2x * r2x + r2y * r2y;
+      g2 = 0.5 * (b2 - r2_2);
+      norm2 *= r2_2;
     } else {
       g2 = nx * (bx - jx) + ny * (by - jy);
     }
     det = r1x * r2y - r1y * r2x;
     if (!std::isfinite(g1 + g2)) return -1;  // (either not finite, or both beyond any length)
-    const bool converged = std::abs(g1) <= tolerance_1 && std::abs(g2) <= tolerance_2;
-    if (!converged && (it == options.max_iterations || det == 0.0)) return -1;
-    if (det != 0.0) {
-      const double per_det = 1.0 / det;
-      jx += per_det * (g1 * r2y - g2 * r1y);
-      jy += per_det * (r1x * g2 - r2x * g1);
-    }
-    if (converged) {
-      // One step more from within the tolerance puts the residual at roundoff: the derivatives
-      // carry the pose's error times 1/det, and near a singular position the tolerance's 1e-13 L
-      // would show in them (the general kernel's iterates differ from these).
-      r1x = jx - ax;
-      r1y = jy - ay;
-      if (rr) {
-        r2x = jx - bx;
-        r2y = jy - by;
-      }
+    if (landed && std::abs(g1) <= tolerance_1 && std::abs(g2) <= tolerance_2) {
       d.r1 = Eigen::Vector2d(r1x, r1y);
       d.r2 = Eigen::Vector2d(r2x, r2y);
-      d.det = r1x * r2y - r1y * r2x;
+      d.det = det;
       j = Eigen::Vector2d(jx, jy);
       return it;
     }
+    if (it == options.max_iterations || det == 0.0) return -1;
+    const double per_det = 1.0 / det;
+    jx += per_det * (g1 * r2y - g2 * r1y);
+    jy += per_det * (r1x * g2 - r2x * g1);
+    // within the reach: |g| <= reach gauge^2, the gauge^2 det^2 / norm2
+    const double det2 = det * det;
+    landed = std::abs(g1) * norm2 <= reach_1 * det2 && std::abs(g2) * norm2 <= reach_2 * det2;
   }
 }
 
@@ -366,7 +369,14 @@ PointSchedule::PointJet PointSchedule::DyadDerivatives(const Stage& s, const Dya
   DyadRows d;
   PrepareDyad(s, d);
   const PointJet& before = s.j[read_];
-  const Eigen::Vector2d predicted = before.p[0] + h * before.p[1] + (0.5 * h * h) * before.p[2];
+  Eigen::Vector2d predicted = before.p[0] + h * before.p[1] + (0.5 * h * h) * before.p[2];
+  if (h_before_ != 0.0) {
+    // the 3rd-order term: J's third derivative from the second ones of the last two states (the
+    // other buffer holds the state before). The prediction's error drops from O(h^3) to
+    // O(h^4), and Newton's first update usually lands at roundoff (see NewtonDyad).
+    const double k3 = h * h * h / (6.0 * h_before_);
+    predicted += k3 * (before.p[2] - s.j[read_ ^ 1].p[2]);
+  }
   Eigen::Vector2d j = predicted;
   const int it = NewtonDyad(s, d, j, options);
   if (it < 0) return false;
@@ -434,6 +444,7 @@ void PointSchedule::Load(double input, const Eigen::VectorXd& q, const Eigen::Ma
     }
   }
   input_ = input;
+  h_before_ = 0.0;
   // every slot a copy of the loaded state: the frame's entry is written only here
   for (int k = 0; k < kHistory; ++k) {
     if (k != at_) states_[k] = states_[at_];
@@ -457,12 +468,14 @@ bool PointSchedule::Step(double input, const StepOptions& options) {
       ok = s.kind == Kind::kDyadPRP ? SolvePRP(s, options) : s.kind == Kind::kDyadRPR ? SolveRPR(s, options) : SolveDyad(s, h, options);
     }
     if (!ok) {
+      h_before_ = 0.0;  // the stages' other buffers may hold this step's refused solutions
       now_ = states_[at_].data();
       write_ = read_;
       return false;
     }
   }
   at_ = next;
+  h_before_ = h;
   read_ = write_;
   state_input_[at_] = input;
   history_ = std::min(history_ + 1, kHistory);

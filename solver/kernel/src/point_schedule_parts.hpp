@@ -36,6 +36,12 @@ inline void StorePair(double* to, double first, double second) {
 // A stage's 2 x 2 Jacobian below this normalised determinant (the sine of the angle between its
 // rows) counts as singular: the general kernel takes over there.
 inline constexpr double kSingularGauge = 1e-12;
+// Newton's reach (NewtonDyad): an update from residuals within this times L (times a link's
+// length for a circle's row) times the squared gauge lands at roundoff. The next error, of the
+// order of the update (residual / gauge) squared over a link's length and the gauge, is then
+// 1e-16 L times the gauge: the point it lands on is returned once its own residuals are checked
+// within the tolerance, and the derivatives carry roundoff only (1 / det times the error).
+inline constexpr double kQuadraticReach = 1e-8;
 // Dyad links shorter than this times L are left to the general kernel (see AddDyadStage).
 inline constexpr double kShortestDyadLink = 1e-2;
 

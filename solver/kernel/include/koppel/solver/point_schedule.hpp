@@ -196,8 +196,9 @@ class PointSchedule {
   PointJet DyadDerivatives(const Stage& s, const DyadRows& rows, const Eigen::Vector2d& j) const;
   bool SolveDyad(Stage& s, double h, const StepOptions& options);
   // poses link `link` from its point `local_from` at `from` and `local_to` at `to` (jets;
-  // `per_span` the inverse distance between the two local points); false when the link turned
-  // by 90 degrees or more in the step (its turns could not be counted)
+  // `per_span` the inverse distance between the two local points, which the global points keep
+  // within the tolerance: a dyad's equation); false when the link turned by 90 degrees or more
+  // in the step (its turns could not be counted)
   bool PoseByTwoPoints(int link, const Eigen::Vector2d& local_from, const PointJet& from, const Eigen::Vector2d& local_to,
                        double per_span, const PointJet& to);
   // the angle a stage gives link `link` before whole turns: the drive's, a block's, or for a
@@ -251,6 +252,9 @@ class PointSchedule {
   double input_ = 0.0;
   int frame_ = -1;
   int read_ = 0, write_ = 0;  // the stages' buffers (Stage::j) of the solved state and of the step
+  // the input step that led to the solved state when the stages' other buffers hold the state
+  // before it (the dyads' 3rd-order prediction); 0 when they do not (after Load, a refused step)
+  double h_before_ = 0.0;
 };
 
 // Inline: the stages and the outputs ask for several points a step.

@@ -41,7 +41,7 @@ ScalarJet AbsJet(const ScalarJet& x) { return x.v < 0.0 ? ScalarJet{-x.v, -x.d1,
 
 }  // namespace point_outputs
 
-void PointSchedule::DirectionJet(int link, const Eigen::Vector2d& local, Eigen::Vector2d u[3]) const {
+[[gnu::always_inline]] inline void PointSchedule::DirectionJet(int link, const Eigen::Vector2d& local, Eigen::Vector2d u[3]) const {
   if (link == frame_) {  // at rest
     u[0] = local;
     u[1].setZero();

@@ -33,40 +33,50 @@ int BlockJointToPosed(const Mechanism& m, int link, int except, const std::vecto
 
 // What a slide's row knows before the solve: n . (J - X) = 0, the normal n and the point X that
 // J keeps the line's offset from (the block's slide point turned with the block, which turns with
-// the guide), with their derivatives; the block's cos and sin and angular rates.
+// the guide), with their derivatives ([k][0], [k][1]: x and y of the k-th); the block's cos and
+// sin and angular rates. In scalars: PointOf's points are scalars, and 2-vectors built from them
+// would go through the stack (see PointOf).
 struct PointSchedule::LineRow {
-  PointJet x;
-  Eigen::Vector2d n[3];
+  double x[3][2], n[3][2];
   double bc = 1.0, bs = 0.0, t1 = 0.0, t2 = 0.0;
+  // n . X and the k-th derivative's rows
+  double Along(int k, double jx, double jy) const { return n[k][0] * jx + n[k][1] * jy; }
 };
 
 void PointSchedule::PrepareLine(const Slide& slide, const Eigen::Vector2d& at_j, LineRow& row) const {
+  const Eigen::Vector2d local = slide.block_point - at_j;
   if (slide.guide == frame_) {  // a line at rest: no derivatives
     row.bc = slide.cos_turn;
     row.bs = slide.sin_turn;
     row.t1 = row.t2 = 0.0;
-    row.x.p[0] = slide.guide_point - Turned(row.bc, row.bs, slide.block_point - at_j);
-    row.n[0] = Perp(slide.axis);
-    row.x.p[1].setZero();
-    row.x.p[2].setZero();
-    row.n[1].setZero();
-    row.n[2].setZero();
+    row.x[0][0] = slide.guide_point.x() - (row.bc * local.x() - row.bs * local.y());
+    row.x[0][1] = slide.guide_point.y() - (row.bs * local.x() + row.bc * local.y());
+    row.n[0][0] = -slide.axis.y();
+    row.n[0][1] = slide.axis.x();
+    for (int k = 1; k < 3; ++k) row.x[k][0] = row.x[k][1] = row.n[k][0] = row.n[k][1] = 0.0;
     return;
   }
   const LinkJet& guide = now_[slide.guide];
   row.bc = guide.c * slide.cos_turn - guide.s * slide.sin_turn;
   row.bs = guide.s * slide.cos_turn + guide.c * slide.sin_turn;
-  row.t1 = guide.theta[1];
-  row.t2 = guide.theta[2];
-  const double t1 = row.t1, t2 = row.t2;
-  const Eigen::Vector2d w = Turned(row.bc, row.bs, slide.block_point - at_j);
+  const double t1 = row.t1 = guide.theta[1], t2 = row.t2 = guide.theta[2], t11 = t1 * t1;
+  // w: the slide point from J, turned with the block; X = line - w, X' = line' - t1 perp(w), ...
+  const double wx = row.bc * local.x() - row.bs * local.y(), wy = row.bs * local.x() + row.bc * local.y();
   const PointJet line = GlobalPoint(slide.guide, slide.guide_point);
-  row.x.p[0] = line.p[0] - w;
-  row.x.p[1] = line.p[1] - t1 * Perp(w);
-  row.x.p[2] = line.p[2] - (t2 * Perp(w) - t1 * t1 * w);
-  row.n[0] = Perp(Turned(guide.c, guide.s, slide.axis));
-  row.n[1] = t1 * Perp(row.n[0]);
-  row.n[2] = t2 * Perp(row.n[0]) - t1 * t1 * row.n[0];
+  row.x[0][0] = line.p[0].x() - wx;
+  row.x[0][1] = line.p[0].y() - wy;
+  row.x[1][0] = line.p[1].x() + t1 * wy;
+  row.x[1][1] = line.p[1].y() - t1 * wx;
+  row.x[2][0] = line.p[2].x() + t2 * wy + t11 * wx;
+  row.x[2][1] = line.p[2].y() - t2 * wx + t11 * wy;
+  // n = perp(the axis turned with the guide), n' = t1 perp(n), n'' = t2 perp(n) - t1^2 n
+  const double nx = -(guide.s * slide.axis.x() + guide.c * slide.axis.y()), ny = guide.c * slide.axis.x() - guide.s * slide.axis.y();
+  row.n[0][0] = nx;
+  row.n[0][1] = ny;
+  row.n[1][0] = -t1 * ny;
+  row.n[1][1] = t1 * nx;
+  row.n[2][0] = -t2 * ny - t11 * nx;
+  row.n[2][1] = t2 * nx - t11 * ny;
 }
 
 PointSchedule::Slide PointSchedule::SlideOf(int k) const {
@@ -144,24 +154,27 @@ void PointSchedule::CompileRPR(Stage& s, int k, int ka, int kb) const {
   PrepareLine(s.line_a, s.a_at_j, ra);
   PrepareLine(s.line_b, s.b_at_j, rb);
   // [na; nb] J = [na . Xa; nb . Xb], differentiated as the RP dyad's line row
-  const Eigen::Vector2d& r1 = ra.n[0];
-  const Eigen::Vector2d& r2 = rb.n[0];
-  const double det = Cross(r1, r2);
+  const double r1x = ra.n[0][0], r1y = ra.n[0][1], r2x = rb.n[0][0], r2y = rb.n[0][1];
+  const double det = r1x * r2y - r1y * r2x;
   const StageGauge gauge{det, 1.0};  // unit normals: the sine between the lines
   const int sign = det > 0.0 ? 1 : -1;
   if (!gauge.Above(std::max(kSingularGauge, options.min_gauge))) return false;
   if (s.det_sign[read_] != 0 && sign != s.det_sign[read_]) return false;
   const double per_det = 1.0 / det;
-  auto solve = [&](double g1, double g2) { return Eigen::Vector2d((g1 * r2.y() - g2 * r1.y()) * per_det, (r1.x() * g2 - r2.x() * g1) * per_det); };
-  PointJet jj;
-  jj.p[0] = solve(r1.dot(ra.x.p[0]), r2.dot(rb.x.p[0]));
-  const Eigen::Vector2d oa = jj.p[0] - ra.x.p[0], ob = jj.p[0] - rb.x.p[0];
-  jj.p[1] = solve(r1.dot(ra.x.p[1]) - ra.n[1].dot(oa), r2.dot(rb.x.p[1]) - rb.n[1].dot(ob));
-  jj.p[2] = solve(r1.dot(ra.x.p[2]) - ra.n[2].dot(oa) - 2.0 * ra.n[1].dot(jj.p[1] - ra.x.p[1]),
-                  r2.dot(rb.x.p[2]) - rb.n[2].dot(ob) - 2.0 * rb.n[1].dot(jj.p[1] - rb.x.p[1]));
+  double j[3][2];
+  auto solve = [&](double g1, double g2, double* to) {
+    to[0] = (g1 * r2y - g2 * r1y) * per_det;
+    to[1] = (r1x * g2 - r2x * g1) * per_det;
+  };
+  solve(ra.Along(0, ra.x[0][0], ra.x[0][1]), rb.Along(0, rb.x[0][0], rb.x[0][1]), j[0]);
+  const double oax = j[0][0] - ra.x[0][0], oay = j[0][1] - ra.x[0][1], obx = j[0][0] - rb.x[0][0], oby = j[0][1] - rb.x[0][1];
+  solve(ra.Along(0, ra.x[1][0], ra.x[1][1]) - ra.Along(1, oax, oay), rb.Along(0, rb.x[1][0], rb.x[1][1]) - rb.Along(1, obx, oby), j[1]);
+  solve(ra.Along(0, ra.x[2][0], ra.x[2][1]) - ra.Along(2, oax, oay) - 2.0 * ra.Along(1, j[1][0] - ra.x[1][0], j[1][1] - ra.x[1][1]),
+        rb.Along(0, rb.x[2][0], rb.x[2][1]) - rb.Along(2, obx, oby) - 2.0 * rb.Along(1, j[1][0] - rb.x[1][0], j[1][1] - rb.x[1][1]), j[2]);
+  PointJet& jj = s.j[write_];
+  for (int k = 0; k < 3; ++k) StorePair(jj.p[k].data(), j[k][0], j[k][1]);
   s.det_sign[write_] = sign;
   s.gauge[write_] = gauge;
-  s.j[write_] = jj;
   return PoseByCosSin(s.a, ra.bc, ra.bs, ra.t1, ra.t2, s.a_at_j, jj) && PoseByCosSin(s.b, rb.bc, rb.bs, rb.t1, rb.t2, s.b_at_j, jj);
 }
 
@@ -198,7 +211,7 @@ void PointSchedule::LoadSlideDyad(Stage& s) {
     LineRow ra, rb;
     PrepareLine(s.line_a, s.a_at_j, ra);
     PrepareLine(s.line_b, s.b_at_j, rb);
-    det = Cross(ra.n[0], rb.n[0]);
+    det = ra.n[0][0] * rb.n[0][1] - ra.n[0][1] * rb.n[0][0];
     s.j[write_] = GlobalPoint(s.a, s.a_at_j);
   } else {
     const Eigen::Vector2d d = GlobalPoint(s.anchor_a, s.anchor_a_point).p[0] - GlobalPoint(s.anchor_b, s.anchor_b_point).p[0];

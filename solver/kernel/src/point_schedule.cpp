@@ -162,19 +162,23 @@ double PointSchedule::AngleIn(const LinkJet* state, int l) {
 
 bool PointSchedule::PoseByTwoPoints(int link, const Eigen::Vector2d& local_from, const PointJet& from,
                                     const Eigen::Vector2d& local_to, double per_span, const PointJet& to) {
-  const Eigen::Vector2d d = to.p[0] - from.p[0], d1 = to.p[1] - from.p[1], d2 = to.p[2] - from.p[2];
-  const Eigen::Vector2d dl = local_to - local_from;
+  // (in scalars: see PointOf)
+  const double dx = to.p[0].x() - from.p[0].x(), dy = to.p[0].y() - from.p[0].y();
+  const double d1x = to.p[1].x() - from.p[1].x(), d1y = to.p[1].y() - from.p[1].y();
+  const double d2x = to.p[2].x() - from.p[2].x(), d2y = to.p[2].y() - from.p[2].y();
+  const double lx = local_to.x() - local_from.x(), ly = local_to.y() - local_from.y();
   // |d| is the span (a dyad's equation, within the tolerance): 1 / |d|^2 and 1 / (|d| span) by
   // one Newton step for the reciprocal and for the reciprocal square root from the span's, whose
   // error is the square of d's relative misfit (within 2e-11 at the tolerance and the shortest
   // link, 1e-16 as Newton lands): roundoff, without a division or a square root after Newton.
-  const double per_span2 = per_span * per_span, misfit = d.squaredNorm() * per_span2;
+  const double per_span2 = per_span * per_span, misfit = (dx * dx + dy * dy) * per_span2;
   const double per_r2 = per_span2 * (2.0 - misfit), per_norms = per_span2 * (1.5 - 0.5 * misfit);
   // theta = atan2(d) - atan2(dl): its cos and sin without trigonometry, d's direction turned back
   // by dl's (+ 0.0: no -0 sine, which atan2 would put on the other side of the cut)
-  const double c = d.dot(dl) * per_norms, sn = Cross(dl, d) * per_norms;
-  const double t1 = Cross(d, d1) * per_r2;
-  return PoseByCosSin(link, c, sn, t1, (Cross(d, d2) - 2.0 * d.dot(d1) * t1) * per_r2, local_from, from);
+  const double c = (dx * lx + dy * ly) * per_norms, sn = (lx * dy - ly * dx) * per_norms;
+  const double t1 = (dx * d1y - dy * d1x) * per_r2;
+  const double t2 = ((dx * d2y - dy * d2x) - 2.0 * (dx * d1x + dy * d1y) * t1) * per_r2;
+  return PoseByCosSin(link, c, sn, t1, t2, local_from, from);
 }
 
 bool PointSchedule::PoseByCosSin(int link, double c, double sn, double t1, double t2, const Eigen::Vector2d& local, const PointJet& at) {
@@ -278,7 +282,7 @@ void PointSchedule::PrepareDyad(const Stage& s, DyadRows& d) const {
   d.n[2] = t2 * Perp(d.n[0]) - t1 * t1 * d.n[0];
 }
 
-int PointSchedule::NewtonDyad(const Stage& s, DyadRows& d, Eigen::Vector2d& j, const StepOptions& options) const {
+int PointSchedule::NewtonDyad(const Stage& s, DyadRows& d, double& jx, double& jy, const StepOptions& options) const {
   const double tolerance = options.tolerance * length_scale_;
   const bool rr = s.kind == Kind::kDyadRR;
   // The rows scaled to r1 . dj = g1, r2 . dj = g2 (RR: [r1 / a; r2 / b], RP: [r1 / a; n]); the
@@ -297,7 +301,7 @@ int PointSchedule::NewtonDyad(const Stage& s, DyadRows& d, Eigen::Vector2d& j, c
   const double reach = kQuadraticReach * length_scale_;
   const double reach_1 = reach * s.length_a, reach_2 = rr ? reach * s.length_b : reach;
   bool landed = false;
-  double jx = j.x(), jy = j.y(), r1x = 0.0, r1y = 0.0, r2x = nx, r2y = ny, det = 0.0;
+  double r1x = 0.0, r1y = 0.0, r2x = nx, r2y = ny, det = 0.0;
   for (int it = 0;; ++it) {
     r1x = jx - ax;
     r1y = jy - ay;
@@ -318,7 +322,6 @@ int PointSchedule::NewtonDyad(const Stage& s, DyadRows& d, Eigen::Vector2d& j, c
       d.r1 = Eigen::Vector2d(r1x, r1y);
       d.r2 = Eigen::Vector2d(r2x, r2y);
       d.det = det;
-      j = Eigen::Vector2d(jx, jy);
       return it;
     }
     if (it == options.max_iterations || det == 0.0) return -1;
@@ -331,16 +334,16 @@ int PointSchedule::NewtonDyad(const Stage& s, DyadRows& d, Eigen::Vector2d& j, c
   }
 }
 
-PointSchedule::PointJet PointSchedule::DyadDerivatives(const Stage& s, const DyadRows& d, const Eigen::Vector2d& j) const {
+void PointSchedule::DyadDerivatives(const Stage& s, const DyadRows& d, double jx, double jy, double jj[3][2]) const {
   // r1 . J' = r1 . A', r2 . J' = rhs (RR: r2 . B'; RP: n . X' - n' . (J - X)), and so for J''
   // (the rows differentiated twice); in scalars, as NewtonDyad
   const double per_det = 1.0 / d.det;
   const double r1x = d.r1.x(), r1y = d.r1.y(), r2x = d.r2.x(), r2y = d.r2.y();
-  PointJet jj;
-  jj.p[0] = j;
-  auto solve = [&](double g1, double g2, Eigen::Vector2d& to) {
-    to.x() = (g1 * r2y - g2 * r1y) * per_det;
-    to.y() = (r1x * g2 - r2x * g1) * per_det;
+  jj[0][0] = jx;
+  jj[0][1] = jy;
+  auto solve = [&](double g1, double g2, double* to) {
+    to[0] = (g1 * r2y - g2 * r1y) * per_det;
+    to[1] = (r1x * g2 - r2x * g1) * per_det;
   };
   const Eigen::Vector2d* a = d.a.p;
   auto dot = [](double x, double y, const Eigen::Vector2d& v) { return x * v.x() + y * v.y(); };
@@ -348,54 +351,61 @@ PointSchedule::PointJet PointSchedule::DyadDerivatives(const Stage& s, const Dya
   const double ra1 = dot(r1x, r1y, a[1]), ra2 = dot(r1x, r1y, a[2]);
   if (s.kind == Kind::kDyadRR) {
     const Eigen::Vector2d* b = d.b.p;
-    solve(ra1, dot(r2x, r2y, b[1]), jj.p[1]);
-    const double j1x = jj.p[1].x(), j1y = jj.p[1].y();
-    solve(ra2 - square(j1x - a[1].x(), j1y - a[1].y()), dot(r2x, r2y, b[2]) - square(j1x - b[1].x(), j1y - b[1].y()), jj.p[2]);
+    solve(ra1, dot(r2x, r2y, b[1]), jj[1]);
+    const double j1x = jj[1][0], j1y = jj[1][1];
+    solve(ra2 - square(j1x - a[1].x(), j1y - a[1].y()), dot(r2x, r2y, b[2]) - square(j1x - b[1].x(), j1y - b[1].y()), jj[2]);
   } else if (s.line_at_rest) {  // n . J' = 0 and n . J'' = 0
-    solve(ra1, 0.0, jj.p[1]);
-    solve(ra2 - square(jj.p[1].x() - a[1].x(), jj.p[1].y() - a[1].y()), 0.0, jj.p[2]);
+    solve(ra1, 0.0, jj[1]);
+    solve(ra2 - square(jj[1][0] - a[1].x(), jj[1][1] - a[1].y()), 0.0, jj[2]);
   } else {
     const Eigen::Vector2d* x = d.x.p;
-    const double offx = j.x() - x[0].x(), offy = j.y() - x[0].y();
-    solve(ra1, dot(r2x, r2y, x[1]) - dot(offx, offy, d.n[1]), jj.p[1]);
-    const double j1x = jj.p[1].x(), j1y = jj.p[1].y();
+    const double offx = jx - x[0].x(), offy = jy - x[0].y();
+    solve(ra1, dot(r2x, r2y, x[1]) - dot(offx, offy, d.n[1]), jj[1]);
+    const double j1x = jj[1][0], j1y = jj[1][1];
     solve(ra2 - square(j1x - a[1].x(), j1y - a[1].y()),
-          dot(r2x, r2y, x[2]) - dot(offx, offy, d.n[2]) - 2.0 * dot(j1x - x[1].x(), j1y - x[1].y(), d.n[1]), jj.p[2]);
+          dot(r2x, r2y, x[2]) - dot(offx, offy, d.n[2]) - 2.0 * dot(j1x - x[1].x(), j1y - x[1].y(), d.n[1]), jj[2]);
   }
-  return jj;
 }
 
 [[gnu::flatten]] bool PointSchedule::SolveDyad(Stage& s, double h, const StepOptions& options) {
   DyadRows d;
   PrepareDyad(s, d);
-  const PointJet& before = s.j[read_];
-  Eigen::Vector2d predicted = before.p[0] + h * before.p[1] + (0.5 * h * h) * before.p[2];
+  // (in scalars, as NewtonDyad)
+  const Eigen::Vector2d* before = s.j[read_].p;
+  const double h2 = 0.5 * h * h;
+  double px = before[0].x() + h * before[1].x() + h2 * before[2].x(), py = before[0].y() + h * before[1].y() + h2 * before[2].y();
   if (h_before_ != 0.0) {
     // the 3rd-order term: J's third derivative from the second ones of the last two states (the
     // other buffer holds the state before). The prediction's error drops from O(h^3) to
     // O(h^4), and Newton's first update usually lands at roundoff (see NewtonDyad).
     const double k3 = h * h * h / (6.0 * h_before_);
-    predicted += k3 * (before.p[2] - s.j[read_ ^ 1].p[2]);
+    const Eigen::Vector2d& earlier = s.j[read_ ^ 1].p[2];
+    px += k3 * (before[2].x() - earlier.x());
+    py += k3 * (before[2].y() - earlier.y());
   }
-  Eigen::Vector2d j = predicted;
-  const int it = NewtonDyad(s, d, j, options);
+  double jx = px, jy = py;
+  const int it = NewtonDyad(s, d, jx, jy, options);
   if (it < 0) return false;
-  const StageGauge gauge{d.det, s.kind == Kind::kDyadRR ? d.r1.squaredNorm() * d.r2.squaredNorm() : d.r1.squaredNorm()};
+  const double r1_2 = d.r1.x() * d.r1.x() + d.r1.y() * d.r1.y();
+  const StageGauge gauge{d.det, s.kind == Kind::kDyadRR ? r1_2 * (d.r2.x() * d.r2.x() + d.r2.y() * d.r2.y()) : r1_2};
   const int sign = d.det > 0.0 ? 1 : -1;
   if (!gauge.Above(std::max(kSingularGauge, options.min_gauge))) return false;
   if (s.det_sign[read_] != 0 && sign != s.det_sign[read_]) return false;
-  if ((j - predicted).lpNorm<Eigen::Infinity>() > options.max_correction * length_scale_) return false;
-  const PointJet jj = DyadDerivatives(s, d, j);
+  if (std::max(std::abs(jx - px), std::abs(jy - py)) > options.max_correction * length_scale_) return false;
+  double jj[3][2];
+  DyadDerivatives(s, d, jx, jy, jj);
   // the first derivative must continue the predicted one (another branch changes it by O(1))
-  const Eigen::Vector2d tangent = before.p[1] + h * before.p[2];
-  if ((jj.p[1] - tangent).lpNorm<Eigen::Infinity>() > options.max_tangent_change * (length_scale_ + tangent.lpNorm<Eigen::Infinity>()))
+  const double tx = before[1].x() + h * before[2].x(), ty = before[1].y() + h * before[2].y();
+  if (std::max(std::abs(jj[1][0] - tx), std::abs(jj[1][1] - ty)) >
+      options.max_tangent_change * (length_scale_ + std::max(std::abs(tx), std::abs(ty))))
     return false;
   s.det_sign[write_] = sign;
   s.gauge[write_] = gauge;
-  s.j[write_] = jj;
-  if (!PoseByTwoPoints(s.a, s.a_at_anchor, d.a, s.a_at_j, s.per_length_a, jj)) return false;
-  if (s.kind == Kind::kDyadRR) return PoseByTwoPoints(s.b, s.b_at_anchor, d.b, s.b_at_j, s.per_length_b, jj);
-  PoseByAngle(s.b, d.block_theta, d.bc, d.bs, s.b_at_j, jj);
+  PointJet& j = s.j[write_];  // stored by pairs: the poses below read it as such
+  for (int k = 0; k < 3; ++k) StorePair(j.p[k].data(), jj[k][0], jj[k][1]);
+  if (!PoseByTwoPoints(s.a, s.a_at_anchor, d.a, s.a_at_j, s.per_length_a, j)) return false;
+  if (s.kind == Kind::kDyadRR) return PoseByTwoPoints(s.b, s.b_at_anchor, d.b, s.b_at_j, s.per_length_b, j);
+  PoseByAngle(s.b, d.block_theta, d.bc, d.bs, s.b_at_j, j);
   return true;
 }
 

@@ -12,20 +12,22 @@
 
 namespace koppel {
 namespace point_outputs {  // this file's own names, apart from point_schedule.cpp's in a unity build
-using point_schedule_parts::Cross;
-
 // A scalar and its 1st and 2nd derivatives.
 struct ScalarJet {
   double v = 0.0, d1 = 0.0, d2 = 0.0;
 };
 
-// a . b and a x b (the z of the cross product) of two point jets, with their derivatives
-template <class V>
-ScalarJet Dot(const V a[3], const V b[3]) {
-  return {a[0].dot(b[0]), a[1].dot(b[0]) + a[0].dot(b[1]), a[2].dot(b[0]) + 2.0 * a[1].dot(b[1]) + a[0].dot(b[2])};
+// A 2-vector jet in scalars ([k][0], [k][1]: x and y of the k-th derivative): the points come
+// from PointOf's scalars, and 2-vectors built from them would go through the stack (see PointOf).
+using VectorJet = double[3][2];
+
+double Dot(const double a[2], const double b[2]) { return a[0] * b[0] + a[1] * b[1]; }
+double Cross(const double a[2], const double b[2]) { return a[0] * b[1] - a[1] * b[0]; }
+// a . b and a x b (the z of the cross product) of two vector jets, with their derivatives
+ScalarJet DotJet(const VectorJet& a, const VectorJet& b) {
+  return {Dot(a[0], b[0]), Dot(a[1], b[0]) + Dot(a[0], b[1]), Dot(a[2], b[0]) + 2.0 * Dot(a[1], b[1]) + Dot(a[0], b[2])};
 }
-template <class V>
-ScalarJet CrossJet(const V a[3], const V b[3]) {
+ScalarJet CrossJet(const VectorJet& a, const VectorJet& b) {
   return {Cross(a[0], b[0]), Cross(a[1], b[0]) + Cross(a[0], b[1]), Cross(a[2], b[0]) + 2.0 * Cross(a[1], b[1]) + Cross(a[0], b[2])};
 }
 // atan2(y, x) and its derivatives: theta' = (x y' - y x') / r^2, differentiated once more
@@ -41,18 +43,22 @@ ScalarJet AbsJet(const ScalarJet& x) { return x.v < 0.0 ? ScalarJet{-x.v, -x.d1,
 
 }  // namespace point_outputs
 
-[[gnu::always_inline]] inline void PointSchedule::DirectionJet(int link, const Eigen::Vector2d& local, Eigen::Vector2d u[3]) const {
+[[gnu::always_inline]] inline void PointSchedule::DirectionJet(int link, const Eigen::Vector2d& local, double u[3][2]) const {
   if (link == frame_) {  // at rest
-    u[0] = local;
-    u[1].setZero();
-    u[2].setZero();
+    u[0][0] = local.x();
+    u[0][1] = local.y();
+    u[1][0] = u[1][1] = u[2][0] = u[2][1] = 0.0;
     return;
   }
   const LinkJet& l = now_[link];
-  u[0] = point_schedule_parts::Turned(l.c, l.s, local);
-  const Eigen::Vector2d turned = point_schedule_parts::Perp(u[0]);
-  u[1] = l.theta[1] * turned;
-  u[2] = l.theta[2] * turned - l.theta[1] * l.theta[1] * u[0];
+  const double x = l.c * local.x() - l.s * local.y(), y = l.s * local.x() + l.c * local.y();
+  const double t1 = l.theta[1], t2 = l.theta[2], t11 = t1 * t1;
+  u[0][0] = x;
+  u[0][1] = y;
+  u[1][0] = -t1 * y;  // theta' perp(u)
+  u[1][1] = t1 * x;
+  u[2][0] = -t2 * y - t11 * x;  // theta'' perp(u) - theta'^2 u
+  u[2][1] = t2 * x - t11 * y;
 }
 
 void PointSchedule::CompileOutputs() {
@@ -109,6 +115,13 @@ void PointSchedule::CompileOutputs() {
   }
 }
 
+void PointSchedule::Difference(const PointJet& q, const PointJet& p, double d[3][2]) {
+  for (int k = 0; k < 3; ++k) {
+    d[k][0] = q.p[k].x() - p.p[k].x();
+    d[k][1] = q.p[k].y() - p.p[k].y();
+  }
+}
+
 void PointSchedule::OutputDerivatives(int order, double* out) const {
   if (order <= 0) {
     WriteOutputs<0>(out);
@@ -139,11 +152,10 @@ template <int Order>
           break;
         }
         // the displacement along link_a's axis: u . (pb - pa)
-        const PointJet pa = GlobalPoint(plan.link_p, plan.p), pb = GlobalPoint(plan.link_q, plan.q);
-        Eigen::Vector2d u[3], d[3];
+        VectorJet u, d;
         DirectionJet(plan.axis_link, plan.axis, u);
-        for (int k = 0; k < 3; ++k) d[k] = pb.p[k] - pa.p[k];
-        write(Dot(u, d));
+        Difference(GlobalPoint(plan.link_q, plan.q), GlobalPoint(plan.link_p, plan.p), d);
+        write(DotJet(u, d));
         break;
       }
       case OutputKind::kLinkAngle: {
@@ -160,33 +172,36 @@ template <int Order>
       }
       case OutputKind::kDistance:
       case OutputKind::kDirection: {
-        const PointJet p = GlobalPoint(plan.link_p, plan.p), q = GlobalPoint(plan.link_q, plan.q);
-        Eigen::Vector2d d[3];
-        for (int k = 0; k < 3; ++k) d[k] = q.p[k] - p.p[k];
+        VectorJet d;
+        Difference(GlobalPoint(plan.link_q, plan.q), GlobalPoint(plan.link_p, plan.p), d);
         if (plan.kind == OutputKind::kDirection) {
-          ScalarJet a = Atan2Jet({d[0].y(), d[1].y(), d[2].y()}, {d[0].x(), d[1].x(), d[2].x()});
+          ScalarJet a = Atan2Jet({d[0][1], d[1][1], d[2][1]}, {d[0][0], d[1][0], d[2][0]});
           a.v -= plan.offset;
           write(a);
           break;
         }
         // |d|' = d . d' / |d|, |d|'' = (d' . d' + d . d'' - |d|'^2) / |d|
-        const double v = d[0].norm(), per_v = 1.0 / v, v1 = d[0].dot(d[1]) * per_v;
-        write({v, v1, (d[1].squaredNorm() + d[0].dot(d[2]) - v1 * v1) * per_v});
+        const double v = std::sqrt(Dot(d[0], d[0])), per_v = 1.0 / v, v1 = Dot(d[0], d[1]) * per_v;
+        write({v, v1, (Dot(d[1], d[1]) + Dot(d[0], d[2]) - v1 * v1) * per_v});
         break;
       }
       case OutputKind::kTransmissionAngle: {
         // the coupler's line (both points on the coupler: q - p turned with it), and the output
         // point's direction of motion: along the slide, or about the pivot ((q - pivot) turned
         // by +90 deg)
-        Eigen::Vector2d c[3], v[3];
+        VectorJet c, v;
         DirectionJet(plan.link_p, plan.q - plan.p, c);
         if (plan.slide) {
           DirectionJet(plan.axis_link, plan.axis, v);
         } else {
-          const PointJet b = GlobalPoint(plan.link_q, plan.q), pivot = GlobalPoint(plan.pivot_link, plan.pivot);
-          for (int k = 0; k < 3; ++k) v[k] = Eigen::Vector2d(-(b.p[k].y() - pivot.p[k].y()), b.p[k].x() - pivot.p[k].x());
+          VectorJet b;
+          Difference(GlobalPoint(plan.link_q, plan.q), GlobalPoint(plan.pivot_link, plan.pivot), b);
+          for (int k = 0; k < 3; ++k) {
+            v[k][0] = -b[k][1];
+            v[k][1] = b[k][0];
+          }
         }
-        write(Atan2Jet(AbsJet(Dot(c, v)), AbsJet(CrossJet(c, v))));
+        write(Atan2Jet(AbsJet(DotJet(c, v)), AbsJet(CrossJet(c, v))));
         break;
       }
     }

@@ -191,9 +191,10 @@ class PointSchedule {
   void PoseDrive(const Stage& s, double input);
   struct DyadRows;
   void PrepareDyad(const Stage& s, DyadRows& rows) const;
-  // Newton on J from `j`; the iterations taken, or -1 (no convergence, singular).
-  int NewtonDyad(const Stage& s, DyadRows& rows, Eigen::Vector2d& j, const StepOptions& options) const;
-  PointJet DyadDerivatives(const Stage& s, const DyadRows& rows, const Eigen::Vector2d& j) const;
+  // Newton on J from (jx, jy); the iterations taken, or -1 (no convergence, singular).
+  int NewtonDyad(const Stage& s, DyadRows& rows, double& jx, double& jy, const StepOptions& options) const;
+  // J's jet at the solved J (jj[k]: x and y of the k-th derivative)
+  void DyadDerivatives(const Stage& s, const DyadRows& rows, double jx, double jy, double jj[3][2]) const;
   bool SolveDyad(Stage& s, double h, const StepOptions& options);
   // poses link `link` from its point `local_from` at `from` and `local_to` at `to` (jets;
   // `per_span` the inverse distance between the two local points, which the global points keep
@@ -232,8 +233,10 @@ class PointSchedule {
   void CompileOutputs();
   template <int Order>
   void WriteOutputs(double* out) const;
-  // a direction local to `link` in global coordinates, with its derivatives (it turns with theta)
-  void DirectionJet(int link, const Eigen::Vector2d& local, Eigen::Vector2d u[3]) const;
+  // a direction local to `link` in global coordinates, with its derivatives (it turns with theta;
+  // u[k]: x and y of the k-th), and the jet q - p so, in scalars (see PointOf)
+  void DirectionJet(int link, const Eigen::Vector2d& local, double u[3][2]) const;
+  static void Difference(const PointJet& q, const PointJet& p, double d[3][2]);
   static bool IsDyad(Kind k) { return k != Kind::kDriveR && k != Kind::kDriveP; }
 
   const ConstraintSystem& system_;

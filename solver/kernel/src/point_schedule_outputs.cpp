@@ -132,8 +132,8 @@ void PointSchedule::OutputDerivatives(int order, double* out) const {
   }
 }
 
-// One case per output kind, in the order and with the conventions of ConstraintSystem::Output.
 // (Order a template argument: the columns written per value are fixed in the loop.)
+// long: one case per output kind, in the order and with the conventions of ConstraintSystem::Output
 template <int Order>
 [[gnu::flatten]] void PointSchedule::WriteOutputs(double* out) const {
   using namespace point_outputs;

@@ -403,7 +403,10 @@ PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
   std::vector<size_t> order;
   for (size_t i = 0; i < placed.size(); ++i)
     if (placed[i]) order.push_back(i);
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return placed[a]->error < placed[b]->error; });
+  // exact fits in closed form (errors at roundoff) keep the atlas's order, nearest first: their
+  // errors' order is roundoff, which any change of the kernel's arithmetic reshuffles
+  const auto rank_placed = [&](size_t i) { return placed[i]->error < kExactFit * scale ? 0.0 : placed[i]->error; };
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return rank_placed(a) < rank_placed(b); });
   // the best `top` polished through the mechanism; where some repeat a better design, the next
   // ones too (twice as many as are missing, to need few rounds), until `top` distinct designs
   const size_t top = static_cast<size_t>(request.top);

@@ -372,24 +372,13 @@ void PointSchedule::DyadDerivatives(const Stage& s, const DyadRows& d, double jx
   PrepareDyad(s, d);
   // (in scalars, as NewtonDyad)
   const Eigen::Vector2d* before = s.j[read_].p;
-  const double h2 = 0.5 * h * h;
-  double px = before[0].x() + h * before[1].x() + h2 * before[2].x(), py = before[0].y() + h * before[1].y() + h2 * before[2].y();
-  if (h_before_ != 0.0) {
-    // The quintic through both the last two states' J, J' and J'' (Hermite; the other buffer
-    // holds the state before, at -H): the prediction's error drops from O(h^3) to O(h^6), about
-    // 3e-13 L times J's 6th derivative at 1 degree, and Newton's first update lands at roundoff
-    // (see NewtonDyad). With t = -H: p(t) = J + J' t + J'' t^2 / 2 + u (t/H)^3 + v (t/H)^4 +
-    // w (t/H)^5 matches the earlier J, J' H and J'' H^2 where
-    //   -u + v - w = e0,  3u - 4v + 5w = e1,  -6u + 12v - 20w = e2.
-    const double hh = h_before_, r = h / hh;
+  const PredictionWeights& w = prediction_;
+  double px = before[0].x() + w.j1 * before[1].x() + w.j2 * before[2].x();
+  double py = before[0].y() + w.j1 * before[1].y() + w.j2 * before[2].y();
+  if (w.quintic) {  // (see PredictionWeights)
     const Eigen::Vector2d* earlier = s.j[read_ ^ 1].p;
-    auto higher = [&](double j0, double j1, double j2, double m0, double m1, double m2) {
-      const double e0 = m0 - j0 + hh * (j1 - 0.5 * hh * j2), e1 = hh * (m1 - j1 + hh * j2), e2 = hh * hh * (m2 - j2);
-      const double w = -0.5 * (e2 + 6.0 * e1 + 12.0 * e0), v = 2.0 * w - e1 - 3.0 * e0, u = w - e1 - 4.0 * e0;
-      return r * r * r * (u + r * (v + r * w));
-    };
-    px += higher(before[0].x(), before[1].x(), before[2].x(), earlier[0].x(), earlier[1].x(), earlier[2].x());
-    py += higher(before[0].y(), before[1].y(), before[2].y(), earlier[0].y(), earlier[1].y(), earlier[2].y());
+    px += w.m0 * (earlier[0].x() - before[0].x()) + w.m1 * (earlier[1].x() - before[1].x()) + w.m2 * (earlier[2].x() - before[2].x());
+    py += w.m0 * (earlier[0].y() - before[0].y()) + w.m1 * (earlier[1].y() - before[1].y()) + w.m2 * (earlier[2].y() - before[2].y());
   }
   double jx = px, jy = py;
   const int it = NewtonDyad(s, d, jx, jy, options);
@@ -472,8 +461,29 @@ void PointSchedule::Load(double input, const Eigen::VectorXd& q, const Eigen::Ma
   before_ = now_;
 }
 
+void PointSchedule::PredictionWeights::For(double h, double h_before) {
+  j1 = h;
+  j2 = 0.5 * h * h;
+  quintic = h_before != 0.0;
+  if (!quintic) return;
+  // The quintic p(t) = J + J' t + J'' t^2 / 2 + u (t/H)^3 + v (t/H)^4 + w (t/H)^5 through the
+  // earlier J, J' and J'' at t = -H (H = h_before) has, with e0 = M - J + H J' - H^2 J'' / 2,
+  // e1 = H (M' - J') + H^2 J'', e2 = H^2 (M'' - J''):  -u + v - w = e0, 3u - 4v + 5w = e1,
+  // -6u + 12v - 20w = e2, so at r = h / H
+  //   p(h) - (J + J' h + J'' h^2 / 2) = -r^3 (e0 (10 + 15r + 6r^2) + e1 (4 + 7r + 3r^2) + e2 (1 + r)^2 / 2),
+  // written here as weights of J', J'' and of the differences M - J, M' - J', M'' - J''.
+  const double hh = h_before, r = h / hh, r3 = r * r * r;
+  const double a = 10.0 + r * (15.0 + 6.0 * r), b = 4.0 + r * (7.0 + 3.0 * r), c = 0.5 * (1.0 + r) * (1.0 + r);
+  m0 = -r3 * a;
+  m1 = -r3 * b * hh;
+  m2 = -r3 * c * hh * hh;
+  j1 += m0 * hh;
+  j2 -= r3 * hh * hh * (b - 0.5 * a);
+}
+
 bool PointSchedule::Step(double input, const StepOptions& options) {
   const double h = input - input_;
+  prediction_.For(h, h_before_);
   const int next = (at_ + 1) % kHistory;
   before_ = now_;  // the state stepped from; the next slot is written stage by stage
   now_ = states_[next].data();

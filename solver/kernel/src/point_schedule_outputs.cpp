@@ -30,6 +30,9 @@ ScalarJet DotJet(const VectorJet& a, const VectorJet& b) {
 ScalarJet CrossJet(const VectorJet& a, const VectorJet& b) {
   return {Cross(a[0], b[0]), Cross(a[1], b[0]) + Cross(a[0], b[1]), Cross(a[2], b[0]) + 2.0 * Cross(a[1], b[1]) + Cross(a[0], b[2])};
 }
+// the same with b at rest (a direction on the frame: no derivatives)
+ScalarJet DotJet(const VectorJet& a, const double b[2]) { return {Dot(a[0], b), Dot(a[1], b), Dot(a[2], b)}; }
+ScalarJet CrossJet(const VectorJet& a, const double b[2]) { return {Cross(a[0], b), Cross(a[1], b), Cross(a[2], b)}; }
 // atan2(y, x) and its derivatives: theta' = (x y' - y x') / r^2, differentiated once more
 ScalarJet Atan2Jet(const ScalarJet& y, const ScalarJet& x) {
   const double per_r2 = 1.0 / (x.v * x.v + y.v * y.v);
@@ -153,8 +156,13 @@ template <int Order>
         }
         // the displacement along link_a's axis: u . (pb - pa)
         VectorJet u, d;
-        DirectionJet(plan.axis_link, plan.axis, u);
         Difference(GlobalPoint(plan.link_q, plan.q), GlobalPoint(plan.link_p, plan.p), d);
+        if (plan.axis_link == frame_) {
+          const double axis[2] = {plan.axis.x(), plan.axis.y()};
+          write(DotJet(d, axis));
+          break;
+        }
+        DirectionJet(plan.axis_link, plan.axis, u);
         write(DotJet(u, d));
         break;
       }
@@ -191,6 +199,11 @@ template <int Order>
         // by +90 deg)
         VectorJet c, v;
         DirectionJet(plan.link_p, plan.q - plan.p, c);
+        if (plan.slide && plan.axis_link == frame_) {  // a slide on the frame
+          const double axis[2] = {plan.axis.x(), plan.axis.y()};
+          write(Atan2Jet(AbsJet(DotJet(c, axis)), AbsJet(CrossJet(c, axis))));
+          break;
+        }
         if (plan.slide) {
           DirectionJet(plan.axis_link, plan.axis, v);
         } else {

@@ -256,7 +256,7 @@ class PointSchedule {
   int frame_ = -1;
   int read_ = 0, write_ = 0;  // the stages' buffers (Stage::j) of the solved state and of the step
   // the input step that led to the solved state when the stages' other buffers hold the state
-  // before it (the dyads' 3rd-order prediction); 0 when they do not (after Load, a refused step)
+  // before it (the dyads' quintic prediction); 0 when they do not (after Load, a refused step)
   double h_before_ = 0.0;
   // A dyad's prediction of J at the step's input, the same weights for every dyad and for x and
   // y: J + j1 J' + j2 J'' (2nd order), and with the state before (quintic, when h_before_ is not

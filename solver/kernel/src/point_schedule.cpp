@@ -96,6 +96,7 @@ bool PointSchedule::AddDyadStage(std::vector<bool>& posed, std::vector<bool>& us
       if (kb < 0 || !(shortest >= kShortestDyadLink * length_scale_)) continue;
       s.per_length_a = 1.0 / s.length_a;
       s.per_length_b = s.kind == Kind::kDyadRR ? 1.0 / s.length_b : 0.0;
+      s.landing2 = kLanding * shortest * shortest;
       used[k] = used[ka] = used[kb] = true;
       posed[a] = posed[b] = true;
       stages_.push_back(s);
@@ -167,10 +168,10 @@ bool PointSchedule::PoseByTwoPoints(int link, const Eigen::Vector2d& local_from,
   const double d1x = to.p[1].x() - from.p[1].x(), d1y = to.p[1].y() - from.p[1].y();
   const double d2x = to.p[2].x() - from.p[2].x(), d2y = to.p[2].y() - from.p[2].y();
   const double lx = local_to.x() - local_from.x(), ly = local_to.y() - local_from.y();
-  // |d| is the span (a dyad's equation, within the tolerance): 1 / |d|^2 and 1 / (|d| span) by
-  // one Newton step for the reciprocal and for the reciprocal square root from the span's, whose
-  // error is the square of d's relative misfit (within 2e-11 at the tolerance and the shortest
-  // link, 1e-16 as Newton lands): roundoff, without a division or a square root after Newton.
+  // |d| is the span (a dyad's equation, solved to roundoff: kLanding): 1 / |d|^2 and
+  // 1 / (|d| span) by one Newton step for the reciprocal and for the reciprocal square root from
+  // the span's, whose error is the square of d's relative misfit (1e-31): roundoff, without a
+  // division or a square root after Newton.
   const double per_span2 = per_span * per_span, misfit = (dx * dx + dy * dy) * per_span2;
   const double per_r2 = per_span2 * (2.0 - misfit), per_norms = per_span2 * (1.5 - 0.5 * misfit);
   // theta = atan2(d) - atan2(dl): its cos and sin without trigonometry, d's direction turned back
@@ -239,8 +240,7 @@ struct PointSchedule::DyadRows {
   double block_theta[3];
   double bc, bs;  // cos and sin of the block's angle
   // at the solved J: the Jacobian's rows (unnormalised: J - A, and J - B or n), its determinant
-  Eigen::Vector2d r1, r2;
-  double det = 0.0;
+  double r1x = 0.0, r1y = 0.0, r2x = 0.0, r2y = 0.0, det = 0.0;
 };
 
 void PointSchedule::PrepareDyad(const Stage& s, DyadRows& d) const {
@@ -283,62 +283,61 @@ void PointSchedule::PrepareDyad(const Stage& s, DyadRows& d) const {
 }
 
 int PointSchedule::NewtonDyad(const Stage& s, DyadRows& d, double& jx, double& jy, const StepOptions& options) const {
-  const double tolerance = options.tolerance * length_scale_;
   const bool rr = s.kind == Kind::kDyadRR;
-  // The rows scaled to r1 . dj = g1, r2 . dj = g2 (RR: [r1 / a; r2 / b], RP: [r1 / a; n]); the
-  // residuals (|r1|^2 - a^2) / 2a = -g1 / a and (RR) -g2 / b, (RP) -g2, within the tolerance.
+  // The rows scaled to r1 . dj = g1, r2 . dj = g2 (RR: [r1 / a; r2 / b], RP: [r1 / a; n]), with
+  // g1 = (a^2 - |r1|^2) / 2 and (RR) (b^2 - |r2|^2) / 2, (RP) n . (X - J).
   // In scalars: the points come from PointOf's scalars, and 2-vectors built from them would go
   // through the stack (see PointOf).
   const double a2 = s.length_a * s.length_a, b2 = s.length_b * s.length_b;
-  const double tolerance_1 = tolerance * s.length_a, tolerance_2 = rr ? tolerance * s.length_b : tolerance;
   const double ax = d.a.p[0].x(), ay = d.a.p[0].y();
   // RR: B; RP: the line's normal and the point X
   const double bx = rr ? d.b.p[0].x() : d.x.p[0].x(), by = rr ? d.b.p[0].y() : d.x.p[0].y();
   const double nx = rr ? 0.0 : d.n[0].x(), ny = rr ? 0.0 : d.n[0].y();
-  // An update from residuals within the reach (kQuadraticReach times the squared gauge) lands at
-  // roundoff: the point it lands on is returned once its own residuals are checked within the
-  // tolerance. A close prediction takes one update and one check.
-  const double reach = kQuadraticReach * length_scale_;
-  const double reach_1 = reach * s.length_a, reach_2 = rr ? reach * s.length_b : reach;
-  bool landed = false;
-  double r1x = 0.0, r1y = 0.0, r2x = nx, r2y = ny, det = 0.0;
-  for (int it = 0;; ++it) {
-    r1x = jx - ax;
-    r1y = jy - ay;
-    const double r1_2 = r1x * r1x + r1y * r1y, g1 = 0.5 * (a2 - r1_2);
-    double g2, norm2 = r1_2;  // |r1|^2 |r2|^2, the rows' (n: a unit vector)
+  // (and within the tolerance the caller asks for, should it be below roundoff)
+  const double landing2 = std::min(s.landing2, 2.0 * options.tolerance * length_scale_ * (rr ? std::min(s.length_a, s.length_b) : s.length_a));
+  double r2x = nx, r2y = ny;
+  for (int it = 0; it < options.max_iterations; ++it) {
+    const double r1x = jx - ax, r1y = jy - ay;
+    const double g1 = 0.5 * (a2 - (r1x * r1x + r1y * r1y));
+    double g2;
     if (rr) {
       r2x = jx - bx;
       r2y = jy - by;
-      const double r2_2 = r2x * r2x + r2y * r2y;
-      g2 = 0.5 * (b2 - r2_2);
-      norm2 *= r2_2;
+      g2 = 0.5 * (b2 - (r2x * r2x + r2y * r2y));
     } else {
       g2 = nx * (bx - jx) + ny * (by - jy);
     }
-    det = r1x * r2y - r1y * r2x;
-    if (!std::isfinite(g1 + g2)) return -1;  // (either not finite, or both beyond any length)
-    if (landed && std::abs(g1) <= tolerance_1 && std::abs(g2) <= tolerance_2) {
-      d.r1 = Eigen::Vector2d(r1x, r1y);
-      d.r2 = Eigen::Vector2d(r2x, r2y);
-      d.det = det;
-      return it;
-    }
-    if (it == options.max_iterations || det == 0.0) return -1;
+    const double det = r1x * r2y - r1y * r2x;
+    if (!std::isfinite(g1 + g2) || det == 0.0) return -1;  // (g: either not finite, or both beyond any length)
     const double per_det = 1.0 / det;
-    jx += per_det * (g1 * r2y - g2 * r1y);
-    jy += per_det * (r1x * g2 - r2x * g1);
-    // within the reach: |g| <= reach gauge^2, the gauge^2 det^2 / norm2
-    const double det2 = det * det;
-    landed = std::abs(g1) * norm2 <= reach_1 * det2 && std::abs(g2) * norm2 <= reach_2 * det2;
+    const double dx = per_det * (g1 * r2y - g2 * r1y), dy = per_det * (r1x * g2 - r2x * g1);
+    jx += dx;
+    jy += dy;
+    // The update's own residuals, exactly: a circle's row is -|d|^2 / 2 after it (its square
+    // term), a line's 0. Within kLanding of a link's length squared, that is roundoff, as
+    // small as evaluating the residuals could show: J is returned, with its rows and
+    // determinant (for the derivatives and the guards), without evaluating them once more.
+    if (dx * dx + dy * dy <= landing2) {
+      d.r1x = jx - ax;
+      d.r1y = jy - ay;
+      if (rr) {
+        r2x = jx - bx;
+        r2y = jy - by;
+      }
+      d.r2x = r2x;
+      d.r2y = r2y;
+      d.det = d.r1x * r2y - d.r1y * r2x;
+      return it + 1;
+    }
   }
+  return -1;
 }
 
 void PointSchedule::DyadDerivatives(const Stage& s, const DyadRows& d, double jx, double jy, double jj[3][2]) const {
   // r1 . J' = r1 . A', r2 . J' = rhs (RR: r2 . B'; RP: n . X' - n' . (J - X)), and so for J''
   // (the rows differentiated twice); in scalars, as NewtonDyad
   const double per_det = 1.0 / d.det;
-  const double r1x = d.r1.x(), r1y = d.r1.y(), r2x = d.r2.x(), r2y = d.r2.y();
+  const double r1x = d.r1x, r1y = d.r1y, r2x = d.r2x, r2y = d.r2y;
   jj[0][0] = jx;
   jj[0][1] = jy;
   auto solve = [&](double g1, double g2, double* to) {
@@ -383,8 +382,8 @@ void PointSchedule::DyadDerivatives(const Stage& s, const DyadRows& d, double jx
   double jx = px, jy = py;
   const int it = NewtonDyad(s, d, jx, jy, options);
   if (it < 0) return false;
-  const double r1_2 = d.r1.x() * d.r1.x() + d.r1.y() * d.r1.y();
-  const StageGauge gauge{d.det, s.kind == Kind::kDyadRR ? r1_2 * (d.r2.x() * d.r2.x() + d.r2.y() * d.r2.y()) : r1_2};
+  const double r1_2 = d.r1x * d.r1x + d.r1y * d.r1y;
+  const StageGauge gauge{d.det, s.kind == Kind::kDyadRR ? r1_2 * (d.r2x * d.r2x + d.r2y * d.r2y) : r1_2};
   const int sign = d.det > 0.0 ? 1 : -1;
   if (!gauge.Above(std::max(kSingularGauge, options.min_gauge))) return false;
   if (s.det_sign[read_] != 0 && sign != s.det_sign[read_]) return false;

@@ -10,6 +10,7 @@
 #include <emmintrin.h>
 #endif
 
+#include <limits>
 #include <vector>
 
 namespace koppel::point_schedule_parts {
@@ -36,12 +37,12 @@ inline void StorePair(double* to, double first, double second) {
 // A stage's 2 x 2 Jacobian below this normalised determinant (the sine of the angle between its
 // rows) counts as singular: the general kernel takes over there.
 inline constexpr double kSingularGauge = 1e-12;
-// Newton's reach (NewtonDyad): an update from residuals within this times L (times a link's
-// length for a circle's row) times the squared gauge lands at roundoff. The next error, of the
-// order of the update (residual / gauge) squared over a link's length and the gauge, is then
-// 1e-16 L times the gauge: the point it lands on is returned once its own residuals are checked
-// within the tolerance, and the derivatives carry roundoff only (1 / det times the error).
-inline constexpr double kQuadraticReach = 1e-8;
+// Newton's landing (NewtonDyad): an update whose squared length is within this times a link's
+// length squared leaves residuals of at most this over 2 times the length squared (a circle's row
+// after an update is exactly -|update|^2 / 2, a line's 0), 2 ulp: roundoff, as small as
+// evaluating the residuals could show. Its point is returned without another evaluation, and the
+// derivatives there carry roundoff only.
+inline constexpr double kLanding = 4.0 * std::numeric_limits<double>::epsilon();
 // Dyad links shorter than this times L are left to the general kernel (see AddDyadStage).
 inline constexpr double kShortestDyadLink = 1e-2;
 

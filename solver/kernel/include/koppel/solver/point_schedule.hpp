@@ -54,7 +54,8 @@ class PointSchedule {
   // position lies between: the general kernel locates and crosses it), the correction of a predicted joint point exceeds
   // max_correction * L, or its first derivative moved from the predicted one by more than
   // max_tangent_change * (1 + its size / L): the step's guards of continuation.hpp, which keep a
-  // walk on its branch. Converged: every residual within tolerance * L.
+  // walk on its branch. Converged: the last update's residuals (a circle's row is exactly
+  // -|update|^2 / 2 after it) at roundoff (kLanding) and within tolerance * L.
   struct StepOptions {
     double tolerance = 1e-13;
     int max_iterations = 8;
@@ -150,6 +151,7 @@ class PointSchedule {
     Eigen::Vector2d b_at_anchor, anchor_b_point;  // RR: B on b, on anchor_b; RP: the slide's point on b and on the guide
     double length_a = 0.0, length_b = 0.0;        // |J - A| (on a), |J - B| (on b)
     double per_length_a = 0.0, per_length_b = 0.0;  // their inverses (RR, RP: the step multiplies)
+    double landing2 = 0.0;  // Newton's last update squared, at most (kLanding times the shorter link's length squared)
     bool block_is_guide_side = false;             // RP: the block is the P joint's link_a
     // RP on a guide at rest (the frame): the block does not turn, so its line's normal and the
     // point X that J keeps the line's offset from are constants, without derivatives

@@ -460,26 +460,6 @@ void PointSchedule::Load(double input, const Eigen::VectorXd& q, const Eigen::Ma
   before_ = now_;
 }
 
-void PointSchedule::PredictionWeights::For(double h, double h_before) {
-  j1 = h;
-  j2 = 0.5 * h * h;
-  quintic = h_before != 0.0;
-  if (!quintic) return;
-  // The quintic p(t) = J + J' t + J'' t^2 / 2 + u (t/H)^3 + v (t/H)^4 + w (t/H)^5 through the
-  // earlier J, J' and J'' at t = -H (H = h_before) has, with e0 = M - J + H J' - H^2 J'' / 2,
-  // e1 = H (M' - J') + H^2 J'', e2 = H^2 (M'' - J''):  -u + v - w = e0, 3u - 4v + 5w = e1,
-  // -6u + 12v - 20w = e2, so at r = h / H
-  //   p(h) - (J + J' h + J'' h^2 / 2) = -r^3 (e0 (10 + 15r + 6r^2) + e1 (4 + 7r + 3r^2) + e2 (1 + r)^2 / 2),
-  // written here as weights of J', J'' and of the differences M - J, M' - J', M'' - J''.
-  const double hh = h_before, r = h / hh, r3 = r * r * r;
-  const double a = 10.0 + r * (15.0 + 6.0 * r), b = 4.0 + r * (7.0 + 3.0 * r), c = 0.5 * (1.0 + r) * (1.0 + r);
-  m0 = -r3 * a;
-  m1 = -r3 * b * hh;
-  m2 = -r3 * c * hh * hh;
-  j1 += m0 * hh;
-  j2 -= r3 * hh * hh * (b - 0.5 * a);
-}
-
 bool PointSchedule::Step(double input, const StepOptions& options) {
   const double h = input - input_;
   prediction_.For(h, h_before_);

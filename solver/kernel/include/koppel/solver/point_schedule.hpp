@@ -23,6 +23,7 @@
 #pragma once
 
 #include "koppel/core/mechanism.hpp"
+#include "koppel/solver/prediction_weights.hpp"
 
 #include <Eigen/Core>
 
@@ -260,16 +261,7 @@ class PointSchedule {
   // the input step that led to the solved state when the stages' other buffers hold the state
   // before it (the dyads' quintic prediction); 0 when they do not (after Load, a refused step)
   double h_before_ = 0.0;
-  // A dyad's prediction of J at the step's input, the same weights for every dyad and for x and
-  // y: J + j1 J' + j2 J'' (2nd order), and with the state before (quintic, when h_before_ is not
-  // 0) + m0 (M - J) + m1 (M' - J') + m2 (M'' - J''), M the earlier J: the quintic through both
-  // states' J, J' and J'' (Hermite), whose error is O(h^6), about 3e-13 L times J's 6th
-  // derivative at 1 degree, so that Newton's first update lands at roundoff (NewtonDyad).
-  struct PredictionWeights {
-    double j1 = 0.0, j2 = 0.0, m0 = 0.0, m1 = 0.0, m2 = 0.0;
-    bool quintic = false;
-    void For(double h, double h_before);
-  };
+  // the dyads' prediction of J at the step's input
   PredictionWeights prediction_;
 };
 

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -77,6 +78,38 @@ TEST_CASE("prediction weights take the 2nd order without a state before or for a
     // derivative at 0 the same prediction (the earlier state, where they differ, is not used)
     CHECK(std::abs(Predict(w, quadratic, h_before) - quadratic.At(0, h)) <= 1e-15);
     CHECK(std::abs(Predict(w, quintic, h_before) - quadratic.At(0, h)) <= 1e-15);
+  }
+}
+
+TEST_CASE("prediction weights are kept for a step within 1e-12 of theirs and computed anew for another", "[prediction]") {
+  Poly p;
+  const double c[6] = {0.3, -0.9, 0.4, 0.7, -0.2, 0.5};
+  std::copy(c, c + 6, p.c);
+  const double h = 0.0175, drift = 1.0 + 1e-13;  // a walk's steps of 1 degree, to roundoff
+  PredictionWeights kept;
+  kept.For(h, h);
+  kept.For(h * drift, h / drift);
+  PredictionWeights fresh;
+  fresh.For(h, h);
+  CHECK(kept.j1 == fresh.j1);  // kept, not computed anew
+  CHECK(kept.m0 == fresh.m0);
+  // reference: the polynomial at the new steps; the kept weights miss it by the states' shift
+  // (1e-13 h) times |p'| (below 2 here) times the weights (1 - m0 = 32 at equal steps), and
+  // their roundoff
+  CHECK(std::abs(Predict(kept, p, h / drift) - p.At(0, h * drift)) <= 32 * 1e-13 * h * 2 + 1e-15);
+  kept.For(h * drift * drift, h);  // the change measured from the step they were computed for
+  CHECK(kept.j1 == fresh.j1);
+  // a step that differs (the walk's last, shortened step; a turn back) gets its own weights
+  for (const auto& [next, before] : {std::pair{0.6 * h, h}, std::pair{-h, h}, std::pair{h, 0.0}, std::pair{h, 0.5 * h}}) {
+    kept.For(next, before);
+    PredictionWeights again;
+    again.For(next, before);
+    CHECK(kept.quintic == again.quintic);
+    CHECK(kept.j1 == again.j1);
+    CHECK(kept.j2 == again.j2);
+    CHECK(kept.m0 == again.m0);
+    CHECK(kept.m1 == again.m1);
+    CHECK(kept.m2 == again.m2);
   }
 }
 

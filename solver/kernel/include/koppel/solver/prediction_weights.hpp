@@ -12,15 +12,28 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 namespace koppel {
 
+//
+// A walk steps by the same h again and again (to roundoff: its inputs are start + i h, a step's
+// difference off by 1e-13 of it at 1 degree): the weights are kept while h and h_before agree
+// with those they were computed for to kKeep (relative). The prediction then moves by about
+// kKeep h |J'| times the weights (1 - m0 <= 1e4 at the quintic's reach, 32 at equal steps):
+// at most 2e-10 L at 1 degree, within what Newton's first update removes to roundoff
+// (kLanding: an update of up to 3e-8 of a link).
 struct PredictionWeights {
   static constexpr double kQuinticReach = 4.0;
+  static constexpr double kKeep = 1e-12;
   double j1 = 0.0, j2 = 0.0, m0 = 0.0, m1 = 0.0, m2 = 0.0;
   bool quintic = false;
-  // (inline: every step of a walk computes them, before its first dyad)
+  // (inline: every step of a walk asks, before its first dyad)
   void For(double h, double h_before) {
+    if (std::abs(h - h_) <= kKeep * std::abs(h) && std::abs(h_before - h_before_) <= kKeep * std::abs(h_before)) return;
+    h_ = h;
+    h_before_ = h_before;
+    m0 = m1 = m2 = 0.0;
     j1 = h;
     j2 = 0.5 * h * h;
     quintic = h_before != 0.0 && std::abs(h) <= kQuinticReach * std::abs(h_before);
@@ -39,6 +52,10 @@ struct PredictionWeights {
     j1 += m0 * hh;
     j2 -= r3 * hh * hh * (b - 0.5 * a);
   }
+
+ private:
+  // the steps the weights were computed for (none yet: NaN compares false)
+  double h_ = std::numeric_limits<double>::quiet_NaN(), h_before_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace koppel

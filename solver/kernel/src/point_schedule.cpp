@@ -26,6 +26,10 @@ PointSchedule::PointSchedule(const ConstraintSystem& system)
     why_not_ = "the mechanism is not a square system with a frame";
     return;
   }
+  if (!system.problems().empty()) {  // an output it cannot evaluate (a file's reader refuses such)
+    why_not_ = system.problems().front();
+    return;
+  }
   std::vector<bool> posed(n_links, false), used(m.joints.size(), false);
   posed[m.FrameLink()] = true;
   while (AddDriveStage(posed, used) || AddDyadStage(posed, used) || AddSlideDyadStage(posed, used)) {

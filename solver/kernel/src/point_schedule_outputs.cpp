@@ -32,7 +32,6 @@ ScalarJet CrossJet(const VectorJet& a, const VectorJet& b) {
 }
 // the same with b at rest (a direction on the frame: no derivatives)
 ScalarJet DotJet(const VectorJet& a, const double b[2]) { return {Dot(a[0], b), Dot(a[1], b), Dot(a[2], b)}; }
-ScalarJet CrossJet(const VectorJet& a, const double b[2]) { return {Cross(a[0], b), Cross(a[1], b), Cross(a[2], b)}; }
 // atan2(y, x) and its derivatives: theta' = (x y' - y x') / r^2, differentiated once more
 ScalarJet Atan2Jet(const ScalarJet& y, const ScalarJet& x) {
   const double per_r2 = 1.0 / (x.v * x.v + y.v * y.v);
@@ -103,7 +102,7 @@ void PointSchedule::CompileOutputs() {
         plan.link_q = g.coupler_to.link;  // the coupler, as link_p (ResolveTransmission)
         plan.q = local(g.coupler_to);
         plan.slide = g.slide_joint >= 0;
-        if (plan.slide) {  // the slide's direction turns with its guide
+        if (plan.slide) {  // (on the frame: its direction at rest)
           const Joint& j = m.joints[g.slide_joint];
           plan.axis_link = j.link_a;
           plan.axis = j.axis;
@@ -116,6 +115,20 @@ void PointSchedule::CompileOutputs() {
     }
     outputs_.push_back(plan);
   }
+}
+
+// mu between the coupler's line and the slide's (on the frame: ResolveTransmission): the angle
+// between them, atan2(cross, dot), turns with the coupler, so mu = atan2(|dot|, |cross|) =
+// +-theta + const, and its derivatives are the coupler's signed by the quadrant (the general
+// formula's (x y' - y x') / r^2 reduces to that exactly: dot' = theta' cross, cross' = -theta' dot).
+point_outputs::ScalarJet PointSchedule::SlideTransmission(const OutputPlan& plan) const {
+  const LinkJet& coupler = now_[plan.link_p];
+  const Eigen::Vector2d line = plan.q - plan.p;
+  const double cx = coupler.c * line.x() - coupler.s * line.y(), cy = coupler.s * line.x() + coupler.c * line.y();
+  const double dot = cx * plan.axis.x() + cy * plan.axis.y(), cross = cx * plan.axis.y() - cy * plan.axis.x();
+  // (as AbsJet: a negative value flips the derivatives, 0 does not)
+  const double sign = (dot < 0.0) == (cross < 0.0) ? 1.0 : -1.0;
+  return {std::atan2(std::abs(dot), std::abs(cross)), sign * coupler.theta[1], sign * coupler.theta[2]};
 }
 
 void PointSchedule::Difference(const PointJet& q, const PointJet& p, double d[3][2]) {
@@ -194,25 +207,18 @@ template <int Order>
         break;
       }
       case OutputKind::kTransmissionAngle: {
-        // the coupler's line (both points on the coupler: q - p turned with it), and the output
-        // point's direction of motion: along the slide, or about the pivot ((q - pivot) turned
-        // by +90 deg)
-        VectorJet c, v;
-        DirectionJet(plan.link_p, plan.q - plan.p, c);
-        if (plan.slide && plan.axis_link == frame_) {  // a slide on the frame
-          const double axis[2] = {plan.axis.x(), plan.axis.y()};
-          write(Atan2Jet(AbsJet(DotJet(c, axis)), AbsJet(CrossJet(c, axis))));
+        if (plan.slide) {
+          write(SlideTransmission(plan));
           break;
         }
-        if (plan.slide) {
-          DirectionJet(plan.axis_link, plan.axis, v);
-        } else {
-          VectorJet b;
-          Difference(GlobalPoint(plan.link_q, plan.q), GlobalPoint(plan.pivot_link, plan.pivot), b);
-          for (int k = 0; k < 3; ++k) {
-            v[k][0] = -b[k][1];
-            v[k][1] = b[k][0];
-          }
+        // the coupler's line (both points on the coupler: q - p turned with it), and the output
+        // point's direction of motion about the pivot: (q - pivot) turned by +90 deg
+        VectorJet c, b, v;
+        DirectionJet(plan.link_p, plan.q - plan.p, c);
+        Difference(GlobalPoint(plan.link_q, plan.q), GlobalPoint(plan.pivot_link, plan.pivot), b);
+        for (int k = 0; k < 3; ++k) {
+          v[k][0] = -b[k][1];
+          v[k][1] = b[k][0];
         }
         write(Atan2Jet(AbsJet(DotJet(c, v)), AbsJet(CrossJet(c, v))));
         break;

@@ -102,6 +102,21 @@ void CheckAgreement(const WalkResult& r, int steps) {
   CHECK(r.sign_products == 1);
 }
 
+// A four-bar with a block sliding on its rocker's line, pushed by a rod from the crank pin: an RP
+// dyad on a turning guide and the displacement of a slide that turns (the rod longer than A's
+// farthest distance from B0, 5: the rod never stands square to the line).
+Mechanism FourBarWithRockerSlider() {
+  Mechanism m = test::FourBar(1, 4, 3.5, 4, 2, 0.3, 1);
+  m.name = "four-bar with a slider on its rocker";
+  AddLink(m, "rod", {{"A", {0, 0}}, {"C", {6, 0}}});
+  AddLink(m, "block", {{"C", {0, 0}}});
+  Revolute(m, "A2", "crank", "rod", "A", "A");
+  Revolute(m, "C", "rod", "block");
+  Prismatic(m, "S", "rocker", "B0", "block", "C", {1, 0});
+  JointOutput(m, "s", "S");
+  return m;
+}
+
 }  // namespace
 
 TEST_CASE("the schedule compiles dyad mechanisms and names what it cannot compile", "[point_schedule]") {
@@ -114,8 +129,12 @@ TEST_CASE("the schedule compiles dyad mechanisms and names what it cannot compil
     INFO(m.name << ": " << schedule.why_not());
     CHECK(schedule.compiled());
   }
+  // a transmission angle the kernel cannot measure (its block slides on the rocker, not on the
+  // frame): built here without the file reader, which refuses it
+  Mechanism unmeasurable = FourBarWithRockerSlider();
+  TransmissionOutput(unmeasurable, "mu2", "rod", "C");
   // a redundant crank (more joint equations than coordinates)
-  for (const Mechanism& m : {test::RedundantParallelogram()}) {
+  for (const Mechanism& m : {test::RedundantParallelogram(), unmeasurable}) {
     PositionSolver solver(m);
     const PointSchedule schedule(solver.system());
     INFO(m.name << ": " << schedule.why_not());
@@ -132,7 +151,8 @@ TEST_CASE("seed mechanisms: the schedule's poses and transfer functions equal th
                              WithEveryOutputKind(test::FourBar(1, 2.5 * std::sqrt(3.0), 2.5 * std::sqrt(3.0), 4, 25.0 / 3, 0.3, 1),
                                                  "coupler", "K", "rocker", "B", "B"),
                              WithEveryOutputKind(test::WattSixBar(), "crank", "A", "link6", "D", "C"),
-                             WithEveryOutputKind(test::ProportionalLinkage(1.0, 0.5, 1.83), "slider", "D", "slot", "B0", "B0")}) {
+                             WithEveryOutputKind(test::ProportionalLinkage(1.0, 0.5, 1.83), "slider", "D", "slot", "B0", "B0"),
+                             FourBarWithRockerSlider()}) {
     INFO(m.name);
     // det J of the whole system and the product of the dyads' determinants change sign together
     CheckAgreement(WalkBoth(m, 720, step), 720);

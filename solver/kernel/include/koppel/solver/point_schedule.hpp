@@ -34,6 +34,9 @@
 namespace koppel {
 
 class ConstraintSystem;
+namespace point_outputs {
+struct ScalarJet;  // a scalar and its 1st and 2nd derivatives (point_schedule_outputs.cpp)
+}
 
 class PointSchedule {
  public:
@@ -218,8 +221,8 @@ class PointSchedule {
   // local coordinates, so that a step's outputs look nothing up in the mechanism.
   struct OutputPlan {
     OutputKind kind = OutputKind::kJoint;
-    // kJoint: a P joint (else R); kTransmissionAngle: the output link slides (else it turns
-    // about `pivot`)
+    // kJoint: a P joint (else R); kTransmissionAngle: the output link slides on the frame (else
+    // it turns about `pivot`)
     bool slide = false;
     // the points p and q: kJoint the joint's on link_a and link_b (R: only the links);
     // kLinkAngle: link_p; kPoint: p; kDistance, kDirection: p and q; kTransmissionAngle: the
@@ -234,6 +237,8 @@ class PointSchedule {
     double offset = 0.0;  // angle outputs: subtracted from the value
   };
   void CompileOutputs();
+  // a transmission angle whose output link slides on the frame (plan.slide), with its derivatives
+  point_outputs::ScalarJet SlideTransmission(const OutputPlan& plan) const;
   template <int Order>
   void WriteOutputs(double* out) const;
   // a direction local to `link` in global coordinates, with its derivatives (it turns with theta;

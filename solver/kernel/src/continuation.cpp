@@ -680,6 +680,10 @@ bool Continuation::OneCompiledStepTo(double target, double max_step) {
 
 WalkReport Continuation::AdvanceTo(double target, double max_step) {
   if (OneCompiledStepTo(target, max_step)) return Reached();  // the common case, without the walk's setup
+  return Walk(target, max_step);
+}
+
+WalkReport Continuation::Walk(double target, double max_step) {
   if (!started_) return Ended(WalkStatus::kFailed, "the walk was not started");
   if (!std::isfinite(target) || !(max_step > 0.0)) return Ended(WalkStatus::kFailed, "invalid target or step");
   if (at_limit_) {

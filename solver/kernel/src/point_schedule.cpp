@@ -216,9 +216,18 @@ double PointSchedule::AngleBeforeTurns(int link, double input) const {
   const double zero = mechanism_.drive.zero;
   if (s.kind == Kind::kDriveR) {
     const double turn = s.sign * (zero + input);
-    const double theta[3] = {Angle(s.base) + turn + 2.0 * kPi * before_[s.link].turns, base.theta[1] + s.sign, base.theta[2]};
     double st, ct;
     SinCos(turn, st, ct);  // the one trigonometric call of a step: the input's
+    if (s.base == frame_) {  // a crank on the frame (angle 0, at rest): the general case's terms that are 0 or 1
+      const double theta[3] = {turn + 2.0 * kPi * before_[s.link].turns, s.sign, 0.0};
+      PointJet where;
+      where.p[0] = s.base_point;
+      where.p[1].setZero();
+      where.p[2].setZero();
+      PoseByAngle(s.link, theta, ct, st, s.link_point, where);
+      return;
+    }
+    const double theta[3] = {Angle(s.base) + turn + 2.0 * kPi * before_[s.link].turns, base.theta[1] + s.sign, base.theta[2]};
     PoseByAngle(s.link, theta, base.c * ct - base.s * st, base.s * ct + base.c * st, s.link_point, GlobalPoint(s.base, s.base_point));
     return;
   }

@@ -143,6 +143,9 @@ class Continuation {
   // AdvanceTo's common case: `target` within one step of a regular pose, reached by the
   // compiled step (which never crosses a sign change of det J); false: the walk's full loop.
   bool OneCompiledStepTo(double target, double max_step);
+  // AdvanceTo's walk: steps, halved and doubled, across singular positions, to the target or to
+  // where it ends (out of line: AdvanceTo's common case saves no registers for it)
+  [[gnu::noinline]] WalkReport Walk(double target, double max_step);
   // After compiled steps: the general kernel's factorisation, sign and gauge at the current pose.
   void EnsureFactorized();
   // Keeps the current pose as the last regular one when `regular`, else forgets the last one (the

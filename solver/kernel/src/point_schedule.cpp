@@ -40,11 +40,8 @@ PointSchedule::PointSchedule(const ConstraintSystem& system)
   for (size_t k = 0; k < used.size() && why_not_.empty(); ++k) {
     if (!used[k]) why_not_ = "joint '" + m.joints[k].name + "' is not part of a drive or a dyad";
   }
-  if (!why_not_.empty()) {
-    stages_.clear();
-    return;
-  }
-  CompileOutputs();
+  if (why_not_.empty()) CompileOutputs();
+  if (!why_not_.empty()) stages_.clear();
 }
 
 bool PointSchedule::AddDriveStage(std::vector<bool>& posed, std::vector<bool>& used) {

@@ -106,6 +106,8 @@ void PointSchedule::CompileOutputs() {
           const Joint& j = m.joints[g.slide_joint];
           plan.axis_link = j.link_a;
           plan.axis = j.axis;
+          // SlideTransmission's premise, which ResolveTransmission holds to
+          if (plan.axis_link != frame_) why_not_ = "output '" + output.name + "': a transmission angle on a slide off the frame";
         } else {
           plan.pivot_link = g.pivot.link;
           plan.pivot = local(g.pivot);

@@ -16,7 +16,6 @@
 
 namespace koppel {
 
-//
 // A walk steps by the same h again and again (to roundoff: its inputs are start + i h, a step's
 // difference off by 1e-13 of it at 1 degree): the weights are kept while h and h_before agree
 // with those they were computed for to kKeep (relative). The prediction then moves by about

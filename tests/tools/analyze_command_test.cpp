@@ -201,3 +201,87 @@ TEST_CASE("analyze leaves a card's formulas to catalog check, and maps muparser 
 }
 
 }  // namespace koppel::analyze_command_test
+
+namespace koppel::analyze_command_test {
+namespace {
+
+// The rocker angle [deg] of the four-bar A0 = 0, B0 = (d, 0) at crank angle phi [deg] on the
+// branch with B left (side +1) or right (-1) of A -> B0: the circle intersection, far from flat
+// at the rows it is used for (an independent reference).
+double FourBarPsi(double a, double b, double c, double d, double phi_deg, int side) {
+  const double phi = phi_deg * M_PI / 180, ax = a * std::cos(phi), ay = a * std::sin(phi);
+  const double rx = d - ax, ry = -ay, rho = std::hypot(rx, ry);
+  const double x = (b * b - c * c + rho * rho) / (2 * rho), h = side * std::sqrt(b * b - x * x);
+  const double bx = ax + (x * rx - h * ry) / rho, by = ay + (x * ry + h * rx) / rho;
+  double psi = std::atan2(by, bx - d) * 180 / M_PI;
+  return psi < 0 ? psi + 360 : psi;
+}
+
+double DegreeDifference(double x, double y) { return std::remainder(x - y, 360.0); }
+
+}  // namespace
+
+// A linkage a hair from its change point passes the other branch at 3.5e-4 rad: a step of 45 deg
+// jumped onto it and called the jump a branch point (rows off by up to pi, exit 0).
+TEST_CASE("a crank-rocker Grashof by 5e-8 turns on its own branch at every step, without a branch point", "[cli]") {
+  const std::string file = test::TestDataPath("near-change-point.yaml");
+  for (const char* step : {"45", "7", "1", "90"}) {
+    const test::RunResult r = test::RunKoppel("analyze " + file + " --step " + step + " --order 0");
+    INFO("--step " << step << "\n" << r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.err.find("branch point") == std::string::npos);
+    const auto lines = Lines(r.out);
+    REQUIRE(lines.size() >= 3);
+    // the assembly's branch: B above A -> B0 at the hint (phi = 90 deg, the crank at 93 deg)
+    for (size_t i = 1; i < lines.size(); ++i) {
+      const auto row = Numbers(lines[i]);
+      INFO("phi = " << row[0]);
+      CHECK(std::abs(DegreeDifference(row[1], FourBarPsi(1, 2.00000005, 3, 4, row[0] + 3, 1))) < 1e-7);
+    }
+    if (Numbers(lines.back())[0] == 360) CHECK(Numbers(lines.back())[1] == Approx(Numbers(lines[1])[1]).margin(1e-9));  // psi(360) = psi(0)
+  }
+  // the issue's figure: psi(270) on the mechanism's branch
+  const test::RunResult r = test::RunKoppel("analyze " + file + " --step 45 --order 0 --from 270 --to 270");
+  REQUIRE(r.exit_code == 0);
+  CHECK(Numbers(Lines(r.out).at(1))[1] == Approx(166.241394675).margin(1e-8));
+}
+
+TEST_CASE("a four-bar 1.25e-5 from its folded change point: no false branch point, no false gap with --at-branch-point stop",
+          "[cli]") {
+  const std::string file = test::TestDataPath("near-change-point-folded.yaml");
+  const test::RunResult r = test::RunKoppel("analyze " + file + " --step 45 --order 0 --at-branch-point stop");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find("branch point") == std::string::npos);
+  const auto lines = Lines(r.out);
+  REQUIRE(lines.size() == 10);  // 0, 45, ..., 360
+  for (size_t i = 1; i < lines.size(); ++i) {
+    const auto row = Numbers(lines[i]);
+    CHECK(std::abs(DegreeDifference(row[1], FourBarPsi(1, 4.99995, 2, 4, row[0] + 3, 1))) < 1e-7);
+  }
+}
+
+// b + c = (a + d)(1 - 1e-8): a gap of 0.04 deg; every step once printed 361 rows across it, exit 0.
+TEST_CASE("a 0.04 deg gap between two limit points is found at every step, listed, and exits 1", "[cli]") {
+  const std::string file = test::TestDataPath("near-change-point-gap.yaml");
+  // the crank's limits where |A B0| = b + c: cos phi_c = (a^2 + d^2 - (b + c)^2) / (2 a d), phi = phi_c - 3
+  const double reach = 1.99999995 + 3, limit = std::acos((1 + 16 - reach * reach) / 8) * 180 / M_PI - 3;
+  for (const char* step : {"1", "7", "45", "0.01"}) {
+    const std::string range = std::string(step) == "0.01" ? " --from 170 --to 184" : "";
+    const test::RunResult r = test::RunKoppel("analyze " + file + " --order 0 --step " + step + range);
+    INFO("--step " << step << "\n" << r.err);
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("limit point") != std::string::npos);
+    CHECK(r.err.find("branch point") == std::string::npos);
+    for (const std::string& line : Lines(r.out)) {
+      if (line.empty() || !std::isdigit(static_cast<unsigned char>(line[0]))) continue;
+      const auto row = Numbers(line);
+      INFO("phi = " << row[0]);
+      // no row inside the gap (limit, 354 - limit), and each on the assembly's branch
+      CHECK(!(row[0] > limit && row[0] < 354 - limit));
+      CHECK(std::abs(DegreeDifference(row[1], FourBarPsi(1, 1.99999995, 3, 4, row[0] + 3, 1))) < 1e-6);
+    }
+  }
+}
+
+}  // namespace koppel::analyze_command_test

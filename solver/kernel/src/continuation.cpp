@@ -24,12 +24,16 @@ constexpr double kNearSingularRcond = 1e-3;
 constexpr int kWindowOrder = 3;
 // Attempts at crossing a branch point, each with a window a quarter as wide as the one before.
 constexpr int kCrossingAttempts = 3;
-// Newton iterates closer to a branch point than this pivot gauge no longer give a reliable
-// determinant sign: the root search stops there.
-constexpr double kRootPivotRatio = 1e-12;
-// A branch point is located to about this [rad, or units of L]: the root search stops at 1e-13,
-// the Newton iterates near the point at pivot gauges of 1e-12.
+// A branch point is located to about this [rad, or units of L]: the bifurcation system's Newton
+// stops at roundoff (LocateBranchPoint); a sample on the point must not fall off by a rounding.
 constexpr double kBranchPointLocation = 1e-10;
+// A stall is examined again only after the steps have grown back to this many times the stall's.
+constexpr double kReexamineStall = 1024.0;
+// A pose with a link's origin farther than this (times L, beyond where the walk started) has run off: a
+// joint at the meeting point of two slide lines that turn parallel goes to infinity as the input
+// approaches the input where they are parallel, and the walk's steps shrink with the distance left.
+// A mechanism reaching a million times its own size has no pose a user builds there.
+constexpr double kRunOff = 1e6;
 // Steps a walk between two nearby regular poses may take (it never passes a singular position).
 constexpr long kRegularWalkSteps = 100000;
 // A target within this of a located limit point (relative to max(1, |input|), times L for a P
@@ -47,35 +51,6 @@ std::string JointNames(const Mechanism& m, const std::vector<int>& joints) {
   std::string names;
   for (int j : joints) names += (names.empty() ? "" : ", ") + m.joints[j].name;
   return names;
-}
-
-// Root of det(J S) along the interpolated branch between two poses of opposite sign (Illinois
-// variant of regula falsi; every iterate is a Newton-corrected pose of the branch).
-double LocateRoot(PositionSolver& solver, const HermiteSegment& branch, double x0, double g0, double x1, double g1,
-                  double input_scale, Eigen::VectorXd& q) {
-  Eigen::MatrixXd c;
-  int side = 0;
-  for (int it = 0; it < 60; ++it) {
-    const double x = (x0 * g1 - x1 * g0) / (g1 - g0);
-    if (std::abs(x1 - x0) <= 1e-13 * input_scale) return x;
-    branch.Coefficients(x, 0, c);
-    q = c.col(0);
-    if (!solver.Correct(x, q).ok() || solver.PivotRatio() < kRootPivotRatio) return x;
-    const double g = solver.ScaledDeterminant();
-    if (g == 0.0) return x;
-    if ((g > 0) == (g1 > 0)) {
-      x1 = x;
-      g1 = g;
-      if (side == -1) g0 *= 0.5;
-      side = -1;
-    } else {
-      x0 = x;
-      g0 = g;
-      if (side == +1) g1 *= 0.5;
-      side = +1;
-    }
-  }
-  return (x0 * g1 - x1 * g0) / (g1 - g0);
 }
 
 }  // namespace
@@ -105,6 +80,7 @@ const char* ToString(WalkStatus status) {
     case WalkStatus::kBranchPointStop: return "stopped at a branch point";
     case WalkStatus::kTooFar: return "too far";
     case WalkStatus::kFailed: return "failed";
+    case WalkStatus::kRunOff: return "runs off";
   }
   return "failed";
 }
@@ -132,7 +108,6 @@ Continuation::Continuation(PositionSolver& solver, ContinuationOptions options)
   const int n = solver.NumCoordinates();
   input_scale_ = solver.system().mechanism().InputIsAngle() ? 1.0 : length_scale_;
   q_.setZero(n);
-  previous_q_.setZero(n);
   for (RegularPose& p : regular_) p.q.setZero(n);
   q_trial_.setZero(n);
   predicted_.setZero(n);
@@ -233,6 +208,9 @@ SolveReport Continuation::Start(double input, const Eigen::VectorXd& q) {
   if (report.ok()) {
     started_ = true;
     at_limit_ = false;
+    double extent = 0.0;
+    for (int i = 0; i + 2 < q_trial_.size(); i += 3) extent = std::max({extent, std::abs(q_trial_(i)), std::abs(q_trial_(i + 1))});
+    reach_ = extent + kRunOff * length_scale_;
     compiled_pose_ = false;
     schedule_loaded_ = false;
     input_ = input;
@@ -247,7 +225,6 @@ SolveReport Continuation::Start(double input, const Eigen::VectorXd& q) {
     rcond_ = -1.0;
     valid_order_ = kMaxOrder;
     series_order_ = -1;
-    has_previous_ = false;
     window_.reset();
   }
   return report;
@@ -306,10 +283,6 @@ bool Continuation::AtSingularPose() {
 
 void Continuation::Accept(double next) {
   schedule_loaded_ = false;
-  previous_input_ = input_;
-  previous_q_ = q_;
-  previous_determinant_ = determinant_;
-  has_previous_ = true;
   at_limit_ = false;
   input_ = next;
   q_ = q_trial_;
@@ -420,8 +393,13 @@ Continuation::StepResult Continuation::TryStep(double next) {
   solver_.Series(2, trial_series_);
   const double change = ScaledTangentNorm(trial_series_.col(1), &tangent_predicted_);
   if (change > options_.max_tangent_change * (1.0 + ScaledTangentNorm(tangent_predicted_, nullptr))) return out;
+  // det J keeps its sign along a branch between singular positions: a step that changes it got
+  // onto another branch (past a limit point's gap, or across the sharp turn a linkage near its
+  // change point takes) or straight across a branch point, and is refused like one too long.
+  // The walk refines its step: it follows a sharp turn, and stalls at a limit point or a branch
+  // point, which ExamineStall then locates.
   const int sign = solver_.JacobianSign();
-  out.sign_changed = sign_ != 0 && sign != 0 && sign != sign_;
+  if (sign_ != 0 && sign != 0 && sign != sign_) return out;
   out.accepted = true;
   Accept(next);
   return out;
@@ -453,7 +431,6 @@ std::unique_ptr<Continuation::Window> Continuation::OpenBranchWindow(double esti
   if (!RegularWalkTo(a_input)) return nullptr;
   const Eigen::MatrixXd a_series = Series(kWindowOrder).leftCols(kWindowOrder + 1);
   const Eigen::VectorXd a_q = q_;
-  const double a_det = determinant_;
   // B: as far beyond, predicted along A's Taylor series, the transfer functions verified
   const double b_input = estimate + direction * delta;
   const double span = b_input - a_input;
@@ -468,13 +445,9 @@ std::unique_ptr<Continuation::Window> Continuation::OpenBranchWindow(double esti
   solver_.Series(kWindowOrder, b_series);
   if (ScaledTangentNorm(b_series.col(1), &tangent) > options_.max_tangent_change * (1.0 + ScaledTangentNorm(tangent, nullptr)))
     return nullptr;
-  // the point: where det J changes sign between A and B along their Hermite interpolant
-  const double b_det = solver_.ScaledDeterminant();
+  // the point: located on the bifurcation system (ExamineStall), to roundoff
+  const double star = estimate;
   const HermiteSegment incoming(a_input, a_series, b_input, b_series);
-  Eigen::VectorXd scratch = a_q;
-  const double star = (a_det > 0) != (b_det > 0) && a_det != 0.0 && b_det != 0.0
-                          ? LocateRoot(solver_, incoming, a_input, a_det, b_input, b_det, input_scale_, scratch)
-                          : estimate;
   incoming.Coefficients(star, 1, *at_star);
 
   auto window = std::make_unique<Window>();
@@ -554,7 +527,6 @@ Continuation::Crossing Continuation::CrossBranchPoint(double estimate, double di
     }
     singular_points_.push_back(point);
     window_ = std::move(window);
-    has_previous_ = false;
     return LeaveOrEnterWindow(target, finished);
   }
   // No crossing was found: not a branch point after all. Back to where the caller stood.
@@ -605,7 +577,6 @@ void Continuation::EvaluateInWindow(double input) {
   q_pending_ = false;
   from_window_ = true;
   factorized_here_ = false;
-  has_previous_ = false;
   rcond_ = ReciprocalCondition(solver_.system(), q_);
   valid_order_ = rcond_ < kSingularRowRcond ? segment.ValidOrder() : kMaxOrder;
 }
@@ -629,7 +600,6 @@ void Continuation::SetLimitPose(double input, const Eigen::VectorXd& q) {
   q_pending_ = false;
   from_window_ = false;
   factorized_here_ = false;
-  has_previous_ = false;
   rcond_ = ReciprocalCondition(solver_.system(), q_);
   // the pose is known, its transfer functions are infinite: none is computable here
   valid_order_ = 0;
@@ -709,20 +679,12 @@ WalkReport Continuation::Walk(double target, double max_step) {
     const double next = std::abs(remaining) <= h ? target : input_ + direction * h;
     StepResult step = TryCompiledStep(next);
     if (!step.accepted) step = TryStep(next);
-    if (step.accepted && !step.sign_changed) {
-      examined = false;
-      h = std::min(cap, 2.0 * h);
-      continue;
-    }
     if (step.accepted) {
-      const Crossing crossing = CrossSignChange(direction, target, &finished);
-      if (crossing == Crossing::kFinished) return finished;
-      if (crossing == Crossing::kPassed) {
-        h = cap;
-        examined = false;
-        continue;
-      }
-      h *= 0.5;  // not a branch point: approach it with shorter steps
+      // a stall is examined again once the steps have grown back: a walk creeping on in steps
+      // this short (towards a joint that runs off) must not pay an SVD a step
+      if (h >= kReexamineStall * options_.stall_fraction * cap) examined = false;
+      h = std::min(cap, 2.0 * h);
+      if (h < cap && RunsOff()) return Ended(WalkStatus::kRunOff, RunOffMessage());
       continue;
     }
     h *= 0.5;
@@ -741,23 +703,43 @@ WalkReport Continuation::Walk(double target, double max_step) {
   return Reached();
 }
 
-Continuation::Crossing Continuation::CrossSignChange(double direction, double target, WalkReport* finished) {
-  // det J changed sign: a singular position lies between the previous pose and this one, and the
-  // step got across on the incoming branch. Go back, locate it and cross it properly.
-  const double estimate =
-      (previous_input_ * determinant_ - input_ * previous_determinant_) / (determinant_ - previous_determinant_);
-  SetRegularPose(previous_input_, previous_q_);
-  return CrossBranchPoint(estimate, direction, target, finished);
+bool Continuation::RunsOff() const {
+  MaterializePose();
+  for (int i = 0; i + 2 < q_.size(); i += 3) {
+    if (std::abs(q_(i)) > reach_ || std::abs(q_(i + 1)) > reach_) return true;
+  }
+  return false;
+}
+
+std::string Continuation::RunOffMessage() const {
+  const Mechanism& m = solver_.system().mechanism();
+  std::string links;
+  for (size_t k = 0, i = 0; k < m.links.size(); ++k) {
+    const int c = solver_.system().CoordinateOf(static_cast<int>(k));
+    if (c < 0) continue;
+    if (std::abs(q_(c)) > reach_ || std::abs(q_(c + 1)) > reach_)
+      links += (i++ ? ", " : "") + m.links[k].name;
+  }
+  return "the mechanism runs off to infinity near " + Where(input_) + " (link " + links +
+         " beyond a million times the mechanism's size: two slide lines turn parallel there, or a link's line passes "
+         "through infinity): the input cannot pass it on this branch";
 }
 
 Continuation::Crossing Continuation::ExamineStall(double direction, double target, WalkReport* finished) {
   MaterializePose();
-  // Steps this short mean a singular position is near. A branch point is crossed here rather
-  // than crept around (creeping would follow a roundoff-sized detour onto the other branch).
-  const SingularStructure s = AnalyseSingularity(solver_.system(), q_);
-  if (s.rcond < kNearSingularRcond && s.kind == SingularKind::kBranchPoint) return CrossBranchPoint(input_, direction, target, finished);
-  if (s.rcond < kNearSingularRcond && s.kind == SingularKind::kLimitPoint && FinishAtLimitPoint(target, direction, finished))
-    return Crossing::kFinished;
+  // Steps this short mean a singular position is near. A branch point is crossed here rather than
+  // crept around (creeping would follow a roundoff-sized detour onto the other branch), but only
+  // where the mechanism's dimensions reach a flat, self-stressed pose: near one they miss, the
+  // branch turns sharply, and the walk follows it with shorter steps (or it ends at a limit point).
+  const ConstraintSystem& system = solver_.system();
+  const SingularStructure s = AnalyseSingularity(system, q_);
+  if (!(s.rcond < kNearSingularRcond)) return Crossing::kNotCrossed;
+  if (s.constraint_rcond < kNearSingularRcond) {
+    const std::optional<BranchPoint> point = LocateBranchPoint(system, input_, q_);
+    if (point && point->defect <= kBranchPointDefect && ScaledPoseNorm(point->q, q_) <= options_.max_correction)
+      return CrossBranchPoint(point->input, direction, target, finished);
+  }
+  if (FinishAtLimitPoint(target, direction, finished)) return Crossing::kFinished;
   return Crossing::kNotCrossed;
 }
 

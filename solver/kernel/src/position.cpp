@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 
 namespace koppel {
@@ -25,6 +26,11 @@ constexpr int kAssemblyStallWindow = 16;
 constexpr double kAssemblyStallGain = 1e-3;
 // A pivot ratio below this counts as a singular Jacobian (about 100 ulps).
 constexpr double kSingularPivotRatio = 1e-14;
+// Below this pivot ratio a converged pose is polished by one more Newton update (Correct): J is
+// ill-conditioned enough that the tolerance's residual moves the pose by more than roundoff.
+constexpr double kPolishPivotRatio = 1e-3;
+// ... when its residual is above this (times its extent): 16 ulps, above evaluation roundoff.
+constexpr double kPolishResidual = 16.0 * std::numeric_limits<double>::epsilon();
 
 // The link poses the assembly hint determines: hinted points give estimates of link points, joints
 // carry them (and the drive and prismatic joints carry angles) from posed links to their
@@ -307,9 +313,14 @@ void PositionSolver::Resolve() const {
 SolveReport PositionSolver::Correct(double input, Eigen::VectorXd& q) {
   pending_ = false;
   pending_fill_ = nullptr;
-  const double tolerance = options_.tolerance * system_.length_scale();
   q_try_ = q;
+  // a few hundred ulps of the coordinates: of L, or of the pose's own extent where a link lies
+  // farther out (a slider far along its guide: its rows cannot be evaluated closer than that)
+  double extent = system_.length_scale();
+  for (int i = 0; i + 2 < q_try_.size(); i += 3) extent = std::max({extent, std::abs(q_try_(i)), std::abs(q_try_(i + 1))});
+  const double tolerance = options_.tolerance * extent;
   double first_norm = -1.0;
+  bool polished = false;
   for (int it = 0; it <= options_.max_iterations; ++it) {
     Evaluate(q_try_, input);
     const double norm = residual_.lpNorm<Eigen::Infinity>();
@@ -320,6 +331,16 @@ SolveReport PositionSolver::Correct(double input, Eigen::VectorXd& q) {
       if (!regular) {
         factorized_ = false;
         return Report(SolveStatus::kSingular, it, "the pose is singular: the Jacobian has lost rank");
+      }
+      // Near a singular position a residual within the tolerance still moves the pose by about
+      // residual / sigma_min (1e-13 L / 3e-6 at a linkage 1e-11 from its change point): one more
+      // update brings it to roundoff there. Elsewhere the tolerance is the accuracy already, and
+      // a residual at roundoff is left alone (an update from it is roundoff / sigma_min, which
+      // next to a branch point can land on the other branch).
+      if (!polished && norm > kPolishResidual * extent && pivot_ratio_ < kPolishPivotRatio) {
+        polished = true;
+        SolveStep();
+        continue;
       }
       q = q_try_;
       q_solved_ = q_try_;
@@ -332,17 +353,21 @@ SolveReport PositionSolver::Correct(double input, Eigen::VectorXd& q) {
     // Divergence guard: Newton from a good predictor never grows the residual this much.
     if (it > 0 && norm > 1e3 * first_norm && norm > system_.length_scale())
       return Report(SolveStatus::kDidNotConverge, it, "Newton diverged");
-    if (use_blocks_) {
-      step_ = -residual_;
-      blocks_.Solve(step_.data());
-    } else {
-      rhs_ = -residual_;
-      SolveFactorized(rhs_, step_);
-    }
-    q_try_ += step_;
+    SolveStep();
   }
   return Report(SolveStatus::kDidNotConverge, options_.max_iterations,
                 "Newton did not converge in " + std::to_string(options_.max_iterations) + " iterations");
+}
+
+void PositionSolver::SolveStep() {
+  if (use_blocks_) {
+    step_ = -residual_;
+    blocks_.Solve(step_.data());
+  } else {
+    rhs_ = -residual_;
+    SolveFactorized(rhs_, step_);
+  }
+  q_try_ += step_;
 }
 
 Eigen::VectorXd PositionSolver::InitialGuess(int attempt) const {

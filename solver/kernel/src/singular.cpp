@@ -107,6 +107,57 @@ double LimitPointCurvature(const ConstraintSystem& system, const Eigen::MatrixXd
   return along != 0.0 ? -psi.dot(HalfSecondDerivative(system, q, lambda, null)) / along : 0.0;
 }
 
+// The Hessian of psi . G in the scaled coordinates, H(i, k) = psi^T G''[S e_i, S e_k], by
+// polarisation of half second derivatives: n (n + 1) / 2 residual evaluations in Taylor<2>
+// (`psi` has a zero for the drive row).
+Eigen::MatrixXd SelfStressHessian(const ConstraintSystem& system, const Eigen::VectorXd& q, double input, const Eigen::VectorXd& psi,
+                                  const Eigen::VectorXd& scale) {
+  const int n = system.NumCoordinates();
+  Eigen::MatrixXd h(n, n);
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(n), diagonal(n);
+  auto half = [&] { return psi.dot(HalfSecondDerivative(system, q, input, e)); };
+  for (int i = 0; i < n; ++i) {
+    e(i) = scale(i);
+    diagonal(i) = half();
+    h(i, i) = 2.0 * diagonal(i);
+    e(i) = 0.0;
+  }
+  for (int i = 0; i < n; ++i) {
+    for (int k = i + 1; k < n; ++k) {
+      e(i) = scale(i);
+      e(k) = scale(k);
+      h(i, k) = h(k, i) = half() - diagonal(i) - diagonal(k);
+      e(i) = e(k) = 0.0;
+    }
+  }
+  return h;
+}
+
+// The bifurcation system of LocateBranchPoint at (q, psi, sigma): its residual *g and Jacobian *a
+// in the unknowns (S^-1 q, psi, sigma), rows G - sigma psi, (J_c S)^T psi, psi . psi - 1. False
+// when the residuals are not finite there.
+bool BranchPointNewtonSystem(const ConstraintSystem& system, const Eigen::VectorXd& q, double input, const Eigen::VectorXd& psi,
+                             double sigma, const Eigen::VectorXd& scale, Eigen::MatrixXd* a, Eigen::VectorXd* g) {
+  const int n = system.NumCoordinates(), m = n - 1;
+  Eigen::VectorXd residual(n);
+  system.Residuals(q.data(), input, residual.data());
+  if (!residual.allFinite()) return false;
+  const Eigen::MatrixXd jc = ScaledJacobian(system, q, false);
+  Eigen::VectorXd psi_rows = Eigen::VectorXd::Zero(n);
+  psi_rows.head(m) = psi;
+  g->head(m) = residual.head(m) - sigma * psi;
+  g->segment(m, n) = jc.transpose() * psi;
+  (*g)(2 * n - 1) = psi.squaredNorm() - 1.0;
+  a->setZero();
+  a->block(0, 0, m, n) = jc;
+  a->block(0, n, m, m) = -sigma * Eigen::MatrixXd::Identity(m, m);
+  a->block(0, n + m, m, 1) = -psi;
+  a->block(m, 0, n, n) = SelfStressHessian(system, q, input, psi_rows, scale);
+  a->block(m, n, n, m) = jc.transpose();
+  a->block(2 * n - 1, n, 1, m) = 2.0 * psi.transpose();
+  return true;
+}
+
 }  // namespace
 
 const char* ToString(SingularKind kind) {
@@ -259,6 +310,54 @@ std::optional<LimitPoint> LocateLimitPoint(const ConstraintSystem& system, doubl
   out.null = scale.cwiseProduct(u / u.norm());
   out.iterations = it;
   out.curvature = LimitPointCurvature(system, scaled, q, lambda, out.null);
+  return out;
+}
+
+}  // namespace koppel
+
+namespace koppel {
+
+std::optional<BranchPoint> LocateBranchPoint(const ConstraintSystem& system, double input, const Eigen::VectorXd& q0) {
+  const int n = system.NumCoordinates(), m = n - 1;
+  if (n < 2 || system.NumEquations() != n) return std::nullopt;
+  const double length = system.length_scale();
+  const Eigen::VectorXd scale = ColumnScale(system);
+  Eigen::VectorXd q = q0, residual(n);
+  // the self-stress's first estimate: the constraint rows' left singular vector of sigma_min
+  Eigen::VectorXd psi = Eigen::JacobiSVD<Eigen::MatrixXd>(ScaledJacobian(system, q, false), Eigen::ComputeFullU).matrixU().col(m - 1);
+  system.Residuals(q.data(), input, residual.data());
+  double sigma = psi.dot(residual.head(m));
+  Eigen::MatrixXd a(2 * n, 2 * n);
+  Eigen::VectorXd g(2 * n);
+  double previous_step = std::numeric_limits<double>::infinity();
+  int growing = 0, it = 0;
+  bool converged = false;
+  for (; it < kLimitIterations && !converged; ++it) {
+    if (!BranchPointNewtonSystem(system, q, input, psi, sigma, scale, &a, &g)) return std::nullopt;
+    const Eigen::VectorXd d = Eigen::PartialPivLU<Eigen::MatrixXd>(a).solve(-g);
+    if (!d.allFinite()) return std::nullopt;
+    const double step = std::max({d.head(n).cwiseAbs().maxCoeff() / length, d.segment(n, m).cwiseAbs().maxCoeff(),
+                                  std::abs(d(2 * n - 1)) / length});
+    q += scale.cwiseProduct(d.head(n));
+    psi += d.segment(n, m);
+    sigma += d(2 * n - 1);
+    growing = step >= previous_step ? growing + 1 : 0;
+    // quadratic convergence: the step after one of 1e-13 is at roundoff
+    converged = step <= 1e-13 || (growing >= 2 && step < 1e-10);
+    if (growing >= 2 && !converged) return std::nullopt;  // diverging
+    previous_step = step;
+  }
+  if (!converged) return std::nullopt;
+  system.Residuals(q.data(), input, residual.data());
+  const Eigen::MatrixXd jc = ScaledJacobian(system, q, false);
+  if (!((residual.head(m) - sigma * psi).cwiseAbs().maxCoeff() <= kLimitResidual * length) ||
+      !((jc.transpose() * psi).cwiseAbs().maxCoeff() <= kLimitResidual))
+    return std::nullopt;
+  BranchPoint out;
+  out.input = input - residual(system.DriveRow()) / system.InputColumn();
+  out.q = q;
+  out.defect = std::abs(sigma) / length;
+  out.iterations = it;
   return out;
 }
 

@@ -223,7 +223,7 @@ double ExploreBranchEnd(SweepWalks& w, double to, bool* closed) {
   Continuation path(w.solver, w.options.continuation);
   path.Start(w.assembly.input, w.assembly.q);
   const WalkReport report = path.AdvanceTo(to, std::numeric_limits<double>::infinity());
-  if (!report.ok() && report.status != WalkStatus::kLimitPoint) *closed = false;
+  if (!report.ok() && report.status != WalkStatus::kLimitPoint && report.status != WalkStatus::kRunOff) *closed = false;
   if (*closed) AbsorbSingularPoints(w, path, true);
   return report.ok() ? to : report.input;
 }
@@ -241,7 +241,10 @@ CoveredPart CoverBranchOverTurns(SweepWalks& w, const WalkEnd& up_end, const Wal
   // Only a branch that ends at limit points (the drive swings) or covers a turn is one closed
   // interval of the angle: where a walk stopped at a branch point or failed, what lies beyond is
   // another sheet (a kite's second turn), not this one a turn away.
-  auto ends_in_limit = [](const WalkEnd& e) { return e.complete || e.status == WalkStatus::kLimitPoint; };
+  // (a joint running off to infinity ends the branch's finite poses as a limit point does)
+  auto ends_in_limit = [](const WalkEnd& e) {
+    return e.complete || e.status == WalkStatus::kLimitPoint || e.status == WalkStatus::kRunOff;
+  };
   if (!w.m.InputIsAngle() || !ends_in_limit(up_end) || !ends_in_limit(down_end) || w.Reached() >= w.samples) return part;
   // Samples beyond the branch's ends as numbered from the assembly may lie on it a turn away:
   // follow the branch to its ends (or over a whole turn), then map each such sample into it.
@@ -328,8 +331,10 @@ void CollectComputedRows(const SweepWalks& w, SweepResult* result) {
 std::string PartialSweepMessage(const Mechanism& m, const SweepResult& result, int samples, const WalkEnd& up_end,
                                 const WalkEnd& down_end) {
   const int count = static_cast<int>(result.inputs.size());
-  std::string text = std::to_string(samples - count) + " of " + std::to_string(samples) +
-                     " samples lie outside the drivable part of the branch (";
+  // a gap narrower than the step holds no sample, but the range is not drivable all the same
+  std::string text = count == samples ? "every sample was computed, but the range holds inputs the branch cannot be driven through ("
+                                      : std::to_string(samples - count) + " of " + std::to_string(samples) +
+                                            " samples lie outside the drivable part of the branch (";
   for (size_t g = 0; g < result.gaps.size(); ++g) text += (g ? "; " : "") + FormatInterval(m, result.gaps[g].from, result.gaps[g].to);
   text += ")";
   for (const WalkEnd* end : {&up_end, &down_end}) {
@@ -385,7 +390,7 @@ SweepResult Sweep(const Mechanism& m, const SweepOptions& options) {
   result.gaps = GapsInRange(options, step, covered);
   CollectComputedRows(walks, &result);
   const std::string undefined_text = UndefinedMessage(m, result, options.order);
-  if (walks.Reached() == samples) {
+  if (walks.Reached() == samples && result.gaps.empty()) {
     result.status = SweepStatus::kComplete;
     result.message = undefined_text;
     return result;

@@ -136,3 +136,74 @@ TEST_CASE("a slider-crank's limits (rod shorter than crank plus offset) to round
 }
 
 }  // namespace koppel::limit_point_test
+
+namespace koppel::limit_point_test {
+namespace {
+
+// A value with its first and second derivative in long double: the reference psi'' below, by
+// the chain rule through the closed form (no differencing).
+struct Jet {
+  long double v = 0, d1 = 0, d2 = 0;
+};
+Jet operator+(Jet x, Jet y) { return {x.v + y.v, x.d1 + y.d1, x.d2 + y.d2}; }
+Jet operator-(Jet x, Jet y) { return {x.v - y.v, x.d1 - y.d1, x.d2 - y.d2}; }
+Jet operator*(Jet x, Jet y) { return {x.v * y.v, x.d1 * y.v + x.v * y.d1, x.d2 * y.v + 2 * x.d1 * y.d1 + x.v * y.d2}; }
+Jet Constant(long double c) { return {c, 0, 0}; }
+Jet Inverse(Jet x) {
+  const long double i = 1 / x.v;
+  return {i, -x.d1 * i * i, (2 * x.d1 * x.d1 * i - x.d2) * i * i};
+}
+Jet Sqrt(Jet x) {
+  const long double r = std::sqrt(x.v);
+  return {r, x.d1 / (2 * r), (x.d2 - x.d1 * x.d1 / (2 * x.v)) / (2 * r)};
+}
+// atan2(y, x): its derivative (x y' - y x') / (x^2 + y^2), differentiated once more
+Jet Atan2(Jet y, Jet x) {
+  const long double r2 = x.v * x.v + y.v * y.v;
+  const long double n1 = x.v * y.d1 - y.v * x.d1, n1d = x.v * y.d2 - y.v * x.d2;  // (x y' - y x')'
+  const long double r2d = 2 * (x.v * x.d1 + y.v * y.d1);
+  return {std::atan2(y.v, x.v), n1 / r2, (n1d * r2 - n1 * r2d) / (r2 * r2)};
+}
+
+// The rocker angle of the four-bar A0 = 0, B0 = (d, 0) with its derivatives in the crank angle:
+// B = A + (x r + side h r_perp) / rho, r = B0 - A, x = (b^2 - c^2 + rho^2) / (2 rho), h^2 = b^2 - x^2.
+Jet RockerAngle(long double a, long double b, long double c, long double d, long double phi, int side) {
+  const Jet ax{a * std::cos(phi), -a * std::sin(phi), -a * std::cos(phi)}, ay{a * std::sin(phi), a * std::cos(phi), -a * std::sin(phi)};
+  const Jet rx = Constant(d) - ax, ry = Constant(0) - ay;
+  const Jet rho2 = rx * rx + ry * ry, per_rho = Inverse(Sqrt(rho2));
+  const Jet x = (Constant(b * b - c * c) + rho2) * per_rho * Constant(0.5L);
+  const Jet h = Constant(side) * Sqrt((Constant(b) - x) * (Constant(b) + x));
+  const Jet bx = ax + (x * rx - h * ry) * per_rho, by = ay + (x * ry + h * rx) * per_rho;
+  return Atan2(by, bx - Constant(d));
+}
+
+}  // namespace
+
+// A row of a sweep next to a limit point was once less exact than the same row alone (psi'' 1e-8
+// relative off where one solve gives 1e-14): both against psi'' by the chain rule in long double.
+// psi'' grows like 1/g^3 towards the fold (g ~ sqrt of the distance), and a row carries roundoff
+// over g^2 relative: 1e-10 at 0.001 deg.
+TEST_CASE("rows next to a limit point are as exact in a sweep as alone", "[continuation][limit]") {
+  const CrossedTripleRocker t;
+  const Mechanism& m = t.m;
+  const int psi = OutputColumn(m, 0, 0, 2);
+  for (double inside_deg : {0.1, 0.0101, 0.001}) {
+    const double x = t.phi_g - DegToRad(inside_deg);
+    const Jet reference = RockerAngle(t.a, t.b, t.c, t.d, x, -1);
+    SweepOptions sweep = At(x);
+    sweep.from = x - DegToRad(60);
+    const SweepResult walked = Sweep(m, sweep), alone = Sweep(m, At(x));
+    REQUIRE(walked.complete());
+    REQUIRE(alone.complete());
+    INFO(inside_deg << " deg inside the limit: psi'' = " << static_cast<double>(reference.d2));
+    const int last = static_cast<int>(walked.inputs.size()) - 1;
+    REQUIRE(walked.inputs[last] == x);
+    for (const SweepResult* r : {&walked, &alone}) {
+      const int row = r == &walked ? last : 0;
+      CHECK(std::abs(r->outputs(row, psi + 1) - static_cast<double>(reference.d1)) <= 1e-11 * std::abs(static_cast<double>(reference.d1)));
+      CHECK(std::abs(r->outputs(row, psi + 2) - static_cast<double>(reference.d2)) <= 1e-10 * std::abs(static_cast<double>(reference.d2)));
+    }
+  }
+}
+
+}  // namespace koppel::limit_point_test

@@ -97,3 +97,49 @@ TEST_CASE("branch-point actions read and print", "[singular]") {
 }
 
 }  // namespace koppel::singular_test
+
+namespace koppel::singular_test {
+
+// The bifurcation system's defect: a four-bar's flat pose carries the self-stress of an axial force
+// through all four pins (psi's x rows +-1/2), so closing the joints up to sigma psi leaves each
+// pin open by sigma / 2 along the line, and the loop's misfit b + c - (a + d) = 4 sigma / 2.
+TEST_CASE("a branch point is located where the dimensions reach a flat pose, and its defect measures how far they miss",
+          "[singular]") {
+  {
+    const Mechanism m = test::PlainFourBar(1, 3, 1, 3, kPi, {2, 0});
+    const ConstraintSystem system(m);
+    Eigen::VectorXd q = FlatParallelogram();
+    q(2) += 1e-4;  // a pose near the point: Newton finds it
+    const std::optional<BranchPoint> point = LocateBranchPoint(system, kPi + 1e-4, q);
+    REQUIRE(point);
+    CHECK(point->defect < 1e-15);
+    CHECK(std::abs(point->input - kPi) < 1e-12);
+    CHECK(point->iterations <= 10);
+  }
+  for (double misfit : {1e-3, 1e-6, -1e-6, 1e-9}) {
+    // b + c = a + d + misfit, flat (extended) at phi = pi: start from the walk's pose there
+    const double a = 1, c = 3, d = 4, b = a + d - c + misfit;
+    const auto rocker = test::FourBarRocker(a, b, c, d, kPi - 0.01, 1);
+    REQUIRE(rocker);
+    const Mechanism m = test::PlainFourBar(a, b, c, d, kPi - 0.01, rocker->b);
+    PositionSolver solver(m);
+    Eigen::VectorXd q(solver.NumCoordinates());
+    REQUIRE(solver.Assemble(q).ok());
+    const std::optional<BranchPoint> point = LocateBranchPoint(solver.system(), kPi - 0.01, q);
+    INFO("misfit " << misfit);
+    REQUIRE(point);
+    CHECK(point->defect * solver.system().length_scale() == Approx(std::abs(misfit) / 2).epsilon(1e-6));
+    CHECK(std::abs(point->input - kPi) < 1e-6);
+  }
+  {
+    // a crank-rocker far from its change point has no flat pose near: none, or a large defect
+    const Mechanism m = test::PlainFourBar(1, 3, 3, 3.5, 2.0, {3, 2.5});
+    PositionSolver solver(m);
+    Eigen::VectorXd q(solver.NumCoordinates());
+    REQUIRE(solver.Assemble(q).ok());
+    const std::optional<BranchPoint> point = LocateBranchPoint(solver.system(), 2.0, q);
+    CHECK((!point || point->defect > 1e-3));
+  }
+}
+
+}  // namespace koppel::singular_test

@@ -4,8 +4,11 @@
 // Newton. A step is accepted only when Newton converges in a few iterations, the correction is
 // small (in units of L, radians for angles) and the first-order transfer functions at the new
 // pose continue the predicted ones — a step that lands on another assembly branch changes them
-// by O(1). The sign of det J is never a reason to accept a step; its change only tells that a
-// singular position was crossed, which is then located and reported.
+// by O(1) — and det J keeps its sign. det J changes sign only at singular positions; a step that
+// changes it is refused, so the walk refines its step towards the position: it follows a branch
+// that turns sharply without a singular position (a linkage a hair from its change point, whose
+// branch passes the other one at sqrt(defect) — the step is not a guess at the branch), and it
+// stalls at a limit point or at a branch point, which are then located (below).
 //
 // Regular steps take the compiled joint-point schedule (point_schedule.hpp) where the mechanism
 // compiles into one and the solver is not asked for the dense reference path: the same guards
@@ -21,12 +24,14 @@
 //   target), a target on the point itself gets the pose there (flagged singular, valid order 0:
 //   the transfer functions are infinite), a target beyond it ends the walk at the point. Should
 //   the augmented Newton fail, the walk ends where steps shorter than `limit_resolution` fail.
-// - branch point: crossed along the incoming branch (ContinuationOptions::at_branch_point says
+// - branch point: only where the mechanism's dimensions reach a flat, self-stressed pose to
+//   roundoff (singular.hpp, LocateBranchPoint: defect at most kBranchPointDefect L); crossed along
+//   the incoming branch (ContinuationOptions::at_branch_point says
 //   whether to continue on the branch that continues the incoming one analytically, to stop, or
 //   to switch to the other). The crossing jumps from a pose A a window's half-width before the
 //   point to a pose B as far beyond it, predicting along A's Taylor series and verifying at B
-//   that the transfer functions continue; the point itself is located as the root of det(J S)
-//   between A and B. Inside the window, poses and the transfer functions up to 3rd order come from
+//   that the transfer functions continue; the point itself is the bifurcation system's solution
+//   (singular.hpp, LocateBranchPoint), the window centred on it. Inside the window, poses and the transfer functions up to 3rd order come from
 //   the Hermite interpolant of A and B: both ends are well-conditioned, the point is not.
 #pragma once
 
@@ -80,6 +85,7 @@ enum class WalkStatus {
   kBranchPointStop,  // a branch point lies between and the options say stop
   kTooFar,           // the target needs more than max_steps steps
   kFailed,           // no pose could be found (Newton failed without a singular position)
+  kRunOff,           // a joint runs off to infinity ahead (two slide lines turn parallel): the branch ends there
 };
 const char* ToString(WalkStatus status);
 
@@ -129,7 +135,6 @@ class Continuation {
   struct Window;
   struct StepResult {
     bool accepted = false;
-    bool sign_changed = false;
   };
   // max |a - b| over the coordinates, in units of L (positions) and rad (angles)
   double ScaledPoseNorm(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
@@ -167,20 +172,21 @@ class Continuation {
   bool RestoreFactorization();
   bool RegularWalkTo(double target);
   Crossing CrossBranchPoint(double estimate, double direction, double target, WalkReport* finished);
-  // One attempt at the branch point near `estimate`: the window of half-width `delta` about it (A
-  // before it on the incoming branch, B beyond on A's prediction, the point located between);
+  // One attempt at the branch point located at `estimate`: the window of half-width `delta` about
+  // it (A before it on the incoming branch, B beyond on A's prediction);
   // null when A or B is not reached. *at_star: the pose and tangent at the point.
   std::unique_ptr<Window> OpenBranchWindow(double estimate, double direction, double delta, Eigen::MatrixXd* at_star);
   // Continues the window past its point on the other branch (its far end B'); false when that
   // branch does not cross the point in the input.
   bool SwitchBranchInWindow(const Eigen::MatrixXd& at_star, Window* window);
   Crossing LeaveOrEnterWindow(double target, WalkReport* finished);
-  // AdvanceTo's step crossed a sign change of det J: back to the pose before it, then across the
-  // singular position between them.
-  Crossing CrossSignChange(double direction, double target, WalkReport* finished);
   // AdvanceTo's steps stall: crosses a branch point here, or finishes at a limit point ahead;
   // kNotCrossed when neither is near (the walk goes on with shorter steps).
   Crossing ExamineStall(double direction, double target, WalkReport* finished);
+  // The current pose has run off (a link's origin beyond kRunOff L): where two slide lines turn
+  // parallel, their meeting point goes to infinity, and no step reaches the input there.
+  bool RunsOff() const;
+  std::string RunOffMessage() const;
   // AdvanceTo's steps fell below the limit resolution: the walk ends here (at a limit point, or failed).
   WalkReport EndAtStall(double direction, double target);
   // At a stall in `direction` towards `target`: locates the limit point ahead and reaches the
@@ -198,6 +204,7 @@ class Continuation {
   double length_scale_ = 1.0;
   double input_scale_ = 1.0;  // 1 for an R drive, L for a P drive
   bool started_ = false;
+  double reach_ = 0.0;  // a link's origin beyond this |x| or |y| has run off (RunsOff)
   // the current pose
   double input_ = 0.0;
   mutable Eigen::VectorXd q_;
@@ -212,11 +219,6 @@ class Continuation {
   Eigen::MatrixXd series_;
   int series_order_ = -1;
   Eigen::MatrixXd window_series_;  // the interpolant's coefficients at a window pose
-  // the pose before the last accepted step
-  double previous_input_ = 0.0;
-  Eigen::VectorXd previous_q_;
-  double previous_determinant_ = 0.0;
-  bool has_previous_ = false;
   // workspaces, allocated once: no allocation per step
   Eigen::VectorXd q_trial_, predicted_, tangent_predicted_;
   Eigen::MatrixXd trial_series_;

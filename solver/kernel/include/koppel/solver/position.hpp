@@ -39,8 +39,9 @@ struct SolveReport {
 
 struct NewtonOptions {
   int max_iterations = 20;
-  // Converged when |F|_inf <= tolerance * L (L = length scale): a few hundred ulps of the
-  // coordinates, far below the 1e-9 the closed-form checks ask for.
+  // Converged when |F|_inf <= tolerance * max(L, the largest |x| or |y| of a link's origin) (L =
+  // length scale): a few hundred ulps of the coordinates, far below the 1e-9 the closed-form
+  // checks ask for (a pose 2000 L out cannot close its rows to 1e-13 L in doubles).
   double tolerance = 1e-13;
   // The linear algebra of each step: by default the Jacobian's block triangular form with a
   // dense LU per block (block_lu.hpp) and the Taylor coefficients order by order without series
@@ -142,6 +143,7 @@ class PositionSolver {
   void FillDenseJacobian();                               // jacobian_ from the block path's values
   bool Factorize();                                       // factorises jacobian_
   void SolveFactorized(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
+  void SolveStep();                                       // q_try_ += the Newton step of residual_ (factorised)
   // The first guess from the frame, the drive and the hint. Links whose angle neither determines
   // get angle 0 on attempt 0 and a spread of angles on later attempts (see AssembleAt).
   Eigen::VectorXd InitialGuess(int attempt) const;

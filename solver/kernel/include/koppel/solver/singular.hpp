@@ -100,6 +100,31 @@ struct LimitPoint {
   int iterations = 0;
 };
 
+// A branch point located on the bifurcation system with its unfolding parameter sigma
+//   G(q) = sigma psi,   (J_c S)^T psi = 0,   psi . psi = 1
+// (G the constraint rows without the drive row, J_c = dG/dq, psi their self-stress, a left null
+// vector of J_c S) in the 2n unknowns q, psi and sigma, by Newton with the exact Jacobian (psi^T G''
+// from Taylor<2> residuals by polarisation). The system without sigma is overdetermined by one: a
+// flat, self-stressed pose exists only for special dimensions (a Grashof-neutral four-bar). With
+// sigma it is square and regular at a simple branch point; at its solution G's residual is
+// sigma psi, the least-squares residual of the branch-point system, so |sigma| is how far (in L)
+// the mechanism is from reaching a branch point near q: about |b + c - a - d| for a four-bar near
+// its change point. A mechanism reaches one only where |sigma| <= kBranchPointDefect L.
+struct BranchPoint {
+  double input = 0.0;   // the drive's value at q [rad for an R drive, length for a P drive]
+  Eigen::VectorXd q;    // the flat pose (closing the joints to |sigma|)
+  double defect = 0.0;  // |sigma| / L
+  int iterations = 0;
+};
+// The mechanism's dimensions reach a branch point when the defect is below this: roundoff of
+// lengths given to 15 digits, far below any built tolerance (1e-12 L is 1 pm on a 1 m linkage).
+inline constexpr double kBranchPointDefect = 1e-12;
+
+// Newton on the bifurcation system from a converged pose (input, q) near a flat pose: `input` is
+// the reference for the drive's value (the walk's, whole turns included). Empty when Newton does
+// not converge (no self-stressed pose near q).
+std::optional<BranchPoint> LocateBranchPoint(const ConstraintSystem& system, double input, const Eigen::VectorXd& q);
+
 // Newton on the augmented system from a pose (input, q) near a limit point (q a converged pose
 // of F, e.g. where a walk stalled). Empty when Newton does not converge (not near a simple fold:
 // a branch point, or too far).

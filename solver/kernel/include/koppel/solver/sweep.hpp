@@ -51,8 +51,8 @@ struct InputInterval {
 
 enum class SweepStatus {
   kNotRun,
-  kComplete,        // every requested sample computed
-  kPartial,         // some samples lie beyond the drivable part of the branch: see gaps
+  kComplete,        // every requested sample computed, and the whole range drivable
+  kPartial,         // part of the range (some samples, or a gap between two) is not drivable: see gaps
   kNotAssemblable,  // no pose at the assembly input
   kInvalidOptions,  // see SweepOptions::IsValid
 };

@@ -160,7 +160,7 @@ class LoadsReader {
   void ReadLoads(const YAML::Node& node) {
     for (const YamlReader::Entry& e : r_.Entries(node, "loads")) {
       const std::string path = Child("loads", e.key);
-      if (!r_.ExpectMap(e.value, path)) continue;
+      if (!r_.CheckName(e.key_node, path, "load", e.key) || !r_.ExpectMap(e.value, path)) continue;
       const int kinds = e.value["force"].IsDefined() + e.value["torque"].IsDefined() + e.value["spring"].IsDefined() +
                         e.value["damper"].IsDefined();
       if (kinds != 1) {

@@ -67,6 +67,7 @@ class MechanismReader {
     if (node.IsDefined() && !node.IsNull()) {
       for (const YamlReader::Entry& e : r_.Entries(node, "parameters")) {
         const std::string path = Child("parameters", e.key);
+        if (!r_.CheckName(e.key_node, path, "parameter", e.key)) continue;
         if (!ParameterSet::ValidName(e.key)) {
           r_.Error(e.key_node, path, "'" + e.key + "' cannot be a parameter name (a letter then letters, digits, '_'; not pi or deg)");
           continue;
@@ -110,12 +111,14 @@ class MechanismReader {
       const std::string path = Child("links", e.key);
       Link link;
       link.name = e.key;
+      r_.CheckName(e.key_node, path, "link", e.key);
       if (!r_.ExpectMap(e.value, path)) continue;
       r_.CheckKeys(e.value, path, {"frame", "points", "mass", "cg", "inertia"});
       if (const YAML::Node f = e.value["frame"]; f.IsDefined()) link.is_frame = r_.Flag(f, Child(path, "frame")).value_or(false);
       const YAML::Node points = r_.Require(e.value, "points", path);
       if (points.IsDefined() && !points.IsNull()) {
         for (const YamlReader::Entry& p : r_.Entries(points, Child(path, "points"))) {
+          r_.CheckName(p.key_node, Child(Child(path, "points"), p.key), "point", p.key);
           if (auto v = r_.Vector(p.value, Child(Child(path, "points"), p.key))) {
             link.points.push_back({p.key, *v});
           } else if (p.value.IsSequence() && p.value.size() == 2) {
@@ -172,6 +175,7 @@ class MechanismReader {
     for (const YamlReader::Entry& e : r_.Entries(node, "joints")) {
       const std::string path = Child("joints", e.key);
       const std::string owner = "joint '" + e.key + "'";
+      r_.CheckName(e.key_node, path, "joint", e.key);
       if (!r_.ExpectMap(e.value, path)) continue;
       r_.CheckKeys(e.value, path, {"type", "links", "points", "axis", "angle"});
       Joint j;
@@ -263,7 +267,7 @@ class MechanismReader {
       if (auto v = r_.Number(z, "drive.zero")) m_.drive.zero = angle ? DegToRad(*v) : *v;
     }
     if (const YAML::Node n = node["name"]; n.IsDefined()) {
-      if (auto v = r_.Text(n, "drive.name")) m_.drive.input_name = *v;
+      if (auto v = r_.Text(n, "drive.name"); v && r_.CheckName(n, "drive.name", "drive's input", *v)) m_.drive.input_name = *v;
     }
   }
 
@@ -271,6 +275,7 @@ class MechanismReader {
     for (const YamlReader::Entry& e : r_.Entries(node, "outputs")) {
       const std::string path = Child("outputs", e.key);
       const std::string owner = "output '" + e.key + "'";
+      r_.CheckName(e.key_node, path, "output", e.key);
       if (!r_.ExpectMap(e.value, path)) continue;
       r_.CheckKeys(e.value, path, {"joint", "link", "point", "distance", "direction", "transmission", "zero"});
       Output o;

@@ -1,9 +1,12 @@
 #include "koppel/catalog/mechanism_writer.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/printable_text.hpp"
 
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cctype>
 #include <sstream>
 
 namespace koppel {
@@ -14,13 +17,30 @@ std::string Num(double v) {
   return fmt::format("{:.17g}", v);
 }
 
-std::string PointName(const Mechanism& m, const PointRef& p) { return m.links[p.link].name + "." + m.links[p.link].points[p.point].name; }
-
 // A formula as a double-quoted YAML string (a plain scalar could read as an alias or a number).
 std::string Quoted(const std::string& text) {
   std::string q = "\"";
   for (char c : text) q += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
   return q + "\"";
+}
+
+// A name as YAML reads it back: plain when it is a word (a letter or '_', then letters, digits,
+// '_', '-') that YAML does not take for null or a truth value; double-quoted otherwise (quotes,
+// commas, ':', '#', '<', spaces, any script), a character that is not printable (the reader would
+// refuse it; koppel/core/printable_text.hpp) written as U+FFFD.
+std::string Name(const std::string& name) {
+  static const char* const kYamlWords[] = {"null", "true", "false", "yes", "no", "on", "off", "y", "n"};
+  const auto word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; };
+  bool plain = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') &&
+               std::all_of(name.begin(), name.end(), word_char);
+  std::string lower = name;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* word : kYamlWords) plain &= lower != word;
+  return plain ? name : Quoted(PrintableText(name, Replacement::kReplacementCharacter));
+}
+
+std::string PointName(const Mechanism& m, const PointRef& p) {
+  return Name(m.links[p.link].name + "." + m.links[p.link].points[p.point].name);
 }
 
 void WriteMass(std::ostringstream& out, const Loads& loads, long link) {
@@ -41,13 +61,13 @@ void WriteLoads(std::ostringstream& out, const Mechanism& m, const Loads& loads)
   if (loads.forces.empty() && loads.torques.empty() && loads.springs.empty()) return;
   out << "loads:\n";
   for (const PointForce& f : loads.forces) {
-    out << "  " << f.name << ": {force: " << PointName(m, f.point) << ", direction: [" << Num(f.direction.x()) << ", "
-        << Num(f.direction.y()) << "], in: " << m.links[f.direction_link].name << ", magnitude: " << Quoted(f.magnitude) << "}\n";
+    out << "  " << Name(f.name) << ": {force: " << PointName(m, f.point) << ", direction: [" << Num(f.direction.x()) << ", "
+        << Num(f.direction.y()) << "], in: " << Name(m.links[f.direction_link].name) << ", magnitude: " << Quoted(f.magnitude) << "}\n";
   }
   for (const LinkTorque& t : loads.torques)
-    out << "  " << t.name << ": {torque: " << m.links[t.link].name << ", magnitude: " << Quoted(t.magnitude) << "}\n";
+    out << "  " << Name(t.name) << ": {torque: " << Name(m.links[t.link].name) << ", magnitude: " << Quoted(t.magnitude) << "}\n";
   for (const SpringDamper& s : loads.springs) {
-    out << "  " << s.name << ": {spring: [" << PointName(m, s.from) << ", " << PointName(m, s.to) << "], stiffness: " << Num(s.stiffness)
+    out << "  " << Name(s.name) << ": {spring: [" << PointName(m, s.from) << ", " << PointName(m, s.to) << "], stiffness: " << Num(s.stiffness)
         << ", free_length: " << Num(s.free_length) << ", damping: " << Num(s.damping) << "}\n";
   }
 }
@@ -60,41 +80,40 @@ std::string WriteMechanismYaml(const Mechanism& m, const std::string& comment, c
   std::istringstream lines(comment);
   for (std::string line; std::getline(lines, line);) out << "# " << line << "\n";
   const bool angle = m.InputIsAngle();
-  out << "koppel: 1\nname: " << m.name << "\n";
+  out << "koppel: 1\nname: " << Name(m.name) << "\n";
   if (!parameters.empty()) {
     out << "parameters:\n";
-    for (const auto& [n, v] : parameters) out << "  " << n << ": " << Num(v) << "\n";
+    for (const auto& [n, v] : parameters) out << "  " << Name(n) << ": " << Num(v) << "\n";
   }
   out << "links:\n";
   for (const Link& l : m.links) {
-    out << "  " << l.name << ":\n";
+    out << "  " << Name(l.name) << ":\n";
     if (l.is_frame) out << "    frame: true\n";
     out << "    points:\n";
-    for (const NamedPoint& p : l.points) out << "      " << p.name << ": [" << Num(p.local.x()) << ", " << Num(p.local.y()) << "]\n";
+    for (const NamedPoint& p : l.points) out << "      " << Name(p.name) << ": [" << Num(p.local.x()) << ", " << Num(p.local.y()) << "]\n";
     if (loads) WriteMass(out, *loads, &l - m.links.data());
   }
   out << "joints:\n";
   for (const Joint& j : m.joints) {
-    out << "  " << j.name << ": {type: " << (j.type == JointType::kRevolute ? "R" : "P") << ", links: [" << m.links[j.link_a].name
-        << ", " << m.links[j.link_b].name << "], points: [" << m.links[j.link_a].points[j.point_a].name << ", "
-        << m.links[j.link_b].points[j.point_b].name << "]";
+    out << "  " << Name(j.name) << ": {type: " << (j.type == JointType::kRevolute ? "R" : "P") << ", links: [" << Name(m.links[j.link_a].name) << ", " << Name(m.links[j.link_b].name)
+        << "], points: [" << Name(m.links[j.link_a].points[j.point_a].name) << ", " << Name(m.links[j.link_b].points[j.point_b].name) << "]";
     if (j.type == JointType::kPrismatic) out << ", axis: [" << Num(j.axis.x()) << ", " << Num(j.axis.y()) << "], angle: " << Num(RadToDeg(j.angle));
     out << "}\n";
   }
-  out << "drive: {joint: " << m.joints[m.drive.joint].name << ", zero: " << Num(angle ? RadToDeg(m.drive.zero) : m.drive.zero)
-      << ", name: " << m.drive.input_name << "}\n";
+  out << "drive: {joint: " << Name(m.joints[m.drive.joint].name) << ", zero: " << Num(angle ? RadToDeg(m.drive.zero) : m.drive.zero)
+      << ", name: " << Name(m.drive.input_name) << "}\n";
   if (!m.outputs.empty()) {
     out << "outputs:\n";
     for (const Output& o : m.outputs) {
-      out << "  " << o.name << ": {";
+      out << "  " << Name(o.name) << ": {";
       switch (o.kind) {
-        case OutputKind::kJoint: out << "joint: " << m.joints[o.joint].name; break;
-        case OutputKind::kLinkAngle: out << "link: " << m.links[o.link].name; break;
+        case OutputKind::kJoint: out << "joint: " << Name(m.joints[o.joint].name); break;
+        case OutputKind::kLinkAngle: out << "link: " << Name(m.links[o.link].name); break;
         case OutputKind::kPoint: out << "point: " << PointName(m, o.p); break;
         case OutputKind::kDistance: out << "distance: [" << PointName(m, o.p) << ", " << PointName(m, o.q) << "]"; break;
         case OutputKind::kDirection: out << "direction: [" << PointName(m, o.p) << ", " << PointName(m, o.q) << "]"; break;
         case OutputKind::kTransmissionAngle:
-          out << "transmission: {coupler: " << m.links[o.link].name << ", joint: " << m.joints[o.joint].name << "}";
+          out << "transmission: {coupler: " << Name(m.links[o.link].name) << ", joint: " << Name(m.joints[o.joint].name) << "}";
           break;
       }
       const bool zero_allowed = o.kind == OutputKind::kLinkAngle || o.kind == OutputKind::kDirection ||

@@ -1,5 +1,8 @@
 #include "yaml_reader.hpp"
 
+#include "koppel/core/limits.hpp"
+#include "koppel/core/printable_text.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -123,6 +126,21 @@ std::optional<std::string> YamlReader::Text(const YAML::Node& node, const std::s
   if (node.IsScalar()) return node.Scalar();
   Error(node, path, "expected text, found " + NodeKind(node));
   return std::nullopt;
+}
+
+bool YamlReader::CheckName(const YAML::Node& node, const std::string& path, const std::string& what, const std::string& name) {
+  if (name.size() > kMaxNameBytes) {
+    Error(node, path, "the " + what + " name is " + std::to_string(name.size()) + " bytes long, more than the limit of " +
+                          std::to_string(kMaxNameBytes) + " (kMaxNameBytes)");
+    return false;
+  }
+  if (const std::optional<Unprintable> u = FirstUnprintable(name)) {
+    // the name is shown escaped (Diagnostic::ToString), so the message says what to look for
+    Error(node, path, "the " + what + " name '" + name + "' holds " + u->Describe() + " at byte " + std::to_string(u->offset + 1) +
+                          ": a name must be printable UTF-8 text, without control characters");
+    return false;
+  }
+  return true;
 }
 
 std::optional<double> YamlReader::Number(const YAML::Node& node, const std::string& path) {

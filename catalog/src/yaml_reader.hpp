@@ -33,6 +33,11 @@ class YamlReader {
   YAML::Node Require(const YAML::Node& map, const std::string& key, const std::string& path);
 
   std::optional<std::string> Text(const YAML::Node& node, const std::string& path);
+  // The rule for a name the file gives (a link, point, joint, output, load, the drive's input, a
+  // parameter; `what` says which): printable text (koppel/core/printable_text.hpp: valid UTF-8,
+  // no control character) of at most kMaxNameBytes, so that every table, picture and page can
+  // show it. Reports at `node` and returns false otherwise.
+  bool CheckName(const YAML::Node& node, const std::string& path, const std::string& what, const std::string& name);
   // A number or a formula over the parameters.
   std::optional<double> Number(const YAML::Node& node, const std::string& path);
   std::optional<double> Number(const YAML::Node& node, const std::string& path, const ParameterSet& parameters);

@@ -193,6 +193,34 @@ TEST_CASE("bad input: each problem with its line and a clear message", "[reader]
   }
 }
 
+TEST_CASE("every name the file gives must be printable: refused at its line and column", "[reader]") {
+  // YAML's escape \e is ESC (U+001B), \a BEL; each name kind of the file, one at a time
+  struct Case {
+    std::string from, to, needle, what;
+  };
+  for (const Case& c : {Case{"  crank:\n", "  \"crank\\e\":\n", "crank\\e", "link"},
+                        Case{"B: [l2, 0], K:", "B: [l2, 0], \"K\\a\":", "K\\a", "point"},
+                        Case{"  B0: {type: R", "  \"B0\\e\": {type: R", "B0\\e", "joint"},
+                        Case{"  psi: {link", "  \"psi\\e\": {link", "psi\\e", "output"},
+                        Case{"drive: {joint: A0, zero: 90}", "drive: {joint: A0, zero: 90, name: \"phi\\e\"}", "phi\\e", "drive's input"},
+                        Case{"  l1: 1\n", "  l1: 1\n  \"l9\\e\": 2\n", "l9\\e", "parameter"}}) {
+    const std::string text = Replace(kGood, c.from, c.to);
+    const std::vector<Diagnostic> d = Bad(text);
+    REQUIRE_FALSE(d.empty());
+    INFO(d[0].ToString());
+    CHECK(d[0].line == LineOf(text, c.needle));
+    // the column of the name's opening quote (1-based)
+    const size_t line_start = text.rfind('\n', text.find(c.needle)) + 1;
+    CHECK(d[0].column == static_cast<int>(text.find(c.needle) - line_start));
+    CHECK_THAT(d[0].message, Catch::StartsWith("the " + c.what + " name '"));
+    CHECK_THAT(d[0].message, Catch::Contains("a name must be printable UTF-8 text"));
+  }
+  // and at most kMaxNameBytes (128) long
+  const std::string text = Replace(kGood, "  psi: {link", "  " + std::string(129, 'p') + ": {link");
+  CHECK_THAT(Bad(text).at(0).message, Catch::Contains("more than the limit of 128 (kMaxNameBytes)"));
+  CHECK(Bad(text).at(0).line == LineOf(text, std::string(129, 'p')));
+}
+
 TEST_CASE("all problems of a file are reported at once", "[reader]") {
   std::string text = Replace(kGood, "links: [coupler, rocker]", "links: [coupler, crank2]");
   text = Replace(text, "point: coupler.K", "point: coupler.Q");

@@ -1,7 +1,9 @@
 // The YAML writer: for every catalog entry, write -> read gives the same mechanism (links,
 // points, joints, drive, outputs, assembly hint) and the same motion (a sweep of both agrees
-// to rounding). Reference: the entry as the reader reads it from the catalog.
+// to rounding). Reference: the entry as the reader reads it from the catalog. Names that YAML
+// would misread (quotes, commas, markup, null, numbers) come back as they were.
 #include "koppel/catalog/catalog.hpp"
+#include "koppel/catalog/mechanism_file.hpp"
 #include "koppel/catalog/mechanism_writer.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
@@ -96,6 +98,25 @@ TEST_CASE("write -> read gives the same mechanism for every catalog entry", "[ca
     REQUIRE(b.complete());
     CHECK((a.outputs - b.outputs).cwiseAbs().maxCoeff() <= 1e-9);
   }
+}
+
+TEST_CASE("names with quotes, commas, colons, markup and formulas are quoted and read back as they were", "[catalog][writer]") {
+  // reference: the reader's reading of tests/data/hostile-names.yaml
+  const MechanismFile original = ReadMechanismFile(std::string(KOPPEL_TEST_DATA_DIR) + "/hostile-names.yaml");
+  const std::string yaml = WriteMechanismYaml(original.mechanism, "hostile names", original.sweep, original.parameters.Values());
+  SameMechanism(original.mechanism, ParseMechanismText(yaml, "copy.yaml").mechanism);
+  // names YAML would take for something else: null, a truth value, a number, a comment, a map
+  Mechanism m = original.mechanism;
+  m.links[1].name = "null";
+  m.links[2].name = "yes";
+  m.links[3].name = "# not a comment: {a: 1}";
+  m.joints[0].name = "1.5";
+  m.outputs[0].name = "~";
+  SameMechanism(m, ParseMechanismText(WriteMechanismYaml(m, "", original.sweep, original.parameters.Values()), "copy.yaml").mechanism);
+  // a name the reader refuses (a control character, from the API) is written readable: U+FFFD
+  m.outputs[0].name = "s\x1b[31m";
+  const Mechanism read = ParseMechanismText(WriteMechanismYaml(m, "", original.sweep, original.parameters.Values()), "copy.yaml").mechanism;
+  CHECK(read.outputs[0].name == "s\uFFFD[31m");
 }
 
 }  // namespace koppel::mechanism_writer_test

@@ -3,6 +3,8 @@
 // file's problems are collected; "did you mean" picks the nearest key by edit distance.
 #include "yaml_reader.hpp"
 
+#include "koppel/core/limits.hpp"
+
 #include <catch2/catch.hpp>
 
 namespace koppel::yaml_reader_test {
@@ -83,6 +85,35 @@ TEST_CASE("unknown and duplicate keys, required keys, key paths", "[yaml_reader]
   CHECK(s.diagnostics()[0].path == "p.a");
   CHECK(Child("", "links") == "links");
   CHECK(Index(Child("joints", "A"), 1) == "joints.A[1]");
+}
+
+TEST_CASE("a name is printable UTF-8 of at most kMaxNameBytes; otherwise an error at its key", "[yaml_reader]") {
+  YamlReader r("m.yaml", nullptr);
+  // markup, quotes, commas, formulas and any script are printable: taken as they are
+  const YAML::Node good = YAML::Load("\"s<img src=x onerror=\\\"f()\\\">, <!--<script> =HYPERLINK(1) σ ✓\": 1\n");
+  CHECK(r.CheckName(good.begin()->first, "links", "link", good.begin()->first.Scalar()));
+  CHECK(r.CheckName(good, "x", "link", std::string(kMaxNameBytes, 'x')));  // the limit itself
+  CHECK(r.diagnostics().empty());
+  // YAML's escapes \e (ESC) and \0 (NUL) in keys on line 2; the first at column 5 (counted by hand: its opening quote)
+  const YAML::Node bad = YAML::Load("a: 1\nb: {\"crank\\e[31m\": 1, \"cr\\0\": 2}\n");
+  auto key = bad["b"].begin();
+  CHECK_FALSE(r.CheckName(key->first, "links.crank\x1b[31m", "link", key->first.Scalar()));
+  ++key;
+  CHECK_FALSE(r.CheckName(key->first, "links.cr", "link", key->first.Scalar()));
+  CHECK_FALSE(r.CheckName(bad["a"], "outputs.x", "output", std::string(kMaxNameBytes + 1, 'x')));
+  CHECK_FALSE(r.CheckName(bad["a"], "drive.name", "drive's input", "Gr\xFC\xDF"));  // Latin-1, not UTF-8
+  REQUIRE(r.diagnostics().size() == 4);
+  const Diagnostic& esc = r.diagnostics()[0];
+  CHECK(esc.line == 2);
+  CHECK(esc.column == 5);
+  CHECK(esc.message == "the link name 'crank\x1b[31m' holds U+001B at byte 6: a name must be printable UTF-8 text, without control characters");
+  // shown to a person with the control character escaped (Diagnostic::ToString)
+  CHECK(esc.ToString() ==
+        "m.yaml:2:5: the link name 'crank\\x1B[31m' holds U+001B at byte 6: a name must be printable UTF-8 text, without control "
+        "characters (links.crank\\x1B[31m)");
+  CHECK_THAT(r.diagnostics()[1].message, Catch::Contains("holds U+0000 at byte 3"));
+  CHECK(r.diagnostics()[2].message == "the output name is 129 bytes long, more than the limit of 128 (kMaxNameBytes)");
+  CHECK_THAT(r.diagnostics()[3].message, Catch::Contains("holds the byte 0xFC (not UTF-8) at byte 3"));
 }
 
 TEST_CASE("the nearest candidate is fewer than three edits away", "[yaml_reader]") {

@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -58,6 +59,9 @@ TEST_CASE("every bad input exits with its code, message and line", "[cli][bad]")
     }
     CHECK(r.out.find("internal error") == std::string::npos);
     CHECK(r.err.find("internal error") == std::string::npos);
+    // the messages go to a terminal: no control character but the line ends (a name's ESC is
+    // shown as \x1B, never sent)
+    CHECK(std::none_of(r.err.begin(), r.err.end(), [](char c) { return (static_cast<unsigned char>(c) < 0x20 && c != '\n') || c == '\x7f'; }));
   }
   // a file added to the folder without its expectation is a test nobody runs
   for (const auto& item : std::filesystem::directory_iterator(folder)) {

@@ -56,3 +56,38 @@ export function inkOf(png, light) {
   }
   return { share: ink / (png.width * png.height), colours: colours.size };
 }
+
+// tests/data/hostile-names.yaml: its path (from this file's place in the source tree) and the
+// names it gives, each holding markup that would run a script (an <img> or <svg> handler writing
+// '[X]' into document.title) or hide the page's scripts (<!--<script>) if a page took it for HTML.
+const kImg = "<img src=x onerror=\"document.title+='[X]'\">";
+export const hostile = {
+  file: new URL('../data/hostile-names.yaml', import.meta.url).pathname,
+  title: 'offset <!--<script> "quoted" & \'single\' </script> (hostile-names)',  // the page's: the file's title and id
+  fileTitle: 'offset <!--<script> "quoted" & \'single\' </script>',
+  drive: 'phi, deg ' + kImg,
+  s: 's, mm ' + kImg,
+  mu: 'mu <!--<script>',
+  k: '+K <svg onload="document.title+=\'[X]\'">',
+};
+
+// Records the dialogs a page opens (alert, confirm, prompt) and dismisses them; call before goto.
+export function watchDialogs(page) {
+  const dialogs = [];
+  page.on('dialog', (d) => { dialogs.push(d.message()); d.dismiss().catch(() => {}); });
+  return dialogs;
+}
+
+// No script of a hostile name ran on `page`: its title is `title` (no '[X]' added, over several
+// animation frames: the repro's handler ran on each), no dialog opened, and no element the names
+// hold (an img, anything with a handler attribute) is in the document.
+export async function checkNoScriptRan(check, id, page, dialogs, title) {
+  for (let frame = 0; frame < 3; ++frame) {
+    await page.waitForTimeout(150);
+    const now = await page.title();
+    check(now === title, `${id}: document.title is '${now}', expected '${title}'`);
+  }
+  check(dialogs.length === 0, `${id}: dialogs opened: ${dialogs.join(' | ')}`);
+  const injected = await page.evaluate(() => document.querySelectorAll('img, [onerror], [onload]').length);
+  check(injected === 0, `${id}: ${injected} elements from the names' markup in the document`);
+}

@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace koppel::plot_command_test {
@@ -16,6 +17,24 @@ namespace {
 pugi::xml_document Svg(const std::string& path) {
   REQUIRE(std::filesystem::exists(path));
   return test::ParseSvg(test::ReadText(path));
+}
+
+// `text` as one shell word: in single quotes, a quote in it as '\''
+std::string ShellWord(const std::string& text) {
+  std::string word = "'";
+  for (char c : text) word += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return word + "'";
+}
+
+// Every text and attribute value of the document, as an XML parser reads them.
+std::vector<std::string> Strings(const pugi::xml_node& root) {
+  std::vector<std::string> all;
+  for (const pugi::xpath_node& x : root.select_nodes("//node()")) {
+    const pugi::xml_node n = x.node();
+    if (n.type() == pugi::node_pcdata) all.emplace_back(n.value());
+    for (const pugi::xml_attribute& a : n.attributes()) all.emplace_back(a.value());
+  }
+  return all;
 }
 
 }  // namespace
@@ -94,6 +113,38 @@ TEST_CASE("draw: scheme, dead centres and trace for the seed mechanisms", "[cli]
   REQUIRE(test::RunKoppel("draw " + test::CatalogEntryPath("mzc-crank-rocker") + " --trace K -o " + out).exit_code == 0);
   CHECK(test::Subpaths(test::Find(Svg(out), "path", "trace").at(0)).at(0).size() == 361);  // the file's sweep: 0..360 by 1
   CHECK(test::RunKoppel("draw " + test::CatalogEntryPath("mzc-crank-rocker") + " --trace Q").exit_code == 2);
+}
+
+TEST_CASE("draw and plot of tests/data/hostile-names.yaml: well-formed SVG, the names as text", "[cli]") {
+  // the names hold quotes, commas, markup and formulas; reference: the fixture's names as pugixml
+  // reads them back, and no element their markup would make (img, script)
+  const std::string file = std::string(KOPPEL_TEST_DATA_DIR) + "/hostile-names.yaml";
+  const std::string img = "<img src=x onerror=\"document.title+='[X]'\">";
+  const std::string s = "s, mm " + img, k = "+K <svg onload=\"document.title+='[X]'\">";
+  test::TempDir dir;
+  const std::string out = (dir.path() / "h.svg").string();
+  for (const std::string& command : {"draw " + file + " --at 30 --deadcentres --trace " + ShellWord(k), "plot " + file + " --transfer " + ShellWord(s),
+                                     "plot " + file + " --curve " + ShellWord(k)}) {
+    INFO(command);
+    const test::RunResult r = test::RunKoppel(command + " -o " + out);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const auto doc = Svg(out);
+    CHECK(test::Find(doc, "img", "").empty());
+    CHECK(test::Find(doc, "script", "").empty());
+    const std::vector<std::string> strings = Strings(doc);
+    const auto holds = [&](const std::string& name) {
+      return std::any_of(strings.begin(), strings.end(), [&](const std::string& t) { return t.find(name) != std::string::npos; });
+    };
+    if (command.rfind("draw", 0) == 0) {
+      for (const std::string link : {"=HYPERLINK(\"http://x\",\"crank\")", "coupler <img src=x onerror=alert(1)>", "Schieber σ ✓"})
+        CHECK(holds(link));
+      CHECK(holds("A, \"Ä\""));  // a point's label
+    } else {
+      // the transfer plot names the output; the coupler curve the point it traces (the crank's @K)
+      CHECK(holds(command.find("--transfer") != std::string::npos ? s : "@K"));
+    }
+  }
 }
 
 TEST_CASE("view writes one self-contained page", "[cli]") {

@@ -29,11 +29,7 @@ struct AnalyzeArgs {
 // the rows: the input, every output's derivatives 0..order, and the singular flag. A transfer
 // function that cannot be computed at a row (above the row's valid order, or not defined there:
 // an output that is not differentiable) is NaN in the table: empty in CSV, null in JSON, never a number.
-void AppendCsvHeader(std::string& out, const SweepTable& t) {
-  const size_t width = t.columns.size();
-  for (size_t c = 0; c < width; ++c) out += (c ? "," : "") + t.columns[c];
-  out += "\n";
-}
+void AppendCsvHeader(std::string& out, const SweepTable& t) { out += CsvLine(t.columns); }
 
 // The row is written in place at the end of `out` (room for every cell, then cut to length):
 // one resize a row instead of an append a cell, for analyze's millions of cells.

@@ -4,6 +4,7 @@
 #include "common.hpp"
 
 #include "koppel/api/catalog.hpp"
+#include "koppel/core/printable_text.hpp"
 #include "koppel/core/structure.hpp"
 
 #include <fmt/core.h>
@@ -54,8 +55,11 @@ int Count(const std::map<std::string, int>& m, const std::string& k) {
 }  // namespace
 }  // namespace catalog_command
 
-std::string TextTable(const std::vector<std::vector<std::string>>& rows) {
+std::string TextTable(const std::vector<std::vector<std::string>>& raw_rows) {
   using namespace catalog_command;
+  std::vector<std::vector<std::string>> rows = raw_rows;
+  for (auto& row : rows)
+    for (std::string& cell : row) cell = PrintableText(cell, Replacement::kReplacementCharacter);
   std::vector<size_t> widths;
   for (const auto& row : rows) {
     if (widths.size() < row.size()) widths.resize(row.size(), 0);
@@ -71,14 +75,6 @@ std::string TextTable(const std::vector<std::vector<std::string>>& rows) {
     out += line + "\n";
   }
   return out;
-}
-
-std::string CsvField(const std::string& s) {
-  using namespace catalog_command;
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
 }
 
 std::string Join(const std::vector<std::string>& items, const std::string& separator) {

@@ -36,8 +36,9 @@ std::string CatalogDirectoryOf(const CatalogArgs& args);  // --catalog, or the b
 void RefuseUnknownId(const std::string& refused);
 
 // Rows of text as columns padded to their widest cell (UTF-8 aware), two spaces apart.
+// A cell's control characters are written as U+FFFD (koppel/core/printable_text.hpp): the
+// table goes to a terminal. CSV cells: CsvField (common.hpp).
 std::string TextTable(const std::vector<std::vector<std::string>>& rows);
-std::string CsvField(const std::string& text);
 // "4 (4 binary)", "7 (4 D, 3 S)"
 std::string LinksText(const CatalogFeatures& features);
 std::string JointsText(const CatalogFeatures& features);

@@ -20,15 +20,9 @@ struct Args {
 struct Rows {
   std::vector<std::array<std::string, 3>> rows;
   void Add(const std::string& quantity, const std::string& value, const std::string& unit) { rows.push_back({quantity, value, unit}); }
-  static std::string Quoted(const std::string& text) {
-    if (text.find_first_of(",\"\n") == std::string::npos) return text;
-    std::string quoted = "\"";
-    for (char ch : text) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-    return quoted + "\"";
-  }
   std::string ToCsv() const {
     std::string csv = "quantity,value,unit\n";
-    for (const auto& r : rows) csv += r[0] + "," + Quoted(r[1]) + "," + r[2] + "\n";
+    for (const auto& r : rows) csv += CsvLine({r[0], r[1], r[2]});
     return csv;
   }
 };

@@ -1,6 +1,7 @@
 #include "common.hpp"
 
 #include "koppel/core/number_text.hpp"
+#include "koppel/core/printable_text.hpp"
 
 #include "koppel/core/expression.hpp"
 #include "koppel/koppel.hpp"  // Version
@@ -14,7 +15,8 @@
 
 namespace koppel::cli {
 
-void Complain(const std::string& message) { std::cerr << "koppel: " << message << "\n"; }
+// a name from a flag or a caller with ESC or BEL in it is shown escaped, never sent to the terminal
+void Complain(const std::string& message) { std::cerr << "koppel: " << PrintableText(message, Replacement::kEscape, "\n") << "\n"; }
 
 void PrintNotes(const std::string& path, const std::vector<std::string>& notes) {
   for (const std::string& note : notes) Complain(path + ": note: " + note);
@@ -97,10 +99,46 @@ char* WriteNumber(char* out, double value) {
   return WriteG12(out, value);
 }
 
+namespace {
+
+// A decimal number as a spreadsheet reads one: sign, digits with at most one point, exponent.
+bool IsDecimalNumber(std::string_view text) {
+  size_t i = text.empty() || (text[0] != '+' && text[0] != '-') ? 0 : 1;
+  const auto digits = [&] {
+    const size_t start = i;
+    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
+    return i - start;
+  };
+  size_t mantissa = digits();
+  if (i < text.size() && text[i] == '.') ++i, mantissa += digits();
+  if (mantissa == 0) return false;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  return i == text.size();
+}
+
+}  // namespace
+
+std::string CsvField(std::string_view text) {
+  std::string cell = PrintableText(text, Replacement::kReplacementCharacter);
+  if (!cell.empty() && std::string_view("=+-@").find(cell[0]) != std::string_view::npos && !IsDecimalNumber(cell)) cell.insert(0, 1, '\'');
+  if (cell.find_first_of(",\"\r\n") == std::string::npos) return cell;
+  std::string quoted = "\"";
+  for (char c : cell) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+std::string CsvLine(const std::vector<std::string>& cells) {
+  std::string line;
+  for (size_t i = 0; i < cells.size(); ++i) line += (i ? "," : "") + CsvField(cells[i]);
+  return line + "\n";
+}
+
 std::string Table::ToCsv() const {
-  std::string out;
-  for (size_t i = 0; i < columns.size(); ++i) out += (i ? "," : "") + columns[i];
-  out += "\n";
+  std::string out = CsvLine(columns);
   for (const auto& row : rows) {
     for (size_t i = 0; i < row.size(); ++i) out += (i ? "," : "") + FormatNumber(row[i]);
     out += "\n";
@@ -121,14 +159,12 @@ nlohmann::json Table::ToJson() const {
 }
 
 std::string MixedTable::ToCsv() const {
-  std::string out;
-  for (size_t i = 0; i < columns.size(); ++i) out += (i ? "," : "") + columns[i];
-  out += "\n";
+  std::string out = CsvLine(columns);
   for (const auto& row : rows) {
     for (size_t i = 0; i < row.size(); ++i) {
       if (i) out += ',';
       if (const double* v = std::get_if<double>(&row[i])) AppendNumber(out, *v);
-      if (const std::string* w = std::get_if<std::string>(&row[i])) out += *w;
+      if (const std::string* w = std::get_if<std::string>(&row[i])) out += CsvField(*w);
     }
     out += "\n";
   }
@@ -172,7 +208,7 @@ int ResolveScalarOutput(const Mechanism& m, const std::string& name, const std::
 
 std::string Summary::ToCsv() const {
   std::string out = "quantity,value,unit\n";
-  for (size_t i = 0; i < quantity.size(); ++i) out += quantity[i] + "," + FormatNumber(value[i]) + "," + unit[i] + "\n";
+  for (size_t i = 0; i < quantity.size(); ++i) out += CsvField(quantity[i]) + "," + FormatNumber(value[i]) + "," + CsvField(unit[i]) + "\n";
   return out;
 }
 

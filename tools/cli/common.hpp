@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -115,6 +116,17 @@ void AppendNumber(std::string& out, double value);
 // The same written at `out`, which has room for koppel::kG12Chars (number_text.hpp); returns the end.
 char* WriteNumber(char* out, double value);
 
+// The one writer of a CSV cell of text (a name, a column head, a word), for every command's CSV:
+// RFC 4180, quoted (a quote doubled) when it holds a comma, a quote or a line break; a cell a
+// spreadsheet would take for a formula (=, +, -, @ first, and not a number such as -1.5) gets a
+// leading ' (OWASP's "CSV injection"); a character that is not printable
+// (koppel/core/printable_text.hpp: a control character, a byte that is not UTF-8) becomes U+FFFD,
+// so that a table written to a terminal holds no escape sequence. The file reader refuses such
+// names; the API and the Python module may still pass one.
+std::string CsvField(std::string_view text);
+// Text cells (a header) as one CSV line: each a CsvField, commas between, a newline.
+std::string CsvLine(const std::vector<std::string>& cells);
+
 struct Table {
   std::vector<std::string> columns;
   std::vector<std::vector<double>> rows;
@@ -135,7 +147,7 @@ struct MixedTable {
   std::string Text(const std::string& format) const;
 };
 
-// Prints "koppel: message" on stderr.
+// Prints "koppel: message" on stderr, a control character in it (but a line end) escaped ("\x1B").
 void Complain(const std::string& message);
 // "koppel: PATH: note: ..." on stderr for each of a mechanism's admission notes.
 void PrintNotes(const std::string& path, const std::vector<std::string>& notes);

@@ -18,7 +18,7 @@ struct Args {
 
 std::string Csv(const std::vector<NamedValue>& q) {
   std::string csv = "quantity,value,unit\n";
-  for (const NamedValue& v : q) csv += v.name + "," + (v.value ? FormatNumber(*v.value) : "") + "," + v.unit + "\n";
+  for (const NamedValue& v : q) csv += CsvField(v.name) + "," + (v.value ? FormatNumber(*v.value) : "") + "," + CsvField(v.unit) + "\n";
   return csv;
 }
 

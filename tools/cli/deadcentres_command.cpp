@@ -75,9 +75,9 @@ std::string Json(const Model& model, const DeadCentres& d, const Summary& summar
 }
 
 std::string Csv(const Model& model, const DeadCentres& d) {
-  std::string csv = "kind," + model.input_name() + "," + d.output + "," + d.output + "_d2\n";
+  std::string csv = CsvLine({"kind", model.input_name(), d.output, d.output + "_d2"});
   for (const DeadCentrePoint& p : d.points)
-    csv += p.kind + "," + FormatNumber(p.input) + "," + FormatNumber(p.value) + "," + FormatNumber(p.second) + "\n";
+    csv += CsvField(p.kind) + "," + FormatNumber(p.input) + "," + FormatNumber(p.value) + "," + FormatNumber(p.second) + "\n";
   return csv;
 }
 

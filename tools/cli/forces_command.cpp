@@ -22,9 +22,7 @@ struct ForcesArgs {
 };
 
 std::string ToCsv(const ForcesTable& table) {
-  std::string out;
-  for (size_t c = 0; c < table.columns.size(); ++c) out += (c ? "," : "") + table.columns[c];
-  out += "\n";
+  std::string out = CsvLine(table.columns);
   for (const std::vector<std::optional<double>>& row : table.rows) {
     for (size_t c = 0; c < row.size(); ++c) {
       if (c) out += ",";

@@ -42,7 +42,7 @@ void RunPoles(const Args& args, const Model& model, double at) {
     std::string csv = "link_a,link_b,kind,pole_x,pole_y,direction_x,direction_y\n";
     for (const InstantCentreEntry& c : r.centres) {
       const bool finite = c.defined && !c.at_infinity;
-      csv += c.link_a + "," + c.link_b + "," + Kind(c) + "," + (finite ? FormatNumber(c.position.x) + "," + FormatNumber(c.position.y) : ",") +
+      csv += CsvField(c.link_a) + "," + CsvField(c.link_b) + "," + Kind(c) + "," + (finite ? FormatNumber(c.position.x) + "," + FormatNumber(c.position.y) : ",") +
              "," + (c.at_infinity ? FormatNumber(c.direction.x) + "," + FormatNumber(c.direction.y) : ",") + "\n";
     }
     WriteOutput(args.out, csv);
@@ -79,9 +79,7 @@ void RunCentrodes(const Args& args, const Model& model, double at) {
     if (!r.message.empty()) j["message"] = r.message;
     WriteOutput(args.out, JsonText(j));
   } else {
-    std::string csv;
-    for (size_t c = 0; c < columns.size(); ++c) csv += (c ? "," : "") + columns[c];
-    csv += "\n";
+    std::string csv = CsvLine(columns);
     for (size_t i = 0; i < r.inputs.size(); ++i) {
       const auto row = cells(i);
       for (size_t c = 0; c < row.size(); ++c) csv += (c ? "," : "") + Number(row[c]);

@@ -138,11 +138,9 @@ void RunDeadCentre(const Args& args) {
 }
 
 std::string ChartCsv(const DesignChart& chart) {
-  std::string out;
-  for (size_t i = 0; i < chart.columns.size(); ++i) out += (i ? "," : "") + chart.columns[i];
-  out += "\n";
+  std::string out = CsvLine(chart.columns);
   for (const auto& row : chart.rows) {
-    for (size_t i = 0; i < row.size(); ++i) out += (i ? "," : "") + (row[i].number ? FormatNumber(*row[i].number) : row[i].word);
+    for (size_t i = 0; i < row.size(); ++i) out += (i ? "," : "") + (row[i].number ? FormatNumber(*row[i].number) : CsvField(row[i].word));
     out += "\n";
   }
   return out;

@@ -29,9 +29,7 @@ struct Args {
 constexpr double kProgressSolves = 2e5;
 
 std::string Csv(const std::vector<std::string>& columns, const std::vector<std::vector<std::optional<double>>>& rows) {
-  std::string csv;
-  for (size_t c = 0; c < columns.size(); ++c) csv += (c ? "," : "") + columns[c];
-  csv += "\n";
+  std::string csv = CsvLine(columns);
   for (const auto& row : rows) {
     for (size_t c = 0; c < row.size(); ++c) csv += (c ? "," : "") + (row[c] ? FormatNumber(*row[c]) : std::string());
     csv += "\n";

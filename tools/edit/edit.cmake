@@ -23,7 +23,8 @@ file(GLOB kernel CONFIGURE_DEPENDS ${root}/solver/kernel/src/*.cpp)
 file(GLOB analysis CONFIGURE_DEPENDS ${root}/solver/analysis/src/*.cpp)
 list(FILTER analysis EXCLUDE REGEX "simulation\\.cpp$")  # the equation of motion: not on the page
 set(sources ${kernel} ${analysis})
-foreach(s core/src/mechanism core/src/parameter_set core/src/structure core/src/transmission core/src/diagnostic core/src/loads core/src/build
+foreach(s core/src/mechanism core/src/parameter_set core/src/structure core/src/transmission core/src/diagnostic
+          core/src/printable_text core/src/loads core/src/build
           tools/api/src/model tools/api/src/analyses tools/api/src/display tools/api/src/sweep_layout tools/api/src/admission
           tools/api/src/editor_mechanism catalog/src/mechanism_writer tools/edit/wasm/module tools/edit/wasm/absent)
   list(APPEND sources ${root}/${s}.cpp)

@@ -211,7 +211,8 @@
     const r = svg.getBoundingClientRect();
     drag.to = unpx(e.clientX - r.left, e.clientY - r.top);
     // the handle follows the pointer; the mechanism is solved when it is let go
-    const handle = svg.querySelector('circle[data-joint="' + state.mechanism.joints[drag.joint].name + '"]');
+    // a joint's name may hold quotes: escaped for the selector
+    const handle = svg.querySelector('circle[data-joint="' + CSS.escape(state.mechanism.joints[drag.joint].name) + '"]');
     if (handle) { handle.setAttribute('cx', e.clientX - r.left); handle.setAttribute('cy', e.clientY - r.top); }
   });
   svg.addEventListener('pointerup', () => {
@@ -314,9 +315,15 @@
       c.cursor.style.left = c.u.valToPos(row[0], 'x') + 'px';
       c.u.setLegend({ idx: i });
     }
-    let html = '';
-    solved.table.columns.forEach((c, k) => { if (k > 0 && k + 1 < row.length) html += '<tr><td>' + c + '</td><td>' + (row[k] === null ? '–' : Number(row[k]).toPrecision(8)) + '</td></tr>'; });
-    $('readout').innerHTML = html;
+    // a column's name is text, never markup (it comes from the mechanism file)
+    const rows = [];
+    solved.table.columns.forEach((c, k) => {
+      if (k === 0 || k + 1 >= row.length) return;
+      const tr = document.createElement('tr');
+      for (const text of [c, row[k] === null ? '–' : String(Number(row[k]).toPrecision(8))]) tr.appendChild(document.createElement('td')).textContent = text;
+      rows.push(tr);
+    });
+    $('readout').replaceChildren(...rows);
     // at a branch point the other branch is offered
     $('branch').hidden = !solved.table.singular_points.some((s) => s.kind === 'branch-point' && Math.abs(s.input - row[0]) <= Math.abs(state.mechanism.sweep.step));
   }
@@ -335,8 +342,12 @@
     for (const p of (state || pending).parameters) {
       const tr = document.createElement('tr');
       const span = Math.max(Math.abs(p.value), 1);
-      tr.innerHTML = '<td>' + p.name + '</td><td><input type="range"></td><td><input type="number"></td>';
-      const range = tr.querySelector('input[type=range]'), box = tr.querySelector('input[type=number]');
+      // the parameter's name as text, never markup
+      const range = document.createElement('input'), box = document.createElement('input');
+      range.type = 'range'; box.type = 'number';
+      tr.appendChild(document.createElement('td')).textContent = p.name;
+      tr.appendChild(document.createElement('td')).appendChild(range);
+      tr.appendChild(document.createElement('td')).appendChild(box);
       range.min = String(p.value - span); range.max = String(p.value + span); range.step = String(span / 200); range.value = String(p.value);
       box.value = String(p.value); box.step = 'any';
       range.disabled = box.disabled = !formulasTrusted;

@@ -91,9 +91,16 @@
       c.cursor.style.left = c.u.valToPos(shown, 'x') + 'px';
       c.u.setLegend({ idx: rowOfSample[i] });  // the legend shows the numbers at the current input
     }
-    let rows = '<tr><td>' + data.input_label + '</td><td>' + fmt(shown) + '</td></tr>';
-    for (const r of data.readout) rows += '<tr><td>' + r.label + '</td><td>' + fmt(r.values[i]) + '</td></tr>';
-    readout.innerHTML = rows;
+    const rows = [row(data.input_label, fmt(shown))];
+    for (const r of data.readout) rows.push(row(r.label, fmt(r.values[i])));
+    readout.replaceChildren(...rows);
+  }
+
+  // a readout row; a name is text, never markup (it comes from the mechanism file)
+  function row(label, number) {
+    const tr = document.createElement('tr');
+    for (const text of [label, number]) tr.appendChild(document.createElement('td')).textContent = text;
+    return tr;
   }
 
   function tick(now) {

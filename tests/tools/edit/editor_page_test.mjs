@@ -12,6 +12,8 @@
 // crank-rocker's rocker pivot B0 dragged; the exports (YAML, SVG, PNG) download; the screenshot
 // shows the scheme (ink and colours inside the scheme's box). A file that does not assemble
 // (--set e=9): koppel edit exits 1, the page says so, shows no number, and a slider fixes it.
+// tests/data/hostile-names.yaml (names and a title holding markup): no script of the names runs,
+// the page works (its readout shows the names as text, its sweep and toYaml() agree with the CLI).
 //
 // usage: node editor_page_test.mjs KOPPEL NODE_MODULES_DIR CHROMIUM CATALOG_DIR [SCREENSHOT.png]
 // (SCREENSHOT: where to write the page's screenshot, README's picture, README "The editor page").
@@ -20,7 +22,7 @@ import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { checker, launch, watch, checkQuiet, inkOf } from '../page_harness.mjs';
+import { checker, launch, watch, checkQuiet, inkOf, hostile, watchDialogs, checkNoScriptRan } from '../page_harness.mjs';
 
 const [koppel, npmDir, chromium, catalog, screenshotOut] = process.argv.slice(2);
 const require = createRequire(path.resolve(npmDir, 'package.json'));
@@ -56,16 +58,18 @@ function difference(page, cli) {
 const work = fs.mkdtempSync(path.join(os.tmpdir(), 'koppel-edit-'));
 const context = await launch(browserType, chromium, work, fs, path, { viewport: { width: 1250, height: 1100 }, acceptDownloads: true });
 
-// The page of catalog entry `id` (with `extra` flags), koppel edit's exit code checked.
-async function open(id, extra = [], exit = 0) {
+// The page of catalog entry `id` (or of the file `file`; with `extra` flags), koppel edit's exit
+// code checked; the dialogs it opens in `dialogs`.
+async function open(id, extra = [], exit = 0, file = path.join(catalog, id + '.yaml')) {
   const html = path.join(work, id + '.html');
-  const r = spawnSync(koppel, ['edit', path.join(catalog, id + '.yaml'), ...extra, '-o', html], { encoding: 'utf8' });
+  const r = spawnSync(koppel, ['edit', file, ...extra, '-o', html], { encoding: 'utf8' });
   check(r.status === exit, `koppel edit ${id} ${extra.join(' ')}: exit ${r.status}, expected ${exit}: ${r.stderr}`);
   const page = await context.newPage();
   const watched = await watch(page);
+  const dialogs = watchDialogs(page);
   await page.goto('file://' + html);
   await page.evaluate(() => window.koppel.ready);
-  return { page, watched, html };
+  return { page, watched, html, dialogs };
 }
 
 // The page's sweep over the CLI's range, against the CLI; then toYaml() read back by the CLI.
@@ -201,6 +205,25 @@ try {
     await compare(page, id, cli, 'fixed by the slider');
     // an unassemblable file logs its failure on the page, not in the console
     checkQuiet(check, id + ' --set e=9', watched);
+    await page.close();
+  }
+
+  // the issue's repros: an output named s<img onerror=...> ran its handler on every frame (the
+  // readout and the parameter table were built as HTML); a title with <!--<script> hid the
+  // page's scripts (window.koppel.ready never came)
+  {
+    const id = 'hostile-names';
+    const { page, watched, dialogs } = await open(id, [], 0, hostile.file);
+    await checkNoScriptRan(check, id, page, dialogs, hostile.title);
+    const cells = await page.$$eval('#readout tr td:first-child', (tds) => tds.map((td) => td.textContent));
+    for (const name of [hostile.s, hostile.mu, hostile.k + '_x'])
+      check(cells.includes(name), `${id}: the readout lacks '${name}': ${cells.join(' | ')}`);
+    check(await page.textContent('#title') === hostile.fileTitle, `${id}: the heading is '${await page.textContent('#title')}'`);
+    // the page's numbers and its YAML (names quoted for YAML) against the CLI
+    const cli = analyze(hostile.file);
+    check(cli.columns[0] === hostile.drive, `${id}: koppel analyze's first column is '${cli.columns[0]}'`);
+    await compare(page, id, cli, 'as read');
+    checkQuiet(check, id, watched);
     await page.close();
   }
 } finally {

@@ -7,6 +7,7 @@
 #include "support/mechanisms.hpp"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <random>
@@ -115,6 +116,21 @@ TEST_CASE("the convex hull of random points holds them all and turns left at eve
       for (const auto& p : points) CHECK(Cross(hull[i], hull[(i + 1) % n], p) >= -kRoundoff);
     }
   }
+}
+
+TEST_CASE("JSON in a page's script: no <, > or &, the same JSON read back", "[plot_support]") {
+  // the HTML parser's script data state (HTML Living Standard 13.2.5.4 ff.): "</script" ends the
+  // script, "<!--" then "<script" makes it swallow the page's next </script>; both the names of
+  // tests/data/hostile-names.yaml and the title of the issue's repro
+  const nlohmann::json data = {{"title", "offset <!--<script>"},
+                               {"names", {"s<img src=x onerror=\"document.title+='[X]'\">", "</script><b>x</b> & y", "a\u2028b\u2029c"}}};
+  const std::string embedded = plot::ScriptSafe(data.dump());
+  CHECK(embedded.find_first_of("<>&") == std::string::npos);
+  CHECK(embedded.find("\u2028") == std::string::npos);  // the raw line separator (U+2028 in UTF-8)
+  CHECK(embedded.find("\\u003c!--\\u003cscript\\u003e") != std::string::npos);
+  CHECK(embedded.find("\\u2028") != std::string::npos);
+  // reference: nlohmann's parser reads the embedded text back to the same value
+  CHECK(nlohmann::json::parse(embedded) == data);
 }
 
 }  // namespace

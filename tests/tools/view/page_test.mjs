@@ -3,7 +3,9 @@
 // the crank-rocker with a coupler curve (seed 003): the page is small, makes no network request,
 // logs no error, the animation moves the drawn mechanism, the screenshot is not blank, and the
 // input slider moves the charts' cursors to the input it shows; every chart's plot area is at
-// least 240 px tall.
+// least 240 px tall. For tests/data/hostile-names.yaml (names and a title holding markup): no
+// script of the names runs, the page's own scripts do (it animates, its readout shows the names
+// as text).
 //
 // usage: node page_test.mjs KOPPEL NODE_MODULES_DIR CHROMIUM CATALOG_DIR
 import { createRequire } from 'node:module';
@@ -11,7 +13,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { checker, launch, watch, checkQuiet, inkOf } from '../page_harness.mjs';
+import { checker, launch, watch, checkQuiet, inkOf, hostile, watchDialogs, checkNoScriptRan } from '../page_harness.mjs';
 
 const [koppel, npmDir, chromium, catalog] = process.argv.slice(2);
 const require = createRequire(path.resolve(npmDir, 'package.json'));
@@ -82,6 +84,31 @@ try {
     await page.waitForTimeout(300);
     check(paused === await transform(), `${id}: the mechanism moved while paused`);
 
+    checkQuiet(check, id, watched);
+    await page.close();
+  }
+
+  // the issue's repros: an output named s<img onerror=...> ran its handler on every animation
+  // frame (the readout was built as HTML); a title with <!--<script> hid the page's scripts
+  {
+    const id = 'hostile-names';
+    const html = path.join(work, id + '.html');
+    execFileSync(koppel, ['view', hostile.file, '-o', html]);
+    const page = await context.newPage();
+    const watched = await watch(page);
+    const dialogs = watchDialogs(page);
+    await page.goto('file://' + html);
+    await page.waitForSelector('#readout td', { state: 'attached' });
+    await checkNoScriptRan(check, id, page, dialogs, hostile.title);
+    const cells = await page.$$eval('#readout tr td:first-child', (tds) => tds.map((td) => td.textContent));
+    check(cells[0] === hostile.drive + ' [deg]', `${id}: the readout's first name is '${cells[0]}'`);
+    for (const name of [hostile.s, hostile.mu, hostile.k + '_x'])
+      check(cells.some((c) => c.startsWith(name)), `${id}: the readout lacks '${name}': ${cells.join(' | ')}`);
+    check(await page.textContent('#title') === hostile.title, `${id}: the heading is '${await page.textContent('#title')}'`);
+    const transform = () => page.getAttribute('svg.scheme g.link[data-link^="coupler"]', 'transform');
+    const first = await transform();
+    await page.waitForTimeout(300);
+    check(first !== await transform(), `${id}: the page does not animate`);
     checkQuiet(check, id, watched);
     await page.close();
   }

@@ -115,10 +115,27 @@ std::string Fill(const std::string& page, const std::vector<std::pair<std::strin
   return out + page.substr(at);
 }
 
-// JSON inside <script>: "</" must not appear.
-std::string ScriptSafe(std::string json) {
-  for (size_t p = json.find("</"); p != std::string::npos; p = json.find("</", p + 3)) json.replace(p, 2, "<\\/");
-  return json;
+// In JSON text <, > and & stand only inside strings, where \u003c, \u003e and \u0026 mean the
+// same; U+2028 and U+2029 (bytes E2 80 A8/A9) likewise become \u2028 and \u2029.
+std::string ScriptSafe(const std::string& json) {
+  std::string out;
+  out.reserve(json.size());
+  for (size_t i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (c == '<') {
+      out += "\\u003c";
+    } else if (c == '>') {
+      out += "\\u003e";
+    } else if (c == '&') {
+      out += "\\u0026";
+    } else if (c == '\xE2' && i + 2 < json.size() && json[i + 1] == '\x80' && (json[i + 2] == '\xA8' || json[i + 2] == '\xA9')) {
+      out += json[i + 2] == '\xA8' ? "\\u2028" : "\\u2029";
+      i += 2;
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 }  // namespace koppel::plot

@@ -41,8 +41,11 @@ void MarkGaps(const Mechanism& mechanism, const SampledRun& run, Panel& panel, b
 // A page template (koppel view, koppel edit) with {{NAME}} replaced in one pass (so a value never
 // gets substituted into); an unknown NAME stays as it is.
 std::string Fill(const std::string& page, const std::vector<std::pair<std::string, std::string>>& values);
-// JSON made safe inside <script>: "</" never appears.
-std::string ScriptSafe(std::string json);
+// The one embedding of JSON in a page's <script> (koppel view, koppel edit): every <, > and &
+// escaped (\u003c, \u003e, \u0026), so that neither "</script>" nor "<!--" (after which the HTML
+// parser takes the rest of the page for script data, and the page's scripts never run) can
+// appear whatever a name or title holds; U+2028 and U+2029 escaped too. The JSON means the same.
+std::string ScriptSafe(const std::string& json);
 
 // uPlot (script, style, licence), embedded by tools/view/view.cmake for the pages of koppel view
 // and koppel edit.

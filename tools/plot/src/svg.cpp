@@ -1,5 +1,7 @@
 #include "koppel/plot/svg.hpp"
 
+#include "koppel/core/printable_text.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -22,7 +24,7 @@ std::string Num(double value, int decimals) {
 std::string EscapeXml(const std::string& text) {
   std::string out;
   out.reserve(text.size());
-  for (char c : text) {
+  for (char c : PrintableText(text, Replacement::kReplacementCharacter, "\t\n\r")) {
     switch (c) {
       case '&': out += "&amp;"; break;
       case '<': out += "&lt;"; break;

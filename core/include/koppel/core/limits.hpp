@@ -38,6 +38,10 @@ inline constexpr int kMaxYamlDepth = 64;
 // formula is a line a person reads.
 inline constexpr std::size_t kMaxFormulaLength = 1000;
 
+// Bytes of one name in a file (a link, point, joint, output, load, the drive's input, a
+// parameter): a name labels a drawing and heads a column; 128 bytes is 32 to 128 characters.
+inline constexpr std::size_t kMaxNameBytes = 128;
+
 // Four-bars of one motion synthesis (synth motion: every ordered pair of dyads is a four-bar,
 // re-analysed through every pose at about 2.5 ms each, measured): 12 000 is half a minute on one
 // core. --grid 20 made 160 000 (7 min), --samples 1000 with four poses millions.

@@ -21,7 +21,11 @@ using Attrs = std::vector<Attr>;
 // NaN or infinity (a bug upstream: throws std::logic_error).
 std::string Num(double value, int decimals = 2);
 
-// Text with &, <, >, " and ' escaped for XML.
+// Text with &, <, >, " and ' escaped for XML, and every character XML 1.0 forbids (a control
+// character but tab, line feed and carriage return; U+FFFE, U+FFFF; a byte that is not UTF-8)
+// written as U+FFFD, so that the file stays well-formed whatever a name holds (the file reader
+// refuses such names; the API and the Python module may pass one). C1 and DEL, which XML allows
+// but no picture shows, become U+FFFD too (koppel/core/printable_text.hpp).
 std::string EscapeXml(const std::string& text);
 
 class Svg {

@@ -118,3 +118,91 @@ TEST_CASE("plot --tolerance draws the nominal output in its worst-case band, the
 }
 
 }  // namespace koppel::tolerance_command_test
+
+namespace koppel::tolerance_command_test {
+namespace {
+
+// relative: mc_std of 20000 samples against linear_std: one component of a pin uniform in its
+// disc has kurtosis 2, so the sampled standard deviation's relative standard error is
+// sqrt(2 - 1) / (2 sqrt(20000)) = 0.35 %; 2 % is 5.7 of them (c = 0.01 against lengths >= 1 keeps
+// the linear model's own error near c^2: the crank-rocker's mu differs by 0.04 % from 200 000 samples)
+constexpr double kPinMonteCarlo = 0.02;
+
+// One row of `koppel tolerance FILE ARGUMENTS --format json`, exit 0 required.
+nlohmann::json ToleranceRow(const std::string& entry, const std::string& arguments) {
+  const test::RunResult r = test::RunKoppel("tolerance " + test::CatalogEntryPath(entry) + " " + arguments + " --format json");
+  INFO(arguments << ": " << r.err);
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  REQUIRE(j["rows"].size() == 1);
+  return j["rows"][0];
+}
+
+}  // namespace
+
+TEST_CASE("tolerance: play at any joint of the crank-rocker moves mu alike, and the samples spread as linear_std says", "[cli][tolerance]") {
+  // the issue's repro: the crank-rocker (a, b, c, d = 1, 3.5, 3, 4) at phi = 60 deg. In one loop
+  // a gap delta at any joint enters the closure as a frame vector (d, 0) + delta would: its x
+  // part lengthens d, its y part turns the frame by delta_y / d (the crank angle less that), so
+  // |d mu / d delta| = sqrt((d mu / d d)^2 + (d mu / d phi / d)^2) at all four joints, from the
+  // catalog's closed form mu = min(gamma, 180 deg - gamma) (central differences, h = 1e-6)
+  const double a = 1, b = 3.5, c = 3, d = 4, phi = M_PI / 3, h = 1e-6;
+  const double dmu_dd = (test::CrankRockerMu(a, b, c, d + h, phi) - test::CrankRockerMu(a, b, c, d - h, phi)) / (2 * h);
+  const double dmu_dphi = (test::CrankRockerMu(a, b, c, d, phi + h) - test::CrankRockerMu(a, b, c, d, phi - h)) / (2 * h);
+  const double reference = std::hypot(dmu_dd, dmu_dphi / d) * 180 / M_PI;  // [deg per length]
+  for (const char* joint : {"A0", "A", "B", "B0"}) {
+    const nlohmann::json row = ToleranceRow("crank-rocker", std::string("--output mu --at 60 --tol a=1e-9 --clearance ") + joint +
+                                                                "=0.01 --samples 20000 --seed 1");
+    INFO("play at " << joint << ": " << row.dump());
+    CHECK(row[std::string("sens_clearance_") + joint].get<double>() == Approx(reference).epsilon(1e-7));
+    CHECK(row["mc_std"].get<double>() == Approx(row["linear_std"].get<double>()).epsilon(kPinMonteCarlo));
+    // and linear_std is the pin's c / 2 times that gradient (a's 1e-9 adds nothing visible)
+    CHECK(row["linear_std"].get<double>() == Approx(0.01 / 2 * reference).epsilon(1e-7));
+  }
+}
+
+TEST_CASE("tolerance: play at any joint of the slider-crank moves mu as the offset e does", "[cli][tolerance]") {
+  // seed 000: A gap's x part goes into s, its y part shifts the crank's pivot as e does:
+  // |d mu / d delta| = |d mu / d e| (closed form mu = 90 deg - |psi|, central differences)
+  const double phi = M_PI / 3, h = 1e-6;
+  const double reference = std::abs(test::SliderCrank(1, 2.6, 0.8 + h, phi).mu - test::SliderCrank(1, 2.6, 0.8 - h, phi).mu) / (2 * h) * 180 / M_PI;
+  for (const char* joint : {"A0", "A", "B"}) {
+    const nlohmann::json row = ToleranceRow("slider-crank-offset", std::string("--output mu --at 60 --tol l1=1e-9 --clearance ") + joint +
+                                                                       "=0.003 --samples 20000 --seed 1");
+    INFO("play at " << joint << ": " << row.dump());
+    CHECK(row[std::string("sens_clearance_") + joint].get<double>() == Approx(reference).epsilon(1e-7));
+    CHECK(row["mc_std"].get<double>() == Approx(row["linear_std"].get<double>()).epsilon(kPinMonteCarlo));
+  }
+}
+
+TEST_CASE("tolerance: the shares are each term's part of linear_std^2, for either distribution", "[cli][tolerance]") {
+  // README's example. Seed 000's closed form gives the sensitivities (central differences,
+  // h = 1e-6) and the pin's gain 1 / cos psi; each term's variance is (s T sigma)^2 with sigma =
+  // 1 / sqrt(3) (uniform) or 1 / 3 (normal), and (gain c)^2 / 4 for the pin in its disc
+  const double phi = M_PI / 3, h = 1e-6;
+  const std::vector<double> nominal = {1, 2.6, 0.8}, tolerance = {0.01, 0.02, 0.005};
+  std::vector<double> part;  // s_j T_j, then gain c
+  for (int j = 0; j < 3; ++j) {
+    std::vector<double> plus = nominal, minus = nominal;
+    plus[j] += h;
+    minus[j] -= h;
+    part.push_back((test::SliderCrank(plus[0], plus[1], plus[2], phi).s - test::SliderCrank(minus[0], minus[1], minus[2], phi).s) / (2 * h) * tolerance[j]);
+  }
+  const double sin_psi = -std::cos(phi) / 2.6 - 0.8 / 2.6;
+  part.push_back(0.003 / std::sqrt(1 - sin_psi * sin_psi));
+  for (const auto& [distribution, sigma] : {std::pair{"uniform", 1 / std::sqrt(3.0)}, std::pair{"normal", 1.0 / 3}}) {
+    const nlohmann::json row = ToleranceRow("slider-crank-offset", std::string("--output s --at 60 --tol l1=0.01 --tol l2=0.02 --tol e=0.005"
+                                                                               " --clearance A=0.003 --distribution ") + distribution);
+    std::vector<double> variance;
+    for (int j = 0; j < 3; ++j) variance.push_back(std::pow(part[j] * sigma, 2));
+    variance.push_back(std::pow(part[3], 2) / 4);
+    double total = 0;
+    for (double v : variance) total += v;
+    INFO(distribution << ": " << row.dump());
+    CHECK(row["linear_std"].get<double>() == Approx(std::sqrt(total)).epsilon(1e-8));
+    const char* keys[] = {"share_l1", "share_l2", "share_e", "share_clearance_A"};
+    for (int t = 0; t < 4; ++t) CHECK(row[keys[t]].get<double>() == Approx(variance[t] / total).epsilon(1e-7));
+  }
+}
+
+}  // namespace koppel::tolerance_command_test

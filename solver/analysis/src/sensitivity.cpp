@@ -31,13 +31,54 @@ Eigen::VectorXd PoseSensitivity(const PositionSolver& solver, const Eigen::Vecto
   return -solver.SolveWithJacobian((r_plus - r_minus) / (2 * perturbed.step[j]));
 }
 
-double OutputDirectional(const ConstraintSystem& system, int output, int component, const Eigen::VectorXd& q, const Eigen::VectorXd& dq) {
+namespace {
+
+// q + t dq as first-order series in t
+std::vector<Taylor<1>> Line(const Eigen::VectorXd& q, const Eigen::VectorXd& dq) {
   std::vector<Taylor<1>> line(q.size());
   for (int i = 0; i < q.size(); ++i) {
     line[i].c[0] = q[i];
     line[i].c[1] = dq[i];
   }
-  return system.Output(output, component, line.data()).c[1];
+  return line;
+}
+
+template <class T>
+T OutputOnLinksAt(const ConstraintSystem& system, int output, int component, std::vector<T> q) {
+  const Mechanism& m = system.mechanism();
+  const Output& o = m.outputs[output];
+  const TransmissionGeometry& g = system.transmission(output);
+  // a slide's direction is the frame's, the coupler line the coupler's own: nothing to move
+  if (o.kind != OutputKind::kTransmissionAngle || g.slide_joint >= 0) return system.Output(output, component, q.data());
+  const int coupler = g.coupler_to.link, i = system.CoordinateOf(coupler);
+  if (i < 0) return system.Output(output, component, q.data());  // no coupler to move (it is the frame)
+  T on_coupler[2], on_output_link[2];
+  system.GlobalPoint(g.coupler_to, q.data(), on_coupler);
+  system.GlobalPoint(JointPointOn(m.joints[o.joint], g.pivot.link), q.data(), on_output_link);
+  // a translation of the coupler: its direction stays, its joint point meets the output link's
+  q[i] += on_output_link[0] - on_coupler[0];
+  q[i + 1] += on_output_link[1] - on_coupler[1];
+  return system.Output(output, component, q.data());
+}
+
+}  // namespace
+
+double OutputDirectional(const ConstraintSystem& system, int output, int component, const Eigen::VectorXd& q, const Eigen::VectorXd& dq) {
+  return system.Output(output, component, Line(q, dq).data()).c[1];
+}
+
+void DisplacePin(Mechanism* mechanism, int joint, const Eigen::Vector2d& offset) {
+  Joint& j = mechanism->joints[joint];
+  Link& link = mechanism->links[j.link_b];
+  NamedPoint pin = link.points[j.point_b];
+  pin.name += "~play";
+  pin.local += offset;
+  link.points.push_back(pin);
+  j.point_b = static_cast<int>(link.points.size()) - 1;
+}
+
+double OutputOnLinks(const ConstraintSystem& system, int output, int component, const Eigen::VectorXd& q) {
+  return OutputOnLinksAt(system, output, component, std::vector<double>(q.data(), q.data() + q.size()));
 }
 
 void OutputSensitivity(const PositionSolver& solver, const Eigen::VectorXd& q, double input, const Perturbations& perturbed, int output,
@@ -60,11 +101,11 @@ Eigen::Vector2d ClearanceGradient(const PositionSolver& solver, const Eigen::Vec
   const ConstraintSystem& system = solver.system();
   Eigen::Vector2d gradient;
   for (int axis = 0; axis < 2; ++axis) {
-    // R rows are p_a - p_b; moving p_b by delta gives dF/d delta = -I in the joint's two rows
+    // R rows are p_a - p_b; moving p_b by delta (DisplacePin) gives dF/d delta = -I in the joint's two rows
     Eigen::VectorXd dF = Eigen::VectorXd::Zero(system.NumEquations());
     dF[system.FirstRowOf(joint) + axis] = -1.0;
     const Eigen::VectorXd dq = -solver.SolveWithJacobian(dF);
-    gradient[axis] = OutputDirectional(system, output, component, q, dq);
+    gradient[axis] = OutputOnLinksAt(system, output, component, Line(q, dq)).c[1];
   }
   return gradient;
 }

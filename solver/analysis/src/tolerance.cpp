@@ -44,9 +44,14 @@ double Quantile(const std::vector<double>& sorted, double level) {
   return sorted[lo] + (h - lo) * (sorted[hi] - sorted[lo]);
 }
 
-// The mechanism of one Monte Carlo sample: parameters drawn, then each clearance joint's pin
-// moved in its hole (a new point on link_b, so a point shared with another joint stays put).
-Expected<Mechanism> DrawSample(const MechanismBuilder& builder, const std::vector<double>& nominal, const ToleranceOptions& o, long k) {
+// One Monte Carlo sample: the parts as made (parameters drawn) and the same parts assembled
+// with each clearance joint's pin moved in its hole (DisplacePin): Newton solves the assembly,
+// the output is read off the parts (OutputOnLinks), as the linear gradient reads it.
+struct Sample {
+  Mechanism parts, assembly;
+};
+
+Expected<Sample> DrawSample(const MechanismBuilder& builder, const std::vector<double>& nominal, const ToleranceOptions& o, long k) {
   Random random(o.seed, static_cast<std::uint64_t>(k));
   std::vector<double> p = nominal;
   for (size_t j = 0; j < p.size(); ++j) {
@@ -54,19 +59,14 @@ Expected<Mechanism> DrawSample(const MechanismBuilder& builder, const std::vecto
     p[j] += o.tolerances[j] * u;
   }
   Expected<Mechanism> built = builder(p);
-  if (!built) return built;
-  Mechanism& m = *built;
+  if (!built) return Expected<Sample>::Error(built.error());
+  Sample sample{*built, *built};
   for (size_t c = 0; c < o.clearance_joints.size(); ++c) {
-    Joint& joint = m.joints[o.clearance_joints[c]];
+    // uniform in the disc: radius c sqrt(u)
     const double r = o.clearances[c] * std::sqrt(random.Uniform()), angle = 2 * kPi * random.Uniform();
-    Link& link = m.links[joint.link_b];
-    NamedPoint pin = link.points[joint.point_b];
-    pin.name += "~play";
-    pin.local += Eigen::Vector2d(r * std::cos(angle), r * std::sin(angle));
-    link.points.push_back(pin);
-    joint.point_b = static_cast<int>(link.points.size()) - 1;
+    DisplacePin(&sample.assembly, o.clearance_joints[c], Eigen::Vector2d(r * std::cos(angle), r * std::sin(angle)));
   }
-  return built;
+  return sample;
 }
 
 struct NominalPose {
@@ -87,13 +87,14 @@ std::vector<double> RunSamples(const MechanismBuilder& builder, const std::vecto
       const long first = next.fetch_add(kChunk);
       if (first >= n) return;
       for (long k = first; k < std::min(n, first + kChunk); ++k) {
-        const Expected<Mechanism> sample = DrawSample(builder, nominal, o, k);
+        const Expected<Sample> sample = DrawSample(builder, nominal, o, k);
         if (sample) {
-          PositionSolver solver(*sample);
+          PositionSolver solver(sample->assembly);
+          const ConstraintSystem parts(sample->parts);
           for (size_t row = 0; row < rows; ++row) {
             Eigen::VectorXd q = poses[row].q;
             if (!solver.Correct(poses[row].input, q).ok()) continue;
-            const double y = solver.system().Output(o.output, o.component, q.data());
+            const double y = OutputOnLinks(parts, o.output, o.component, q);
             values[row * n + k] = angle ? nominal_y[row] + WrapToHalfTurn(y - nominal_y[row]) : y;
           }
         }
@@ -136,27 +137,28 @@ void Statistics(const double* values, long n, const std::vector<double>& levels,
   for (double level : levels) row->quantiles.push_back(Quantile(v, level));
 }
 
-// The linear stack-up of one row from its sensitivities.
+// The linear stack-up of one row from its sensitivities. Each term's variance (s_j sigma_j)^2 or
+// (|dy/d delta| c)^2 / 4 is its share of linear_std^2: the shares use the model linear_std does.
 void Linear(const ToleranceOptions& o, ToleranceRow* row) {
-  double variance = 0, parameters = 0, clearances = 0;
   const double sigma_per_tolerance = o.distribution == ToleranceDistribution::kUniform ? 1 / std::sqrt(3.0) : 1.0 / 3;
+  std::vector<double> variances;  // tolerances, then clearances
+  double parameters = 0;
   for (size_t j = 0; j < o.tolerances.size(); ++j) {
     const double part = row->sensitivity[j] * o.tolerances[j];
     row->worst_case += std::abs(part);
     parameters += part * part;
-    variance += std::pow(part * sigma_per_tolerance, 2);
+    variances.push_back(std::pow(part * sigma_per_tolerance, 2));
   }
   for (size_t c = 0; c < o.clearances.size(); ++c) {
     const double part = row->clearance_gain[c] * o.clearances[c];
     row->clearance_worst_case += part;
-    clearances += part * part;
-    variance += part * part / 4;  // the projection of a point uniform in a disc of radius c: c^2/4
+    variances.push_back(part * part / 4);  // the projection of a point uniform in a disc of radius c: c^2/4
   }
+  double variance = 0;
+  for (double v : variances) variance += v;
   row->rss = std::sqrt(parameters);
   row->linear_std = std::sqrt(variance);
-  const double total = parameters + clearances;
-  for (size_t j = 0; j < o.tolerances.size(); ++j) row->share.push_back(total > 0 ? std::pow(row->sensitivity[j] * o.tolerances[j], 2) / total : 0.0);
-  for (size_t c = 0; c < o.clearances.size(); ++c) row->share.push_back(total > 0 ? std::pow(row->clearance_gain[c] * o.clearances[c], 2) / total : 0.0);
+  for (double v : variances) row->share.push_back(variance > 0 ? v / variance : 0.0);
 }
 
 ToleranceReport Failed(std::string why) {

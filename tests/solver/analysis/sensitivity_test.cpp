@@ -1,8 +1,9 @@
 // First-order sensitivities (sensitivity.hpp) on seed 000's slider-crank (l1, l2, e): the pose's
 // dq/dp against central differences of poses solved anew, the output's directional derivative
 // against a central difference along the direction, ds/dp and dmu/dp against central differences
-// of seed 000's closed form, and the crank pin's play against the geometry of the coupler
-// (ds = delta . (B - A) / (B - A)_x, from |B - A'| = l2 with the slide along x).
+// of seed 000's closed form, the crank pin's play against the geometry of the coupler
+// (ds = delta . (B - A) / (B - A)_x, from |B - A'| = l2 with the slide along x), and the play of
+// every joint against poses solved anew with the pin moved by hand, each output read off the links.
 #include "koppel/analysis/sensitivity.hpp"
 
 #include "koppel/core/angles.hpp"
@@ -11,7 +12,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace koppel::sensitivity_test {
 namespace {
@@ -178,6 +181,98 @@ TEST_CASE("the crank pin's play moves s along B - A by 1 / cos psi", "[sensitivi
     const double sin_psi = -(l1 / l2) * std::cos(input) - e / l2;
     CHECK(gradient.norm() == Approx(1 / std::sqrt(1 - sin_psi * sin_psi)).margin(kRoundoff));
   }
+}
+
+namespace {
+
+// [1/1] a clearance gradient against central differences of poses solved anew with a pin moved by
+// hand, step kPinStep: truncation h^2 y''' ~ 1e-10, the Newton tolerance 1e-13 L over 2 h ~ 1e-8
+constexpr double kPinStep = 1e-5;
+constexpr double kPinDifference = 1e-7;
+
+// The acute angle between two lines of directions alpha and beta: a transmission angle by its
+// definition, from the two links' directions.
+double AcuteBetween(double alpha, double beta) {
+  const double g = std::abs(WrapToHalfTurn(alpha - beta));
+  return std::min(g, kPi - g);
+}
+
+// An output of a mechanism whose bars lie along their links' body x axes, read here from the link
+// poses: a transmission angle as the acute angle between the coupler's and the output link's
+// bars; any other through the kernel's formula (it reads the points and links it names).
+double ReadOff(const ConstraintSystem& system, int output, int component, const Eigen::VectorXd& q) {
+  const Output& o = system.mechanism().outputs[output];
+  if (o.kind != OutputKind::kTransmissionAngle) return system.Output(output, component, q.data());
+  const Joint& joint = system.mechanism().joints[o.joint];
+  const int output_link = joint.link_a == o.link ? joint.link_b : joint.link_a;
+  return AcuteBetween(system.LinkAngle(output_link, q.data()), system.LinkAngle(o.link, q.data()));
+}
+
+// |d y / d delta| by central differences: joint `joint`'s point on link_a (the other side from
+// DisplacePin's link_b) moved by delta in link_a's frame as a new point, solved by Newton from the
+// nominal pose q0. Its length does not depend on the frame delta is taken in.
+double PinGradientByHand(const Mechanism& m, int joint, double input, const Eigen::VectorXd& q0, int output, int component) {
+  const ConstraintSystem parts(m);  // the points an output names keep their indices after the move
+  auto y = [&](const Eigen::Vector2d& delta) {
+    Mechanism moved = m;
+    Joint& j = moved.joints[joint];
+    NamedPoint pin = moved.links[j.link_a].points[j.point_a];
+    pin.local -= delta;
+    moved.links[j.link_a].points.push_back(pin);
+    j.point_a = static_cast<int>(moved.links[j.link_a].points.size()) - 1;
+    PositionSolver solver(moved);
+    Eigen::VectorXd q = q0;
+    REQUIRE(solver.Correct(input, q).ok());
+    return ReadOff(parts, output, component, q);
+  };
+  const double h = kPinStep;
+  const bool angle = m.OutputIsAngle(output);
+  auto difference = [&](double plus, double minus) { return (angle ? WrapToHalfTurn(plus - minus) : plus - minus) / (2 * h); };
+  return std::hypot(difference(y({h, 0}), y({-h, 0})), difference(y({0, h}), y({0, -h})));
+}
+
+}  // namespace
+
+TEST_CASE("the clearance gradient of every output at every joint against a pin moved by hand on the joint's other link", "[sensitivity]") {
+  // a four-bar with a coupler point (point, rocker angle, joint angle, transmission angle), a
+  // Watt six-bar with a transmission angle on its second loop, the slider-crank (slide, mu)
+  Mechanism six_bar = test::WattSixBar();
+  six_bar.outputs.push_back(
+      Output{.name = "mu2", .kind = OutputKind::kTransmissionAngle, .joint = six_bar.FindJoint("D"), .link = six_bar.FindLink("link5")});
+  for (const Mechanism& m : {test::FourBar(1, 3.5, 3, 4, 2, 0.5, +1), six_bar, test::SliderCrank(1.0, 2.6, 0.8)}) {
+    PositionSolver solver(m);
+    const double input = DegToRad(60);
+    const Eigen::VectorXd q = PoseAt(solver, input);
+    for (int joint = 0; joint < static_cast<int>(m.joints.size()); ++joint) {
+      if (m.joints[joint].type != JointType::kRevolute) continue;
+      for (int output = 0; output < static_cast<int>(m.outputs.size()); ++output) {
+        for (int component = 0; component < m.outputs[output].Components(); ++component) {
+          INFO(m.name << ", play at " << m.joints[joint].name << ", output " << m.outputs[output].name << " " << component);
+          CHECK(ClearanceGradient(solver, q, joint, output, component).norm() ==
+                Approx(PinGradientByHand(m, joint, input, q, output, component)).margin(kPinDifference));
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("OutputOnLinks: a transmission angle from the two links' directions where play opens the output joint", "[sensitivity]") {
+  // the crank-rocker with the rocker's end of B moved by 0.05 in its hole: the kernel's formula
+  // takes the coupler's end as the rocker's point too; read off the links, mu is the acute angle
+  // between the coupler's bar and the rocker's
+  const Mechanism parts = test::FourBar(1, 3.5, 3, 4, 0, 0, +1);
+  Mechanism assembly = parts;
+  DisplacePin(&assembly, assembly.FindJoint("B"), Eigen::Vector2d(0.03, -0.04));
+  PositionSolver solver(assembly);
+  const Eigen::VectorXd q = PoseAt(solver, DegToRad(60));
+  const ConstraintSystem links(parts);
+  const int mu = parts.FindOutput("mu"), psi = parts.FindOutput("psi");
+  const double reference = AcuteBetween(links.LinkAngle(parts.FindLink("rocker"), q.data()), links.LinkAngle(parts.FindLink("coupler"), q.data()));
+  CHECK(OutputOnLinks(links, mu, 0, q) == Approx(reference).margin(kRoundoff));
+  // the kernel's formula reads another angle here (else this test would prove nothing)
+  CHECK(std::abs(links.Output(mu, 0, q.data()) - reference) > 1e-3);
+  // every other output is the kernel's
+  CHECK(OutputOnLinks(links, psi, 0, q) == links.Output(psi, 0, q.data()));
 }
 
 }  // namespace koppel::sensitivity_test

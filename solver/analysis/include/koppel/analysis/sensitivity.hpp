@@ -46,10 +46,31 @@ double OutputDirectional(const ConstraintSystem& system, int output, int compone
 void OutputSensitivity(const PositionSolver& solver, const Eigen::VectorXd& q, double input, const Perturbations& perturbed, int output,
                        int first_component, int comps, bool angle, Eigen::MatrixXd* d);
 
-// The gradient d y / d delta [1/1, global frame] of an output component to a revolute joint's
-// play: the joint's point on link_a displaced by delta from its point on link_b (the pin free in
-// its hole), at a converged pose. The output moves by at most c |gradient| for a pin anywhere
-// within a circle of radius c (first order).
+// Play in a revolute joint, the one model the linear gradient and the Monte Carlo share (tolerance.hpp):
+// the pin sits off the centre of its hole by delta, so the joint's point on link_a lies delta
+// from its point on link_b (R rows p_a - p_b = delta); every link keeps its own geometry, and an
+// output is read off the links it names (OutputOnLinks). In a single loop a gap at any joint
+// enters the loop's closure alike, so an output read off link directions (a link angle, a joint
+// angle, a transmission angle) has the same |dy/d delta| whichever of the loop's joints has the play.
+
+// The mechanism with joint `joint`'s pin moved by `offset` [length, body frame of link_b] in its
+// hole: a new point on link_b (so a point that another joint or an output names stays put). The
+// joint must be revolute. Read the outputs of the result with a system of the mechanism before
+// the move (OutputOnLinks): the moved point is a joint's, not a point of the part.
+void DisplacePin(Mechanism* mechanism, int joint, const Eigen::Vector2d& offset);
+
+// An output component at pose q read off the links' own geometry, also where play leaves a
+// joint's two points apart (`system` of the mechanism without play). Every output reads named
+// points of named links, but for one: a transmission angle about a pivot takes the coupler's
+// point of the output joint as the output link's point too (the kernel's formula, exact where
+// the joint is closed). Here the coupler is first shifted onto the output link's own point: that
+// keeps the coupler's direction (all the angle reads of it) and makes the radius the output
+// link's own, so mu depends on the two links' directions alone, as it does without play.
+double OutputOnLinks(const ConstraintSystem& system, int output, int component, const Eigen::VectorXd& q);
+
+// The gradient d y / d delta [1/1, global frame] of an output component (read by OutputOnLinks)
+// to a revolute joint's play delta at a converged pose. The output moves by at most c |gradient|
+// for a pin anywhere within a circle of radius c (first order).
 Eigen::Vector2d ClearanceGradient(const PositionSolver& solver, const Eigen::VectorXd& q, int joint, int output, int component);
 
 }  // namespace koppel

@@ -5,19 +5,25 @@
 // s_j = dy/dp_j at the nominal pose; worst_case = sum |s_j| T_j; rss = sqrt(sum (s_j T_j)^2) (the
 // statistical stack-up of the tolerances T_j); a revolute joint whose pin is free within a circle
 // of radius c moves y by at most c |dy/d delta| (delta the pin's offset in its hole), and
-// clearance_worst_case sums that over the joints given. share_j = (s_j T_j)^2 / (rss^2 + sum over
-// joints (c |dy/d delta|)^2): each tolerance's and each clearance's part of the variance of the
-// linear stack-up: which dimension to tighten first.
+// clearance_worst_case sums that over the joints given. linear_std is the standard deviation the
+// linear model predicts for the distribution: sqrt(sum s_j^2 sigma_j^2 + sum |dy/d delta|^2 c^2 / 4)
+// with sigma_j = T_j / sqrt(3) (uniform) or T_j / 3 (normal), c^2 / 4 the variance of one
+// component of a point uniform in a disc of radius c. share_j = s_j^2 sigma_j^2 / linear_std^2, a
+// clearance's share |dy/d delta|^2 c^2 / 4 / linear_std^2: each term's part of that variance,
+// which dimension to tighten first.
+//
+// Play (sensitivity.hpp, DisplacePin and OutputOnLinks): the pin off its hole's centre opens the
+// joint by delta, every link keeps its geometry and the output is read off the links it names, in
+// the gradient and in the samples alike, for every output (a transmission angle from the
+// coupler's and the output link's directions).
 //
 // Monte Carlo (exact): `samples` mechanisms, each with every parameter p_j + T_j u (u uniform in
 // [-1, 1], or normal with T_j = 3 sigma) and each clearance joint's pin displaced in its hole by a
 // vector uniform in the circle of radius c (fixed to link_b of the joint: the pin sits somewhere
 // in the hole for the whole run), solved by Newton from the nominal pose at every input. Sample k
 // draws from its own generator seeded by (seed, k), so the result does not depend on the number
-// of threads. linear_std is the standard deviation the linear model predicts for that
-// distribution: sqrt(sum s_j^2 sigma_j^2 + sum |dy/d delta|^2 c^2 / 4) with sigma_j = T_j / sqrt(3)
-// (uniform) or T_j / 3 (normal). Angles in radians, lengths in the file's unit; an angle output's
-// samples are taken as nominal + the wrapped difference.
+// of threads. Angles in radians, lengths in the file's unit; an angle output's samples are taken
+// as nominal + the wrapped difference.
 #pragma once
 
 #include "koppel/analysis/sensitivity.hpp"
@@ -60,7 +66,7 @@ struct ToleranceRow {
   std::vector<double> sensitivity;       // dy/dp_j
   std::vector<double> clearance_gain;    // |dy/d delta| per clearance joint
   double worst_case = 0, rss = 0, clearance_worst_case = 0;
-  std::vector<double> share;             // tolerances, then clearances; sum 1 (all 0 when nothing moves y)
+  std::vector<double> share;             // of linear_std^2: tolerances, then clearances; sum 1 (all 0 when nothing moves y)
   double linear_std = 0;
   // Monte Carlo (samples > 0)
   long mc_samples = 0, mc_failed = 0;    // mc_failed: samples whose mechanism did not reach this input

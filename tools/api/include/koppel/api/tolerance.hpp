@@ -37,7 +37,7 @@ struct ToleranceRowReport {
   std::vector<double> sensitivity;     // per tolerance, in the request's order
   std::vector<double> clearance_gain;  // per clearance: |d output / d pin offset|
   double worst_case = 0, rss = 0, clearance_worst_case = 0, linear_std = 0;
-  std::vector<double> share;           // tolerances then clearances
+  std::vector<double> share;           // each term's part of linear_std^2: tolerances then clearances
   long mc_samples = 0, mc_failed = 0;
   double mc_min = 0, mc_max = 0, mc_mean = 0, mc_std = 0;
   std::vector<double> quantiles;       // at ToleranceResult::quantile_levels

@@ -3,6 +3,7 @@
 #include "koppel/catalog/parameter_builder.hpp"  // MechanismTextWithoutCard
 
 #include "card_text.hpp"
+#include "input_file.hpp"  // ParseYamlText
 #include "mechanism_node.hpp"
 #include "yaml_reader.hpp"
 

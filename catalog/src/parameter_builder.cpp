@@ -1,5 +1,6 @@
 #include "koppel/catalog/parameter_builder.hpp"
 
+#include "input_file.hpp"  // ParseYamlText
 #include "mechanism_node.hpp"
 #include "yaml_reader.hpp"
 

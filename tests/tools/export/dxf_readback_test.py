@@ -5,18 +5,24 @@
 References: the four-bar of seed 003 (catalog/entries/mzc-crank-rocker.yaml) by circle
 intersection (A0 = 0, B0 = (l4, 0), A = l1 (cos phi, sin phi), B left of A -> B0, K = A +
 k R(kappa) (B - A)/|B - A|), its link lengths from the file's parameters, `koppel curve` for the
-coupler curve, and seed 000's slider-crank (A0 = (0, -e), slide on y = 0) for the slot.
+coupler curve, seed 000's slider-crank (A0 = (0, -e), slide on y = 0) for the slot, its dead
+centres s = sqrt((l2 -+ l1)^2 - e^2) (A0, A, B in line: the closed forms of tests/support,
+SliderCrankPhiA/PhiI in SliderCrank), and seed 001's proportional linkage for slots on a turning
+link (slider 5: s = c sin phi / (1 - lambda cos phi), extreme where cos phi = lambda; the slot
+through B0 and A: |B0 A| = l6 -+ l1, |B0 D| = sqrt(h^2 + s^2)).
 """
 import csv
 import io
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
 import unittest
 
 import ezdxf
+from ezdxf.lldxf.validator import is_valid_layer_name
 from ezdxf.math import bulge_to_arc
 
 KOPPEL, CATALOG, DATA = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -29,6 +35,10 @@ K_LENGTH, KAPPA = 25 / 3, math.acos(5 / 9 * math.sqrt(3))
 # The DXF holds 15 significant digits and the solver converges to 1e-12 of the length scale:
 # positions agree far inside 1e-9.
 POSITION_TOLERANCE = 1e-9
+# A slot's end is its travel's extreme refined to 1e-12 in the input (where s' = 0, so its value
+# is exact to roundoff), written with 15 digits: the closed form's to 1e-12 of the size (L ~ 1).
+# Cut at the 1-degree samples it fell short by up to 1.2e-5.
+REFINED_TOLERANCE = 1e-12
 
 
 def run_koppel(*args, expect=0):
@@ -55,6 +65,21 @@ def four_bar(phi):
 
 def distance(p, q):
     return math.hypot(p[0] - q[0], p[1] - q[1])
+
+
+def slot_lines(msp, layer, radius):
+    """The slots on `layer`: closed polylines of two half circles of `radius` (bulge +-1) joined
+    by two lines; each as the lengths of its two lines (its centre line's length)."""
+    found = []
+    for polyline in msp.query(f'LWPOLYLINE[layer=="{layer}"]'):
+        points = list(polyline.get_points("xyb"))
+        if len(points) != 4 or not polyline.closed:
+            continue
+        arcs = [bulge_to_arc((x, y), points[(i + 1) % 4][:2], b) for i, (x, y, b) in enumerate(points) if b != 0]
+        if len(arcs) != 2 or any(abs(r - radius) > POSITION_TOLERANCE for _, _, _, r in arcs):
+            continue
+        found.append([distance(p[:2], points[(i + 1) % 4][:2]) for i, p in enumerate(points) if p[2] == 0])
+    return found
 
 
 def nearest_on_curve(point, phi_guess):
@@ -207,10 +232,136 @@ class SliderCrank(unittest.TestCase):
             l1, l2, e = 1.0, 2.6, 0.8
             s_min, s_max = math.sqrt((l2 - l1) ** 2 - e * e), math.sqrt((l2 + l1) ** 2 - e * e)
             xs = sorted(p[0] for p in points)
-            # the slot's centre line runs over the sampled travel: within the sampling of 1 degree
-            # of the extremes (the travel is stationary there: s'' (1 deg)^2 / 2 < 1e-3)
-            self.assertAlmostEqual(xs[0], s_min, delta=1e-3)
-            self.assertAlmostEqual(xs[-1], s_max, delta=1e-3)
+            # the slot's centre line runs from dead centre to dead centre, refined, not sampled
+            self.assertAlmostEqual(xs[0], s_min, delta=REFINED_TOLERANCE)
+            self.assertAlmostEqual(xs[-1], s_max, delta=REFINED_TOLERANCE)
+            # its length, the two lines, is the stroke
+            self.assertEqual(len(slot_lines(msp, "frame", 0.05)), 1)
+            for length in slot_lines(msp, "frame", 0.05)[0]:
+                self.assertAlmostEqual(length, s_max - s_min, delta=REFINED_TOLERANCE)
+
+
+class SlotsOnATurningLink(unittest.TestCase):
+    """Seed 001's proportional linkage with lambda = l1/l6 = 0.4 (its slot steepest at
+    cos phi = 0.4, 66.4 deg, off the 1-degree samples): blocks 2 and 4 slide in the slot of link 3,
+    which turns about B0; slider 5 on the frame."""
+
+    def test_slot_lengths(self):
+        l6, l1, h = 1.0, 0.4, 1.83
+        c, lam = l1 * h / l6, l1 / l6
+        s5 = c / math.sqrt(1 - lam * lam)  # c sin phi / (1 - lambda cos phi) at cos phi = lambda
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "p.dxf")
+            run_koppel("export", os.path.join(CATALOG, "proportional-linkage.yaml"), "--set", "l1=0.4", "--dxf", "--pin", "0.05",
+                       "--plate", "0.2", "-o", path)
+            msp = ezdxf.readfile(path).modelspace()
+            turning = sorted(min(lines) for lines in slot_lines(msp, "slot", 0.025))
+            self.assertEqual(len(turning), 2)
+            # block 2 at A: |B0 A| from l6 - l1 to l6 + l1; block 4 at D: |B0 D| from h to sqrt(h^2 + s5^2)
+            expected = sorted([2 * l1, math.hypot(h, s5) - h])
+            for length, reference in zip(turning, expected):
+                self.assertAlmostEqual(length, reference, delta=REFINED_TOLERANCE)
+            frame = slot_lines(msp, "frame", 0.025)
+            self.assertEqual(len(frame), 1)
+            for length in frame[0]:
+                self.assertAlmostEqual(length, 2 * s5, delta=REFINED_TOLERANCE)
+
+
+def renamed_slider_crank(crank, coupler, slider):
+    """slider-crank-offset.yaml with its crank, coupler and slider named as given (YAML escapes
+    allowed: the names go between double quotes)."""
+    with open(os.path.join(CATALOG, "slider-crank-offset.yaml"), encoding="utf-8") as f:
+        text = f.read()
+    for old, new in (("crank", crank), ("coupler", coupler), ("slider", slider)):
+        quoted = f'"{new}"'
+        text = text.replace(f"  {old}:\n    points:", f"  {quoted}:\n    points:")
+        other = r'(\w+|"[^"]*")'  # a link named in a joint's list, plain or renamed before
+        text = re.sub(rf"\[{other}, {old}\]", lambda m: f"[{m.group(1)}, {quoted}]", text)
+        text = re.sub(rf"\[{old}, {other}\]", lambda m: f"[{quoted}, {m.group(1)}]", text)
+        text = text.replace(f"coupler: {old},", f"coupler: {quoted},")
+    return text
+
+
+def export_text(text, directory, name):
+    """koppel export of a mechanism given as text: (the CompletedProcess, the DXF's path)."""
+    source, out = os.path.join(directory, name + ".yaml"), os.path.join(directory, name + ".dxf")
+    with open(source, "w", encoding="utf-8") as f:
+        f.write(text)
+    r = subprocess.run([KOPPEL, "export", source, "--dxf", "-o", out], capture_output=True, text=True)
+    return r, out
+
+
+def entities(path):
+    """What a DXF draws: each modelspace entity's type, layer and points, in order."""
+    found = []
+    for e in ezdxf.readfile(path).modelspace():
+        if e.dxftype() == "LWPOLYLINE":
+            where = [tuple(p) for p in e.get_points("xyb")]
+        elif e.dxftype() == "CIRCLE":
+            where = [tuple(e.dxf.center)[:2], e.dxf.radius]
+        else:
+            where = [tuple(e.dxf.get("location", (0, 0, 0)))[:2]]
+        found.append((e.dxftype(), e.dxf.layer, where))
+    return found
+
+
+class LayerNames(unittest.TestCase):
+    """Names the user gives become legal, distinct layers; none can write a group of its own."""
+
+    INJECTED = "crank\\n0\\nLINE\\n8\\n0\\n10\\n0\\n20\\n0\\n11\\n99\\n21\\n99"  # YAML escapes
+
+    def test_a_name_holding_dxf_groups_draws_what_a_plain_name_draws(self):
+        # the repro: exit 0, and the crank's plate and both holes each followed by a LINE to
+        # (99, 99) on layer 0. The YAML reader may refuse control characters in a name (exit 2,
+        # no file); a file written holds exactly the entities of the plain file.
+        with tempfile.TemporaryDirectory() as d:
+            plain, plain_path = export_text(renamed_slider_crank("crank", "coupler", "slider"), d, "plain")
+            self.assertEqual(plain.returncode, 0, plain.stderr)
+            odd, odd_path = export_text(renamed_slider_crank(self.INJECTED, "coupler", "slider"), d, "odd")
+            if odd.returncode == 2:
+                self.assertFalse(os.path.exists(odd_path))
+                return
+            self.assertEqual(odd.returncode, 0, odd.stderr)
+            doc = ezdxf.readfile(odd_path)
+            self.assertEqual(len(doc.modelspace().query("LINE")), 0)
+            crank_layer = [layer.dxf.name for layer in doc.layers if layer.dxf.name.startswith("crank")]
+            self.assertEqual(len(crank_layer), 1)
+            self.assertNotIn("\n", crank_layer[0])
+            same = [(kind, crank_layer[0] if layer == "crank" else layer, where) for kind, layer, where in entities(plain_path)]
+            self.assertEqual(entities(odd_path), same)
+
+    def test_names_apart_stay_apart(self):
+        long_a, long_b = "x" * 300, "x" * 300 + "y"
+        with tempfile.TemporaryDirectory() as d:
+            r, path = export_text(renamed_slider_crank("a<b", "a>b", long_a), d, "names")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            doc = ezdxf.readfile(path)
+            self.assertEqual(len(doc.audit().errors), 0)
+            layers = [layer.dxf.name for layer in doc.layers]
+            for name in layers:
+                self.assertTrue(is_valid_layer_name(name) and len(name) <= 255, name)
+            self.assertEqual(len({name.lower() for name in layers}), len(layers))
+            msp = doc.modelspace()
+            # the crank "a<b" and the coupler "a>b" each on a layer of its own: two holes each
+            for layer in ("a_b", "a_b~2"):
+                self.assertEqual(len(msp.query(f'CIRCLE[layer=="{layer}"]')), 2, layer)
+            self.assertEqual(len(msp.query(f'LWPOLYLINE[layer=="{"x" * 255}"]')), 1)
+            r, path = export_text(renamed_slider_crank(long_a, long_b, "slider"), d, "long")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            layers = [layer.dxf.name for layer in ezdxf.readfile(path).layers]
+            self.assertIn("x" * 255, layers)
+            self.assertIn("x" * 253 + "~2", layers)
+
+
+class Reproducible(unittest.TestCase):
+    def test_the_same_bytes_from_two_runs(self):
+        # the dimension style's group 340 (the text style's handle) came from memory never set
+        with tempfile.TemporaryDirectory() as d:
+            paths = [os.path.join(d, f"{i}.dxf") for i in range(2)]
+            for path in paths:
+                run_koppel("export", MZC, "--dxf", "--at", "30", "-o", path)
+            with open(paths[0], "rb") as a, open(paths[1], "rb") as b:
+                self.assertEqual(a.read(), b.read())
 
 
 class Units(unittest.TestCase):

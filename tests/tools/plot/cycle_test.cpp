@@ -1,6 +1,6 @@
 // One cycle of the drive: its range, the frames' inputs, the traced curves. References: the
 // four-bar's limit positions by the law of cosines (tests/support/closed_forms FourBarLimits),
-// the circle-intersection coupler point of seed 003, and the definition of a cycle (a full turn
+// the circle-intersection coupler point of seed 003, seed 000's slider at its dead centres, and the definition of a cycle (a full turn
 // in equal steps; a rocker's range there and back).
 #include "koppel/plot/cycle.hpp"
 
@@ -27,6 +27,8 @@ using Catch::Matchers::WithinAbs;
 
 // The solver converges to 1e-12 of the length scale.
 constexpr double kTolerance = 1e-9;
+// [length] a travel's ends are its extremes refined to 1e-12 in the input, where s' = 0
+constexpr double kRefined = 1e-12;
 // A limit point is located by the range analysis to about 1e-9 rad (its bisection's resolution).
 constexpr double kLimitTolerance = 1e-7;
 
@@ -112,6 +114,21 @@ TEST_CASE("cycle samples: a rocker's curve is open", "[plot][cycle]") {
   REQUIRE(samples);
   CHECK_FALSE(samples->curves[0].closed);
   CHECK(samples->curves[0].runs[0].size() == plot::kCycleSegments + 1);
+}
+
+TEST_CASE("cycle samples: a slide's travel from dead centre to dead centre, not from sample to sample", "[plot][cycle]") {
+  // seed 000 (tests/support/closed_forms): s at the dead centres, 102.8 and 300.1 deg, which the
+  // 1-degree samples miss by up to 1.2e-5
+  const double l1 = 1, l2 = 2.6, e = 0.8;
+  const Mechanism m = test::SliderCrank(l1, l2, e);
+  const Expected<plot::CycleSamples> samples = plot::SampleCycle(m, plot::CycleRange{0, 2 * kPi, true, ""}, {});
+  REQUIRE(samples);
+  const int s = m.FindJoint("S");
+  REQUIRE(samples->travel.size() == m.joints.size());
+  CHECK_THAT(samples->travel[s].first, WithinAbs(test::SliderCrank(l1, l2, e, test::SliderCrankPhiI(l1, l2, e)).s, kRefined));
+  CHECK_THAT(samples->travel[s].second, WithinAbs(test::SliderCrank(l1, l2, e, test::SliderCrankPhiA(l1, l2, e)).s, kRefined));
+  for (size_t j = 0; j < m.joints.size(); ++j)
+    if (static_cast<int>(j) != s) CHECK(samples->travel[j] == std::pair<double, double>{0.0, 0.0});
 }
 
 TEST_CASE("cycle options of a model: its point outputs, the default sizes, the file's sweep in radians", "[plot][cycle]") {

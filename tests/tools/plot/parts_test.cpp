@@ -7,6 +7,7 @@
 
 #include "tools/plot/cycle_fixtures.hpp"
 
+#include "koppel/api/guide_travel.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/plot/sampled_run.hpp"
 
@@ -29,6 +30,9 @@ using Catch::Matchers::WithinAbs;
 
 // The solver converges to 1e-12 of the length scale; the contour is built from sines and cosines.
 constexpr double kTolerance = 1e-9;
+// [length] a travel's end refined to its extreme (to 1e-12 in the input, where s' = 0), and the
+// frame's slot placed with the identity: the closed form's value to roundoff and convergence
+constexpr double kRefined = 1e-12;
 
 struct Solved {
   Eigen::VectorXd q;
@@ -44,9 +48,12 @@ Solved Solve(const Mechanism& m, double input) {
   REQUIRE(run.complete);
   const Expected<Eigen::VectorXd> pose = plot::PoseAt(m, run, input);
   REQUIRE(pose);
-  std::vector<Eigen::VectorXd> poses;
-  for (int i = 0; i < run.size(); ++i) poses.push_back(run.poses.row(i).transpose());
-  return {*pose, plot::GuideTravel(m, poses)};
+  std::vector<std::pair<double, double>> travel(m.joints.size(), {0.0, 0.0});
+  for (const GuideTravel& t : FindGuideTravels(m, o.from, o.to, o.step)) {
+    REQUIRE(t.status == AnalysisStatus::kComplete);
+    travel[t.joint] = {t.low, t.high};
+  }
+  return {*pose, travel};
 }
 
 const plot::Part& PartOf(const std::vector<plot::Part>& parts, const std::string& link) {
@@ -162,11 +169,9 @@ TEST_CASE("slider-crank parts: the frame's slot over the slider's travel", "[plo
   REQUIRE(frame.slots.size() == 1);
   const plot::Slot& slot = frame.slots[0];
   CHECK(slot.joint == "S");
-  // dead centres of seed 000: the travel's ends; sampled each degree, the ends are within the
-  // sampling (s is stationary there: s'' (1 deg)^2 / 2 < 1e-3)
-  constexpr double kSampling = 1e-3;
-  CHECK_THAT(slot.from.x(), WithinAbs(std::sqrt((l2 - l1) * (l2 - l1) - e * e), kSampling));
-  CHECK_THAT(slot.to.x(), WithinAbs(std::sqrt((l2 + l1) * (l2 + l1) - e * e), kSampling));
+  // dead centres of seed 000: the travel's ends, refined (FindGuideTravels), cut where they are
+  CHECK_THAT(slot.from.x(), WithinAbs(std::sqrt((l2 - l1) * (l2 - l1) - e * e), kRefined));
+  CHECK_THAT(slot.to.x(), WithinAbs(std::sqrt((l2 + l1) * (l2 + l1) - e * e), kRefined));
   CHECK_THAT(slot.from.y(), WithinAbs(0, kTolerance));
   for (const plot::Arc& arc : slot.outline.arcs) CHECK_THAT(arc.radius, WithinAbs(sizes.pin_diameter / 2, kCopiedRadius));
   // the frame's pivot A0; the slider's pin B: the R and P joints at B share one hole

@@ -36,6 +36,10 @@ class StringWriter final : public DL_WriterA {
 
  private:
   void Pair(int gc, const std::string& value) const {
+    // a line break in a value would end it and start a group of the value's making: the names
+    // are made legal before (DxfLayerNames), so this is a bug, never the user's input
+    for (const char c : value)
+      if (static_cast<unsigned char>(c) < ' ') throw std::logic_error("WriteDxf: a control character in group " + std::to_string(gc));
     out_ << (gc < 10 ? "  " : gc < 100 ? " " : "") << gc << "\n" << value << "\n";
   }
   mutable std::ostringstream out_;
@@ -51,12 +55,20 @@ struct Layer {
   int colour;
 };
 
-std::vector<Layer> LayersOf(const WorkshopDrawing& drawing) {
+// The layer of each part, then of each curve ("curve-K"), in the drawing's order.
+std::vector<std::string> LayerNamesOf(const WorkshopDrawing& drawing) {
+  std::vector<std::string> names;
+  for (const Part& part : drawing.parts) names.push_back(part.link);
+  for (const TracedCurve& curve : drawing.curves) names.push_back("curve-" + curve.name);
+  return DxfLayerNames(names);
+}
+
+std::vector<Layer> LayersOf(const WorkshopDrawing& drawing, const std::vector<std::string>& names) {
   std::vector<Layer> layers = {{"0", kFrameColour}};
   int next = 0;
-  for (const Part& part : drawing.parts)
-    layers.push_back({DxfLayerName(part.link), part.frame ? kFrameColour : kLinkColours[next++ % std::size(kLinkColours)]});
-  for (const TracedCurve& curve : drawing.curves) layers.push_back({DxfLayerName("curve-" + curve.name), kCurveColour});
+  for (size_t i = 0; i < drawing.parts.size(); ++i)
+    layers.push_back({names[i], drawing.parts[i].frame ? kFrameColour : kLinkColours[next++ % std::size(kLinkColours)]});
+  for (size_t i = drawing.parts.size(); i < names.size(); ++i) layers.push_back({names[i], kCurveColour});
   return layers;
 }
 
@@ -74,16 +86,14 @@ void WriteContour(DL_Dxf& dxf, StringWriter& w, const Contour& contour, const st
   dxf.writePolylineEnd(w);
 }
 
-void WritePart(DL_Dxf& dxf, StringWriter& w, const Part& part) {
-  const std::string layer = DxfLayerName(part.link);
+void WritePart(DL_Dxf& dxf, StringWriter& w, const Part& part, const std::string& layer) {
   if (!part.outline.arcs.empty()) WriteContour(dxf, w, part.outline, layer);
   for (const Hole& h : part.holes) dxf.writeCircle(w, DL_CircleData(h.centre.x(), h.centre.y(), 0, h.diameter / 2), On(layer));
   for (const Slot& s : part.slots) WriteContour(dxf, w, s.outline, layer);
   for (const auto& [name, p] : part.marks) dxf.writePoint(w, DL_PointData(p.x(), p.y(), 0), On(layer));
 }
 
-void WriteCurve(DL_Dxf& dxf, StringWriter& w, const TracedCurve& curve) {
-  const std::string layer = DxfLayerName("curve-" + curve.name);
+void WriteCurve(DL_Dxf& dxf, StringWriter& w, const TracedCurve& curve, const std::string& layer) {
   for (const std::vector<Eigen::Vector2d>& run : curve.runs) {
     if (run.size() < 2) continue;  // a lone sample is no line
     dxf.writePolyline(w, DL_PolylineData(static_cast<int>(run.size()), 0, 0, curve.closed ? 1 : 0), On(layer));
@@ -109,7 +119,9 @@ void WriteHeaderAndTables(DL_Dxf& dxf, StringWriter& w, const std::vector<Layer>
   for (const Layer& l : layers) dxf.writeLayer(w, DL_LayerData(l.name, 0), DL_Attributes(l.name, l.colour, 100, "CONTINUOUS", 1.0));
   w.tableEnd();
   w.tableStyle(1);
-  dxf.writeStyle(w, DL_StyleData("standard", 0, 2.5, 1.0, 0.0, 0, 2.5, "txt", ""));
+  // "Standard", so spelt: dxflib keeps the handle of this style only for that name, and the
+  // dimension style refers to it (group 340); under another name it writes an unset handle
+  dxf.writeStyle(w, DL_StyleData("Standard", 0, 2.5, 1.0, 0.0, 0, 2.5, "txt", ""));
   w.tableEnd();
   dxf.writeView(w);
   dxf.writeUcs(w);
@@ -138,21 +150,15 @@ int DxfUnits(double metres_per_unit, bool unit_given) {
   return it == codes.end() ? 0 : it->second;
 }
 
-std::string DxfLayerName(const std::string& name) {
-  std::string layer = name;
-  for (char& c : layer)
-    if (std::string_view("<>/\\\":;?*|=` ").find(c) != std::string_view::npos) c = '_';
-  return layer.empty() ? "_" : layer;
-}
-
 std::string WriteDxf(const WorkshopDrawing& drawing, int insunits) {
   if (drawing.status == PlotStatus::kFailed) throw std::invalid_argument("WriteDxf: a failed drawing has nothing to write");
   DL_Dxf dxf;
   StringWriter w;
-  WriteHeaderAndTables(dxf, w, LayersOf(drawing), insunits);
+  const std::vector<std::string> layers = LayerNamesOf(drawing);
+  WriteHeaderAndTables(dxf, w, LayersOf(drawing, layers), insunits);
   w.sectionEntities();
-  for (const Part& part : drawing.parts) WritePart(dxf, w, part);
-  for (const TracedCurve& curve : drawing.curves) WriteCurve(dxf, w, curve);
+  for (size_t i = 0; i < drawing.parts.size(); ++i) WritePart(dxf, w, drawing.parts[i], layers[i]);
+  for (size_t i = 0; i < drawing.curves.size(); ++i) WriteCurve(dxf, w, drawing.curves[i], layers[drawing.parts.size() + i]);
   w.sectionEnd();
   dxf.writeObjects(w);
   dxf.writeObjectsEnd(w);

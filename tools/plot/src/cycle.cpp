@@ -1,6 +1,7 @@
 #include "koppel/plot/cycle.hpp"
 
 #include "koppel/analysis/ranges.hpp"
+#include "koppel/api/guide_travel.hpp"
 #include "koppel/api/model.hpp"
 #include "koppel/core/angles.hpp"
 
@@ -111,9 +112,11 @@ Expected<CycleSamples> SampleCycle(const Mechanism& m, const CycleRange& range, 
   if (samples.run.size() == 0) return Expected<CycleSamples>::Error(samples.run.message);
   for (size_t t = 0; t < traced.size(); ++t)
     samples.curves.push_back(CurveOf(with_traced, samples.run, static_cast<int>(t), range.full_turn));
-  std::vector<Eigen::VectorXd> poses;
-  for (int i = 0; i < samples.run.size(); ++i) poses.push_back(samples.run.poses.row(i).transpose());
-  samples.travel = GuideTravel(m, poses);
+  samples.travel.assign(m.joints.size(), {0.0, 0.0});
+  for (const GuideTravel& t : FindGuideTravels(m, range.from, range.to, options.step, continuation.at_branch_point)) {
+    if (!Usable(t.status)) return Expected<CycleSamples>::Error("the travel of slide " + t.name + " was not found: " + t.message);
+    samples.travel[t.joint] = {t.low, t.high};
+  }
   return samples;
 }
 

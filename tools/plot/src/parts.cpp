@@ -156,27 +156,6 @@ PartSizes DefaultPartSizes(const Mechanism& m) {
   return sizes;
 }
 
-std::vector<std::pair<double, double>> GuideTravel(const Mechanism& m, const std::vector<Eigen::VectorXd>& poses) {
-  const ConstraintSystem system(m);
-  std::vector<std::pair<double, double>> travel(m.joints.size(), {0.0, 0.0});
-  for (size_t j = 0; j < m.joints.size(); ++j) {
-    const Joint& joint = m.joints[j];
-    if (joint.type != JointType::kPrismatic || poses.empty()) continue;
-    double low = std::numeric_limits<double>::infinity(), high = -low;
-    for (const Eigen::VectorXd& q : poses) {
-      double pin[2], guide[2];
-      system.GlobalPoint({joint.link_b, joint.point_b}, q.data(), pin);
-      system.GlobalPoint({joint.link_a, joint.point_a}, q.data(), guide);
-      const Vec axis = PlacementOf(system, joint.link_a, q).Direction(joint.axis);
-      const double s = axis.dot(Vec(pin[0] - guide[0], pin[1] - guide[1]));
-      low = std::min(low, s);
-      high = std::max(high, s);
-    }
-    travel[j] = {low, high};
-  }
-  return travel;
-}
-
 std::vector<Part> PartsAtPose(const Mechanism& m, const Eigen::VectorXd& q, const std::vector<std::pair<double, double>>& travel,
                               const PartSizes& sizes) {
   std::string why;

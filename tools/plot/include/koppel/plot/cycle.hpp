@@ -68,11 +68,15 @@ struct CycleSamples {
   CycleRange range;
   SampledRun run;                    // kCycleSegments intervals over the range, order 0
   std::vector<TracedCurve> curves;   // one per traced point
-  std::vector<std::pair<double, double>> travel;  // GuideTravel over the run's poses
+  // per joint, a prismatic joint's least and greatest displacement over the range, refined to
+  // the extremes (koppel/api/guide_travel.hpp), not the samples'; 0, 0 for other joints
+  std::vector<std::pair<double, double>> travel;
 };
 
-// Sweeps `range` (kCycleSegments intervals) with the traced points as the only outputs. The run
-// may be partial (run.complete, run.message); an error when nothing could be computed.
+// Sweeps `range` (kCycleSegments intervals) with the traced points as the only outputs, and
+// finds each guide's travel over it (FindGuideTravels at the same resolution). The run may be
+// partial (run.complete, run.message); an error when nothing could be computed or a guide's
+// travel could not be found (a slot cut from the samples would be short).
 Expected<CycleSamples> SampleCycle(const Mechanism& mechanism, const CycleRange& range, const std::vector<TracedPoint>& traced,
                                    const ContinuationOptions& continuation = {});
 

@@ -69,14 +69,11 @@ struct PartSizes {
 // narrow still reads as a linkage), or 1/10 of the length scale where no link has two; D = W/2.
 PartSizes DefaultPartSizes(const Mechanism& mechanism);
 
-// The travel of every prismatic joint's pin along its guide, from the guide's point along its
-// axis [length unit]: the least and greatest over `poses` (0, 0 for other joints; a pin never
-// met: 0, 0). The slots are cut this long.
-std::vector<std::pair<double, double>> GuideTravel(const Mechanism& mechanism, const std::vector<Eigen::VectorXd>& poses);
-
 // Every link as a part at pose q (the solver's coordinates), the frame first. Preconditions:
 // CheckConsistency(mechanism) is empty, q has NumCoordinates() entries, travel has one entry per
-// joint (GuideTravel), sizes.IsValid() (std::invalid_argument otherwise).
+// joint: a prismatic joint's least and greatest displacement of its pin along the guide, from the
+// guide's point [length unit] (CycleSamples::travel; 0, 0 for other joints), sizes.IsValid()
+// (std::invalid_argument otherwise).
 std::vector<Part> PartsAtPose(const Mechanism& mechanism, const Eigen::VectorXd& q,
                               const std::vector<std::pair<double, double>>& travel, const PartSizes& sizes);
 

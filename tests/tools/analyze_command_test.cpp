@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
@@ -281,6 +282,35 @@ TEST_CASE("a 0.04 deg gap between two limit points is found at every step, liste
       CHECK(!(row[0] > limit && row[0] < 354 - limit));
       CHECK(std::abs(DegreeDifference(row[1], FourBarPsi(1, 1.99999995, 3, 4, row[0] + 3, 1))) < 1e-6);
     }
+  }
+}
+
+}  // namespace koppel::analyze_command_test
+
+namespace koppel::analyze_command_test {
+
+// The proportional linkage with its slot's slide S23 turned off the slot's line (axis [1, k]):
+// the line of the second slide S34 then turns vertical, parallel to the output's guide, at a
+// crank angle where the output's block runs off to infinity. The walk crept towards that point
+// for minutes (some axes over 600 s); it must end there within a few seconds, exit 1, say so,
+// and print the rows before it.
+TEST_CASE("a slide whose meeting point runs off to infinity ends the walk there, quickly, with exit 1", "[cli]") {
+  const std::string original = test::ReadText(test::CatalogEntryPath("proportional-linkage"));
+  const std::string slide = "S23: {type: P, links: [slot, block2], points: [B0, A], axis: [1, 0]}";
+  REQUIRE(original.find(slide) != std::string::npos);
+  test::TempDir dir;
+  for (const char* k : {"5", "10", "50", "360", "1e9"}) {
+    std::string text = original;
+    text.replace(text.find(slide), slide.size(), "S23: {type: P, links: [slot, block2], points: [B0, A], axis: [1, " + std::string(k) + "]}");
+    const std::string file = dir.Write(std::string("axis-") + k + ".yaml", text);
+    const auto start = std::chrono::steady_clock::now();
+    const test::RunResult r = test::RunKoppel("analyze " + file + " --step 5 --order 0");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    INFO("axis [1, " << k << "]: " << seconds << " s\n" << r.err);
+    CHECK(seconds < 5.0);  // under the sanitizers too; a release build takes 0.02-0.07 s
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("runs off to infinity") != std::string::npos);
+    CHECK(Lines(r.out).size() > 1);
   }
 }
 

@@ -44,10 +44,10 @@ class Searcher {
     s_.constant = Constant(used);
     if (s_.constant) return;
     for (int i = 0; i + 1 < used; ++i) {
-      if (Adjacent(i, i + 1) && SignChange(Slope(i), Slope(i + 1))) Resolve({i, i + 1, false});
+      if (Adjacent(i, i + 1) && SlopeKnown(i) && SlopeKnown(i + 1) && SignChange(Slope(i), Slope(i + 1))) Resolve({i, i + 1, false});
     }
     if (s_.period > 0) {
-      if (SignChange(Slope(used - 1), Slope(0))) Resolve({used - 1, 0, true});
+      if (SlopeKnown(used - 1) && SlopeKnown(0) && SignChange(Slope(used - 1), Slope(0))) Resolve({used - 1, 0, true});
     } else {
       for (int i = 0; i < used; ++i) {
         const bool starts = i == 0 || !Adjacent(i - 1, i), stops = i + 1 == used || !Adjacent(i, i + 1);
@@ -63,6 +63,8 @@ class Searcher {
  private:
   double Input(int i) const { return s_.sweep.inputs[i]; }
   double Slope(int i) const { return s_.sweep.outputs(i, s_.column + 1); }
+  // a sample on a limit point has no y' (infinite there, stored as 0): no sign change with it
+  bool SlopeKnown(int i) const { return s_.sweep.valid_order[i] >= 1; }
   Eigen::VectorXd Pose(int i) const { return s_.sweep.poses.row(i).transpose(); }
   bool Adjacent(int i, int j) const { return std::abs(Input(j) - Input(i)) <= s_.step * (1 + kStepSlack); }
 

@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace koppel::extremes_test {
@@ -152,6 +153,45 @@ TEST_CASE("extremes: a sample beyond the candidates fails the search", "[extreme
   CHECK(found.maximum.value == 0.95);
   CHECK(found.minimum.kind == ExtremeKind::kRangeEnd);
   CHECK(found.minimum.input == 0.0);
+}
+
+}  // namespace koppel::extremes_test
+
+namespace koppel::extremes_test {
+
+// A range from limit point to limit point (a triple-rocker swung over all it can): the samples on
+// the limits have no y' (infinite there, stored as 0), so no sign change may be bracketed with
+// them. The extreme search used to fail there ("neither a stationary point nor a fold"), and the
+// DXF slots and GIF frames of hand-pump with it. Reference: psi of the closed form, sampled 2e5
+// times over the range and at its ends.
+TEST_CASE("extremes over a range that ends on two limit points", "[extremes]") {
+  const double a = 2, b = 3, c = 2.5, d = 4;
+  const std::vector<double> limits = test::FourBarLimits(a, b, c, d);
+  double limit = 0;
+  for (double l : limits) limit = std::max(limit, std::abs(std::remainder(l, 2 * kPi)));
+  const auto start = test::FourBarRocker(a, b, c, d, 1.0, 1);
+  REQUIRE(start);
+  const Mechanism m = test::PlainFourBar(a, b, c, d, 1.0, start->b);
+  SweepOptions range;
+  range.from = -limit;
+  range.to = limit;
+  range.step = DegToRad(1);
+  const OutputExtremes e = FindOutputExtremes(m, 0, 0, range);
+  INFO(e.Brief());
+  REQUIRE(Usable(e.status));
+  double low = 1e300, high = -1e300;
+  for (int i = 0; i <= 200000; ++i) {
+    const double phi = -limit + 2 * limit * i / 200000.0;
+    const auto rocker = test::FourBarRocker(a, b, c, d, std::clamp(phi, -limit, limit), 1);
+    if (!rocker) continue;  // a rounding beyond the limit
+    const double psi = rocker->psi < 0 ? rocker->psi + 2 * kPi : rocker->psi;  // the branch runs through pi
+    low = std::min(low, psi);
+    high = std::max(high, psi);
+  }
+  // the sampled reference is within (2 limit / 2e5)^2 psi'' / 8 of the true extreme, and the
+  // closed form loses half its digits next to the limits (sqrt of a discriminant near 0)
+  CHECK(e.minimum.value == Approx(low).margin(1e-7));
+  CHECK(e.maximum.value == Approx(high).margin(1e-7));
 }
 
 }  // namespace koppel::extremes_test

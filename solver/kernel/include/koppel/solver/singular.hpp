@@ -29,10 +29,11 @@ enum class SingularKind { kLimitPoint, kBranchPoint };
 const char* ToString(SingularKind kind);  // "limit", "branch-point"
 
 
-// A pose counts as a branch point when sigma_{n-1} / sigma_1 of the constraint rows (drive row
-// left out) is below this: the mechanism without its drive is then within about 1e-12 L of a
-// flat, self-stressed pose, closer than any real design is built (and as close as the rounding
-// of a Grashof-neutral design puts it). Otherwise a singular J is a limit point.
+// AnalyseSingularity classifies a pose as at a branch point when sigma_{n-1} / sigma_1 of the
+// constraint rows (drive row left out) is below this: the mechanism without its drive is then
+// within about 1e-12 L of a flat, self-stressed pose. A walk decides by the bifurcation system
+// instead (LocateBranchPoint below: its defect is what the dimensions miss by, wherever the walk
+// stalled). Otherwise a singular J is a limit point.
 inline constexpr double kBranchPointRcond = 1e-6;
 // Rows of a sweep whose pose has a reciprocal condition of J S below this are flagged singular:
 // a k-th order transfer function computed there through J^-1 may carry errors of order

@@ -119,7 +119,7 @@ class MechanismReader {
       if (points.IsDefined() && !points.IsNull()) {
         for (const YamlReader::Entry& p : r_.Entries(points, Child(path, "points"))) {
           r_.CheckName(p.key_node, Child(Child(path, "points"), p.key), "point", p.key);
-          if (auto v = r_.Vector(p.value, Child(Child(path, "points"), p.key))) {
+          if (auto v = r_.Position(p.value, Child(Child(path, "points"), p.key))) {
             link.points.push_back({p.key, *v});
           } else if (p.value.IsSequence() && p.value.size() == 2) {
             // its number is reported; the point still exists, so joints naming it report nothing more
@@ -385,7 +385,7 @@ class MechanismReader {
     if (!points.IsDefined() || points.IsNull()) return;
     for (const YamlReader::Entry& e : r_.Entries(points, "assembly.points")) {
       const std::string path = Child("assembly.points", e.key);
-      const std::optional<Eigen::Vector2d> where = r_.Vector(e.value, path);
+      const std::optional<Eigen::Vector2d> where = r_.Position(e.value, path);
       if (!where) continue;
       const auto dot = e.key.find('.');
       if (dot != std::string::npos) {

@@ -3,6 +3,8 @@
 #include "koppel/core/limits.hpp"
 #include "koppel/core/printable_text.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -199,6 +201,15 @@ std::optional<Eigen::Vector2d> YamlReader::Vector(const YAML::Node& node, const 
   const std::optional<double> y = Number(node[1], Index(path, 1));
   if (!x || !y) return std::nullopt;
   return Eigen::Vector2d(*x, *y);
+}
+
+std::optional<Eigen::Vector2d> YamlReader::Position(const YAML::Node& node, const std::string& path) {
+  const std::optional<Eigen::Vector2d> v = Vector(node, path);
+  if (!v || v->cwiseAbs().maxCoeff() <= kMaxCoordinate) return v;
+  Error(node, path, fmt::format("a coordinate of {:.3g} lies beyond {:g} of the file's length unit (kMaxCoordinate): no mechanism is "
+                                "that size in its own unit; choose a larger unit (units: {{length: ...}})", v->cwiseAbs().maxCoeff(),
+                                kMaxCoordinate));
+  return std::nullopt;
 }
 
 std::optional<bool> YamlReader::Flag(const YAML::Node& node, const std::string& path) {

@@ -43,6 +43,8 @@ class YamlReader {
   std::optional<double> Number(const YAML::Node& node, const std::string& path, const ParameterSet& parameters);
   std::optional<int> Count(const YAML::Node& node, const std::string& path);  // whole number >= 0
   std::optional<Eigen::Vector2d> Vector(const YAML::Node& node, const std::string& path);
+  // A point's place [x, y]: a Vector within kMaxCoordinate of the origin in each coordinate.
+  std::optional<Eigen::Vector2d> Position(const YAML::Node& node, const std::string& path);
   std::optional<bool> Flag(const YAML::Node& node, const std::string& path);
   std::vector<std::string> TextList(const YAML::Node& node, const std::string& path);
 

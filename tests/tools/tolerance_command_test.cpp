@@ -77,6 +77,18 @@ TEST_CASE("tolerance refuses bad input with exit 2 and names it", "[cli][toleran
       {" --output s --at 60 --tol l1", "expected NAME=VALUE"},
       {" --output s --at 60 --tol l1=0.01 --distribution triangular", "uniform or normal"},
       {" --output nope --at 60 --tol l1=0.01", "no output 'nope'"},
+      // a tolerance or play past any part's size: the stack-up overflowed into "internal error:
+      // refusing to print a non-finite number", exit 1, no rows
+      {" --output s --at 10 --tol l1=1e308", "up to 1e9 (kMaxCoordinate)"},
+      {" --output s --at 10 --clearance A=1e308", "up to 1e9 (kMaxCoordinate)"},
+      // counts within the shared limits, whole, as formulas: --threads -1 and --seed -1 were taken,
+      // --samples 5000000 over a turn ended in std::bad_alloc
+      {" --output s --at 10 --tol l1=0.01 --threads -1", "--threads: expected a whole number from 0 to 256"},
+      {" --output s --at 10 --tol l1=0.01 --threads 1000", "--threads: expected a whole number from 0 to 256"},
+      {" --output s --at 10 --tol l1=0.01 --seed -1", "--seed: expected a whole number from 0 to 9007199254740992"},
+      {" --output s --at 10 --tol l1=0.01 --samples 2.5", "--samples: expected a whole number from 0 to 1000000"},
+      {" --output s --at 10 --tol l1=0.01 --samples 10000000 --threads 2", "--samples: expected a whole number from 0 to 1000000"},
+      {" --output s --from 0 --to 360 --step 1 --tol l1=0.01 --samples 1000000", "kMaxToleranceValues"},
   };
   for (const auto& [arguments, phrase] : cases) {
     const test::RunResult r = test::RunKoppel("tolerance " + file + arguments);
@@ -85,6 +97,20 @@ TEST_CASE("tolerance refuses bad input with exit 2 and names it", "[cli][toleran
     CHECK_THAT(r.err, Catch::Contains(phrase));
     CHECK(r.out.empty());
   }
+}
+
+TEST_CASE("tolerance counts are formulas like every other count", "[cli][tolerance]") {
+  // --samples 1e3 was refused as "Could not convert" while --step took "360/7"
+  const std::string run = "tolerance " + test::CatalogEntryPath("slider-crank-offset") + " --output s --at 60 --tol l1=0.01 --format json";
+  const test::RunResult formula = test::RunKoppel(run + " --samples 1e3 --seed 2^10 --threads 1+1");
+  const test::RunResult plain = test::RunKoppel(run + " --samples 1000 --seed 1024 --threads 2");
+  INFO(formula.err);
+  REQUIRE(formula.exit_code == 0);
+  REQUIRE(plain.exit_code == 0);
+  const nlohmann::json a = nlohmann::json::parse(formula.out), b = nlohmann::json::parse(plain.out);
+  CHECK(a["samples"] == 1000);
+  CHECK(a["seed"] == 1024);
+  CHECK(a["rows"][0]["mc_std"] == b["rows"][0]["mc_std"]);
 }
 
 TEST_CASE("tolerance past the mechanism's limits: the samples that do not assemble are counted, exit 1", "[cli][tolerance]") {

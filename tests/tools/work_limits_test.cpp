@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <sys/resource.h>
@@ -130,7 +131,7 @@ TEST_CASE("threads beyond the limit are refused; threads that cannot be created 
         "synth path " + test::TestDataPath("path-points.csv") + " --atlas " + many}) {
     const test::RunResult r = test::RunKoppel(command + " --threads 1024");
     CHECK(r.exit_code == 2);
-    CHECK_THAT(r.err, Catch::Contains("--threads must be a whole number from 0 to 256"));
+    CHECK_THAT(r.err, Catch::Contains("--threads: expected a whole number from 0 to 256"));
   }
   // 256 threads of 8 MB stacks do not fit in 1.2 GB of address space: fewer run, the same atlas
   REQUIRE(test::RunKoppel("atlas build --count 3000 --threads 1 --quiet -o " + one).exit_code == 0);
@@ -149,6 +150,59 @@ TEST_CASE("atlas build: an atlas that cannot fit in memory is refused with the f
   CHECK_THAT(r.err, !Catch::Contains("bad_alloc"));
   CHECK(Seconds(start) < 5);
 }
+TEST_CASE("tolerance: threads that cannot be created are done without; samples that cannot be held are refused", "[cli][limits]") {
+  // --samples 100000 --threads 1000 under ulimit -v 4000000 died by SIGABRT
+  const std::string run = "tolerance " + test::CatalogEntryPath("slider-crank-offset") + " --output s --at 10 --tol l1=0.01 --samples 3000";
+  const test::RunResult one = test::RunKoppel(run + " --threads 1");
+  const test::RunResult limited = RunUnderAddressLimit(1'200'000, run + " --threads 256");
+  INFO(limited.err);
+  REQUIRE(one.exit_code == 0);
+  REQUIRE(limited.exit_code == 0);
+  CHECK(limited.out == one.out);
+  // 900 000 samples at 100 inputs hold 727 MB of values: refused up front with the figures
+  const auto start = std::chrono::steady_clock::now();
+  const test::RunResult big = RunUnderAddressLimit(
+      600'000, "tolerance " + test::CatalogEntryPath("slider-crank-offset") + " --output s --from 0 --to 99 --tol l1=0.01 --samples 900000");
+  CHECK(big.exit_code == 2);
+  CHECK_THAT(big.err, Catch::Contains("900000 Monte Carlo samples at 100 inputs need about 727 MB") && Catch::Contains("ulimit -v"));
+  CHECK(Seconds(start) < 5);
+}
+
+TEST_CASE("out of memory is said as such, exit 1, never an internal error", "[cli][limits]") {
+  // an animation of 4096 x 4096 px under 300 MB of address space: std::bad_alloc printed as
+  // "internal error: std::bad_alloc"
+  test::TempDir dir;
+  const std::string gif = (dir.path() / "a.gif").string();
+  const test::RunResult r =
+      RunUnderAddressLimit(300'000, "animate " + test::CatalogEntryPath("slider-crank-offset") + " --size 4096x4096 --frames 10 -o " + gif);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.err, Catch::StartsWith("koppel: out of memory:") && Catch::Contains("ulimit -v"));
+  CHECK_THAT(r.err, !Catch::Contains("internal error"));
+  CHECK_FALSE(std::filesystem::exists(gif));
+}
 #endif  // !__SANITIZE_ADDRESS__
+
+TEST_CASE("numbers no mechanism holds, an empty output path: refused, named, never a 300-digit number", "[cli][limits]") {
+  const std::string file = test::CatalogEntryPath("slider-crank-offset");
+  test::TempDir dir;
+  const std::string dxf = (dir.path() / "n.dxf").string();
+  // --set l1=1e300 blamed --pin/--plate, which were not given (D = inf, W = inf)
+  const test::RunResult huge = test::RunKoppel("export " + file + " --dxf --set l1=1e300 -o " + dxf);
+  CHECK(huge.exit_code == 2);
+  CHECK_THAT(huge.err, Catch::Contains("kMaxCoordinate") && Catch::Contains("links.crank.points.A") && !Catch::Contains("--pin"));
+  // --at 1e308 printed phi as 309 digits
+  const test::RunResult far = test::RunKoppel("export " + file + " --dxf --at 1e308 -o " + dxf);
+  CHECK(far.exit_code == 1);
+  CHECK_THAT(far.err, Catch::Contains("1e+308") && !Catch::Contains("0000000000"));
+  CHECK_FALSE(std::filesystem::exists(dxf));
+  // -o '' wrote to standard output
+  for (const char* command : {"analyze", "draw", "export"}) {
+    const test::RunResult empty = test::RunKoppel(std::string(command) + " " + file + (command == std::string("export") ? " --dxf" : "") + " -o ''");
+    INFO(command << ": " << empty.err);
+    CHECK(empty.exit_code == 2);
+    CHECK(empty.out.empty());
+    CHECK_THAT(empty.err, Catch::Contains("-o/--output-file: the path is empty"));
+  }
+}
 
 }  // namespace koppel::work_limits_test

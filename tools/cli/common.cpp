@@ -37,6 +37,15 @@ double ParseNumberFlag(const std::string& flag, const std::string& text) {
   return *value;
 }
 
+long ParseCountFlag(const std::string& flag, const std::string& text, long lo, long hi) {
+  const double v = ParseNumberFlag(flag, text);
+  if (!(v >= static_cast<double>(lo) && v <= static_cast<double>(hi)) || v != std::floor(v)) {
+    Complain(fmt::format("{}: expected a whole number from {} to {}, found '{}'", flag, lo, hi, text));
+    throw Exit{kExitBadInput};
+  }
+  return static_cast<long>(v);
+}
+
 std::vector<double> ParseNumberListFlag(const std::string& flag, const std::string& text, size_t count, const std::string& form) {
   ParameterSet empty;
   const Expected<std::vector<double>> values = empty.EvaluateList(text, count, "'" + form + "'");

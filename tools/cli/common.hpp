@@ -35,6 +35,12 @@ struct Exit {
 // A number given on the command line as a formula ("5/6", "2*sqrt(3)"). Exit{2} on error.
 double ParseNumberFlag(const std::string& flag, const std::string& text);
 
+// A count (--samples, --threads, --seed, --order): a formula like every number ("1e3", "2^10"),
+// whole, from lo to hi. Exit{2} naming the flag, the range and what was given otherwise. Seeds
+// go up to 2^53, the whole numbers a formula holds exactly.
+long ParseCountFlag(const std::string& flag, const std::string& text, long lo, long hi);
+inline constexpr long kMaxSeed = 9'007'199'254'740'992;  // 2^53
+
 // The same for a flag that may be left out: nothing when `text` is empty (the command's default,
 // e.g. the file's sweep through Model::Span, applies).
 std::optional<double> OptionalNumberFlag(const std::string& flag, const std::string& text);
@@ -98,6 +104,8 @@ inline constexpr CountLimit kSweepSamples{static_cast<double>(kMaxSweepSamples),
 inline constexpr CountLimit kStraightSearchSamples{static_cast<double>(kMaxStraightSearchSamples), "kMaxStraightSearchSamples",
                                                    "samples per straight-line search"};
 inline constexpr CountLimit kMotionFourBars{static_cast<double>(kMaxMotionFourBars), "kMaxMotionFourBars", "four-bars per motion synthesis"};
+inline constexpr CountLimit kToleranceValues{static_cast<double>(kMaxToleranceValues), "kMaxToleranceValues",
+                                             "Monte Carlo values (samples x inputs)"};
 inline constexpr CountLimit kChartCells{static_cast<double>(kMaxChartCells), "kMaxChartCells", "cells per chart"};
 
 // The one sample-count check of every sweeping command, before anything is allocated: a range

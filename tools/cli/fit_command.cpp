@@ -22,7 +22,7 @@ void Run(const Args& args) {
   CheckFormat(args.format);
   FitRequest request;
   request.problem = args.problem;
-  if (!args.threads.empty()) request.threads = static_cast<int>(ParseNumberFlag("--threads", args.threads));
+  if (!args.threads.empty()) request.threads = static_cast<int>(ParseCountFlag("--threads", args.threads, 0, kMaxThreads));
   request.yaml = !args.yaml.empty();
   const FitOutcome r = Checked([&] { return FitMechanism(request); });  // a problem file that does not read: exit 2
   if (!args.quiet) {

@@ -62,6 +62,11 @@ void ClaimOutputs() {
     std::string flag = o.option->get_name(false, true);  // "-o,--output-file" -> "-o/--output-file"
     std::replace(flag.begin(), flag.end(), ',', '/');
     for (const std::string& path : o.option->results()) {
+      // -o '' (an unset shell variable) names no file: it must not quietly mean standard output
+      if (path.empty()) {
+        Complain(flag + (o.directory ? ": the path is empty (give a directory)" : ": the path is empty (give a file name, or - for standard output)"));
+        throw Exit{kExitBadInput};
+      }
       if (o.directory) {
         io::ClaimOutputDirectory(path, flag);
       } else {

@@ -29,8 +29,7 @@ struct Args {
   // --tolerance OUTPUT --tol NAME=T ... [--clearance JOINT=c ...] [--samples N --seed S --distribution D]
   std::string tolerance, distribution = "uniform";
   std::vector<std::string> tols, clearances;
-  long samples = 0;
-  std::uint64_t seed = 1;
+  std::string samples = "0", seed = "1";
   std::string out;
 };
 
@@ -93,8 +92,9 @@ void RunTolerancePlot(const Args& args, const Model& model) {
   for (long i = 0; i < n; ++i) request.inputs.push_back(from + i * (to >= from ? std::abs(step) : -std::abs(step)));
   for (const std::string& t : args.tols) request.tolerances.push_back(NamedNumber("--tol", t));
   for (const std::string& c : args.clearances) request.clearances.push_back(NamedNumber("--clearance", c));
-  request.samples = args.samples;
-  request.seed = args.seed;
+  request.samples = ParseCountFlag("--samples", args.samples, 0, kMaxToleranceSamples);
+  CheckCount(static_cast<double>(request.samples) * static_cast<double>(n), "--samples and --from/--to/--step", kToleranceValues);
+  request.seed = static_cast<std::uint64_t>(ParseCountFlag("--seed", args.seed, 0, kMaxSeed));
   request.distribution = args.distribution;
   const ToleranceResult r = Checked([&] { return model.Tolerances(request); });
   plot::ToleranceBand band;

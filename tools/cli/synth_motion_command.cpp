@@ -20,15 +20,6 @@ struct Args {
   std::vector<std::string> circle_points;
 };
 
-int Whole(const std::string& flag, const std::string& text, int lo, int hi) {
-  const double v = ParseNumberFlag(flag, text);
-  if (v != std::floor(v) || v < lo || v > hi) {
-    Complain(fmt::format("{} must be a whole number from {} to {}", flag, lo, hi));
-    throw Exit{kExitBadInput};
-  }
-  return static_cast<int>(v);
-}
-
 [[noreturn]] void BadFlags(const std::string& message) {
   Complain(message);
   throw Exit{kExitBadInput};
@@ -45,17 +36,17 @@ MotionSpec Spec(const Args& args, std::vector<MotionPose> poses) {
   }
   if (!args.grid.empty()) {
     if (n != 3) BadFlags("--grid is for three poses (a family of dyads from a grid of circle points)");
-    spec.grid = Whole("--grid", args.grid, 1, 100);
+    spec.grid = ParseCountFlag("--grid", args.grid, 1, 100);
   }
   if (n == 5 && !spec.circle_points.empty()) BadFlags("five poses fix the dyads (the Ball-Burmester points): no --circle-point");
   if ((n == 2 || n == 3) && spec.circle_points.empty() && spec.grid == 0)
     BadFlags(n == 2 ? "two poses: give the circle points (--circle-point X,Y, twice for a four-bar)"
                     : "three poses: give --circle-point X,Y (twice for a four-bar) or --grid N");
-  if (n == 4) spec.curve_samples = Whole("--samples", args.samples, 1, 1000);
+  if (n == 4) spec.curve_samples = ParseCountFlag("--samples", args.samples, 1, 1000);
   if (n == 2) spec.crank_turn = ParseNumberFlag("--crank-turn", args.crank_turn);
   if (!args.require.empty() && args.require != "crank") BadFlags("--require: only 'crank' (the input turns fully)");
   spec.require_crank = args.require == "crank";
-  if (!args.threads.empty()) spec.threads = Whole("--threads", args.threads, 0, kMaxThreads);
+  if (!args.threads.empty()) spec.threads = ParseCountFlag("--threads", args.threads, 0, kMaxThreads);
   return spec;
 }
 
@@ -92,7 +83,7 @@ void Run(const Args& args) {
   std::vector<MotionPose> poses = Checked([&] { return ReadMotionPoses(args.poses); });  // bad input: its diagnostics, exit 2
   const size_t n = poses.size();
   const MotionSpec spec = Spec(args, std::move(poses));
-  const int top = args.top.empty() ? 0 : Whole("--top", args.top, 1, 1'000'000);
+  const int top = args.top.empty() ? 0 : ParseCountFlag("--top", args.top, 1, 1'000'000);
   if (!args.curves.empty()) WriteCurves(args, spec.poses);
   const MotionReport report = Checked([&] { return SynthesiseMotionReport(spec, args.poses); });
   for (const std::string& note : report.notes) Complain(args.poses + ": " + note);

@@ -31,15 +31,6 @@ std::vector<Eigen::Vector2d> ReadPoints(const std::string& path) {
   }
 }
 
-int Whole(const std::string& flag, const std::string& text, int lo, int hi) {
-  const double v = ParseNumberFlag(flag, text);
-  if (v != std::floor(v) || v < lo || v > hi) {
-    Complain(fmt::format("{} must be a whole number from {} to {}", flag, lo, hi));
-    throw Exit{kExitBadInput};
-  }
-  return static_cast<int>(v);
-}
-
 // A design as a mechanism file in --dir, its comment saying where it came from.
 void WriteDesign(const Args& args, const PathDesign& l, size_t i) {
   const std::string name = fmt::format("path-{}", i + 1);
@@ -56,9 +47,9 @@ void Run(const Args& args) {
   PathSpec request;
   request.points = ReadPoints(args.points);
   request.open = args.open;
-  request.top = Whole("--top", args.top, 1, 1000);
-  if (!args.candidates.empty()) request.candidates = Whole("--candidates", args.candidates, 1, 10000);
-  if (!args.threads.empty()) request.threads = Whole("--threads", args.threads, 0, kMaxThreads);
+  request.top = ParseCountFlag("--top", args.top, 1, 1000);
+  if (!args.candidates.empty()) request.candidates = ParseCountFlag("--candidates", args.candidates, 1, 10000);
+  if (!args.threads.empty()) request.threads = ParseCountFlag("--threads", args.threads, 0, kMaxThreads);
   if (const std::string why = PathSpecProblem(request); !why.empty()) {
     Complain(args.points + ": " + why);
     throw Exit{kExitBadInput};

@@ -18,9 +18,7 @@ namespace {
 struct Args {
   std::string file, output, at, from, to, step = "1", distribution = "uniform";
   std::vector<std::string> tols, clearances, sets;
-  long samples = 0;
-  std::uint64_t seed = 1;
-  int threads = 0;
+  std::string samples = "0", seed = "1", threads = "0";
   bool quiet = false;
   std::string format = "csv", out;
 };
@@ -88,16 +86,14 @@ void Run(const Args& args) {
   request.inputs = Inputs(args);
   for (const std::string& t : args.tols) request.tolerances.push_back(NamedNumber("--tol", t));
   for (const std::string& c : args.clearances) request.clearances.push_back(NamedNumber("--clearance", c));
-  if (args.samples < 0) {
-    Complain("--samples must not be negative");
-    throw Exit{kExitBadInput};
-  }
-  request.samples = args.samples;
-  request.seed = args.seed;
+  request.samples = ParseCountFlag("--samples", args.samples, 0, kMaxToleranceSamples);
+  CheckCount(static_cast<double>(request.samples) * static_cast<double>(request.inputs.size()), "--samples and the inputs",
+             kToleranceValues);
+  request.seed = static_cast<std::uint64_t>(ParseCountFlag("--seed", args.seed, 0, kMaxSeed));
   request.distribution = args.distribution;
-  request.threads = args.threads;
+  request.threads = static_cast<int>(ParseCountFlag("--threads", args.threads, 0, kMaxThreads));
   // a progress bar on a terminal when the run is long
-  const bool bar = !args.quiet && isatty(STDERR_FILENO) && static_cast<double>(args.samples) * request.inputs.size() > kProgressSolves;
+  const bool bar = !args.quiet && isatty(STDERR_FILENO) && static_cast<double>(request.samples) * request.inputs.size() > kProgressSolves;
   if (bar) {
     request.progress = [](long done, long total) {
       const int width = 40, filled = static_cast<int>(width * done / std::max(1L, total));
@@ -148,10 +144,10 @@ void AddToleranceCommand(CLI::App& app) {
   cmd->add_option("--step", args->step, "... by this step (default 1)");
   cmd->add_option("--tol", args->tols, "A parameter's tolerance: NAME=T (+-T, the parameter's unit); repeat for several");
   cmd->add_option("--clearance", args->clearances, "A revolute joint's play: JOINT=c (the pin free in a circle of radius c); repeat");
-  cmd->add_option("--samples", args->samples, "Monte Carlo samples (default 0: the linear analysis only)");
-  cmd->add_option("--seed", args->seed, "Monte Carlo seed (default 1); the result does not depend on the number of threads");
+  cmd->add_option("--samples", args->samples, "Monte Carlo samples (default 0: the linear analysis only; at most 1 000 000, and samples x inputs at most 10^8)");
+  cmd->add_option("--seed", args->seed, "Monte Carlo seed, 0 to 2^53 (default 1); the result does not depend on the number of threads");
   cmd->add_option("--distribution", args->distribution, "uniform (default: +-T) or normal (T = 3 sigma)");
-  cmd->add_option("--threads", args->threads, "Threads for the Monte Carlo run (default 0: every core)");
+  cmd->add_option("--threads", args->threads, "Threads for the Monte Carlo run (default 0: every core; at most 256, kMaxThreads)");
   cmd->add_flag("--quiet", args->quiet, "No progress bar");
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE");
   cmd->add_option("--format", args->format, "csv (default) or json (one object per input, with the same names)");

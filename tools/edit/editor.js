@@ -352,7 +352,8 @@
       box.value = String(p.value); box.step = 'any';
       range.disabled = box.disabled = !formulasTrusted;
       range.addEventListener('change', () => api.set(p.name, +range.value));
-      box.addEventListener('change', () => api.set(p.name, +box.value));
+      // an emptied box is no number (+'' would be 0)
+      box.addEventListener('change', () => api.set(p.name, box.value.trim() === '' ? NaN : +box.value));
       table.appendChild(tr);
     }
   }
@@ -428,6 +429,12 @@
     },
     // a parameter to a value, the file's formulas evaluated again; {ok, message}
     set(name, value) {
+      // a value is a finite number: '' or null or [] is not 0, true is not 1, 'x' is no formula to blame
+      if (typeof value !== 'number' || !Number.isFinite(value)) {
+        const why = name + ': expected a finite number, got ' + (typeof value === 'string' ? "'" + value + "'" : String(value));
+        say(why, true);
+        return { ok: false, message: why };
+      }
       if (!formulasTrusted) return { ok: false, message: message.textContent };
       const base = state || pending;
       if (!base.parameters.some((p) => p.name === name)) return { ok: false, message: "'" + name + "' is not a parameter of this file" };

@@ -3,6 +3,10 @@
 #include "pose_walk.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/limits.hpp"
+#include "koppel/core/memory.hpp"
+#include "koppel/core/worker_threads.hpp"
+
 
 #include <algorithm>
 #include <atomic>
@@ -74,43 +78,43 @@ struct NominalPose {
   Eigen::VectorXd q;
 };
 
-// The samples at every reached row: values[row * samples + k], NaN where sample k failed.
+// The samples at every reached row: values[row * samples + k], NaN where sample k failed. The
+// threads are the shared pool's (koppel/core/worker_threads.hpp): fewer when no more can be had.
 std::vector<double> RunSamples(const MechanismBuilder& builder, const std::vector<double>& nominal, const ToleranceOptions& o,
                                const std::vector<NominalPose>& poses, const std::vector<double>& nominal_y, bool angle) {
   const long n = o.samples;
   const size_t rows = poses.size();
   std::vector<double> values(rows * n, std::numeric_limits<double>::quiet_NaN());
-  std::atomic<long> next{0}, done{0};
+  std::atomic<long> next{0};
   constexpr long kChunk = 16;
-  auto worker = [&] {
+  const std::thread::id caller = std::this_thread::get_id();
+  auto last_report = std::chrono::steady_clock::now();
+  auto work = [&] {
     for (;;) {
       const long first = next.fetch_add(kChunk);
       if (first >= n) return;
       for (long k = first; k < std::min(n, first + kChunk); ++k) {
         const Expected<Sample> sample = DrawSample(builder, nominal, o, k);
-        if (sample) {
-          PositionSolver solver(sample->assembly);
-          const ConstraintSystem parts(sample->parts);
-          for (size_t row = 0; row < rows; ++row) {
-            Eigen::VectorXd q = poses[row].q;
-            if (!solver.Correct(poses[row].input, q).ok()) continue;
-            const double y = OutputOnLinks(parts, o.output, o.component, q);
-            values[row * n + k] = angle ? nominal_y[row] + WrapToHalfTurn(y - nominal_y[row]) : y;
-          }
+        if (!sample) continue;
+        PositionSolver solver(sample->assembly);
+        const ConstraintSystem parts(sample->parts);
+        for (size_t row = 0; row < rows; ++row) {
+          Eigen::VectorXd q = poses[row].q;
+          if (!solver.Correct(poses[row].input, q).ok()) continue;
+          const double y = OutputOnLinks(parts, o.output, o.component, q);
+          if (std::isfinite(y)) values[row * n + k] = angle ? nominal_y[row] + WrapToHalfTurn(y - nominal_y[row]) : y;
         }
-        done.fetch_add(1);
+      }
+      // the callback runs on the caller's thread only, about ten times a second: it need not be thread-safe
+      const auto now = std::chrono::steady_clock::now();
+      if (o.progress && std::this_thread::get_id() == caller && now - last_report >= std::chrono::milliseconds(100)) {
+        last_report = now;
+        o.progress(std::min(n, next.load()), n);
       }
     }
   };
-  int threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = static_cast<int>(std::min<long>(threads, std::max(1L, n / kChunk)));
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  while (o.progress && done.load() < n) {
-    o.progress(done.load(), n);
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  for (std::thread& t : pool) t.join();
+  // more threads than chunks would find nothing to do
+  RunOnThreads(static_cast<int>(std::min<long>(o.threads, std::max(1L, n / kChunk))), work);
   if (o.progress) o.progress(n, n);
   return values;
 }
@@ -127,38 +131,60 @@ void Statistics(const double* values, long n, const std::vector<double>& levels,
   std::sort(v.begin(), v.end());
   row->mc_min = v.front();
   row->mc_max = v.back();
-  double mean = 0;
-  for (double x : v) mean += x;
-  mean /= v.size();
-  double sum = 0;
-  for (double x : v) sum += (x - mean) * (x - mean);
+  // Welford's running mean and sum of squared deviations: no sum of all values to overflow
+  double mean = 0, sum = 0;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const double delta = v[i] - mean;
+    mean += delta / static_cast<double>(i + 1);
+    sum += delta * (v[i] - mean);
+  }
   row->mc_mean = mean;
   row->mc_std = v.size() > 1 ? std::sqrt(sum / (v.size() - 1)) : 0.0;
+  if (!std::isfinite(row->mc_mean) || !std::isfinite(row->mc_std)) {
+    row->ok = false;
+    row->message = "the Monte Carlo samples' spread exceeds the range of double-precision numbers";
+  }
   for (double level : levels) row->quantiles.push_back(Quantile(v, level));
+}
+
+// sqrt(sum x^2) without overflow or underflow of the squares (a tolerance of 1e200 gives a
+// stack-up of 1e200, not infinity): each term scaled by the largest.
+double Norm(const std::vector<double>& terms) {
+  double largest = 0;
+  for (double x : terms) largest = std::max(largest, std::abs(x));
+  if (!(largest > 0) || !std::isfinite(largest)) return largest;
+  double sum = 0;
+  for (double x : terms) sum += (x / largest) * (x / largest);
+  return largest * std::sqrt(sum);
 }
 
 // The linear stack-up of one row from its sensitivities. Each term's variance (s_j sigma_j)^2 or
 // (|dy/d delta| c)^2 / 4 is its share of linear_std^2: the shares use the model linear_std does.
+// A stack-up beyond the range of double (tolerances far beyond the mechanism's size) leaves the
+// row without it, saying so: never an infinity in a table.
 void Linear(const ToleranceOptions& o, ToleranceRow* row) {
   const double sigma_per_tolerance = o.distribution == ToleranceDistribution::kUniform ? 1 / std::sqrt(3.0) : 1.0 / 3;
-  std::vector<double> variances;  // tolerances, then clearances
-  double parameters = 0;
+  std::vector<double> parts, deviations;  // s_j T_j; the standard deviations: tolerances, then clearances
   for (size_t j = 0; j < o.tolerances.size(); ++j) {
     const double part = row->sensitivity[j] * o.tolerances[j];
     row->worst_case += std::abs(part);
-    parameters += part * part;
-    variances.push_back(std::pow(part * sigma_per_tolerance, 2));
+    parts.push_back(part);
+    deviations.push_back(part * sigma_per_tolerance);
   }
   for (size_t c = 0; c < o.clearances.size(); ++c) {
     const double part = row->clearance_gain[c] * o.clearances[c];
     row->clearance_worst_case += part;
-    variances.push_back(part * part / 4);  // the projection of a point uniform in a disc of radius c: c^2/4
+    deviations.push_back(part / 2);  // the projection of a point uniform in a disc of radius c: c^2/4
   }
-  double variance = 0;
-  for (double v : variances) variance += v;
-  row->rss = std::sqrt(parameters);
-  row->linear_std = std::sqrt(variance);
-  for (double v : variances) row->share.push_back(variance > 0 ? v / variance : 0.0);
+  row->rss = Norm(parts);
+  row->linear_std = Norm(deviations);
+  for (double d : deviations) row->share.push_back(row->linear_std > 0 ? (d / row->linear_std) * (d / row->linear_std) : 0.0);
+  const bool finite = std::isfinite(row->worst_case) && std::isfinite(row->clearance_worst_case) && std::isfinite(row->linear_std);
+  if (!finite) {
+    row->ok = false;
+    row->message = "the linear stack-up exceeds the range of double-precision numbers (a tolerance or clearance far "
+                   "beyond the mechanism's size)";
+  }
 }
 
 ToleranceReport Failed(std::string why) {
@@ -168,8 +194,8 @@ ToleranceReport Failed(std::string why) {
   return r;
 }
 
-// The report's status from its rows: failed when no input was reached, partial when some were
-// not or Monte Carlo samples did not assemble.
+// The report's status from its rows: failed when no input has a result (not reached, or its
+// stack-up overflows), partial when some have none or Monte Carlo samples did not assemble.
 void SetToleranceReportStatus(ToleranceReport* report) {
   report->status = AnalysisStatus::kComplete;
   long failed_samples = 0;
@@ -180,10 +206,10 @@ void SetToleranceReportStatus(ToleranceReport* report) {
   }
   if (failed_rows == report->rows.size()) {
     report->status = AnalysisStatus::kFailed;
-    report->message = "no input was reached: " + report->rows.front().message;
+    report->message = "no input has a result: " + report->rows.front().message;
   } else if (failed_rows > 0) {
     report->status = AnalysisStatus::kPartial;
-    report->message = std::to_string(failed_rows) + " of " + std::to_string(report->rows.size()) + " inputs not reached";
+    report->message = std::to_string(failed_rows) + " of " + std::to_string(report->rows.size()) + " inputs without a result (see each)";
   }
   if (failed_samples > 0) {
     report->status = AnalysisStatus::kPartial;
@@ -193,6 +219,8 @@ void SetToleranceReportStatus(ToleranceReport* report) {
 }
 
 }  // namespace
+
+bool IsToleranceSize(double value) { return value > 0 && value <= kMaxCoordinate; }
 
 const char* ToString(ToleranceDistribution distribution) {
   return distribution == ToleranceDistribution::kUniform ? "uniform" : "normal";
@@ -207,7 +235,7 @@ bool ToleranceOptions::IsValid(const Mechanism& nominal, std::string* why) const
   if (component < 0 || component >= nominal.outputs[output].Components()) return fail("no such component of the output");
   if (inputs.empty()) return fail("no input to evaluate at");
   for (double t : tolerances) {
-    if (!(t > 0) || !std::isfinite(t)) return fail("a tolerance must be a positive number");
+    if (!IsToleranceSize(t)) return fail(std::string("a tolerance must be ") + kToleranceSizeRule);
   }
   if (clearance_joints.size() != clearances.size()) return fail("one clearance per joint");
   for (size_t c = 0; c < clearances.size(); ++c) {
@@ -215,14 +243,35 @@ bool ToleranceOptions::IsValid(const Mechanism& nominal, std::string* why) const
     if (j < 0 || j >= static_cast<int>(nominal.joints.size())) return fail("no such joint");
     if (nominal.joints[j].type != JointType::kRevolute)
       return fail("joint '" + nominal.joints[j].name + "' is not a revolute joint: clearance is modelled for pins in holes");
-    if (!(clearances[c] > 0) || !std::isfinite(clearances[c])) return fail("a clearance must be a positive number");
+    if (!IsToleranceSize(clearances[c])) return fail(std::string("a clearance must be ") + kToleranceSizeRule);
   }
-  if (samples < 0) return fail("the number of samples must not be negative");
+  if (samples < 0 || samples > kMaxToleranceSamples)
+    return fail("the number of samples must lie between 0 and " + std::to_string(kMaxToleranceSamples) + " (kMaxToleranceSamples)");
+  if (static_cast<double>(samples) * static_cast<double>(inputs.size()) > static_cast<double>(kMaxToleranceValues))
+    return fail(std::to_string(samples) + " samples at " + std::to_string(inputs.size()) + " inputs are more than " +
+                std::to_string(kMaxToleranceValues) + " values (kMaxToleranceValues): fewer samples or inputs");
+  if (threads < 0 || threads > kMaxThreads) return fail("threads must lie between 0 (one per core) and " + std::to_string(kMaxThreads) + " (kMaxThreads)");
   for (double level : quantile_levels) {
     if (!(level >= 0 && level <= 1)) return fail("quantile levels lie in [0, 1]");
   }
   why->clear();
   return true;
+}
+
+std::uint64_t ToleranceValueBytes(const ToleranceOptions& o) {
+  // every value until its input's statistics, and one input's sorted copy
+  const double values = static_cast<double>(std::max(0L, o.samples)) * (static_cast<double>(o.inputs.size()) + 1.0);
+  return static_cast<std::uint64_t>(std::min(values * sizeof(double), 1.8e19));
+}
+
+Outcome CheckToleranceMemory(const ToleranceOptions& o, std::uint64_t usable_bytes, const std::string& source) {
+  const std::uint64_t needed = ToleranceValueBytes(o);
+  // half of it: the process holds its code, the mechanisms and the threads' stacks besides
+  if (needed <= usable_bytes / 2) return Done();
+  return Outcome::Error(std::to_string(o.samples) + " Monte Carlo samples at " + std::to_string(o.inputs.size()) + " inputs need about " +
+                        FormatBytes(static_cast<double>(needed)) + " of memory, more than half the " +
+                        FormatBytes(static_cast<double>(usable_bytes)) + " this process may have (" + source +
+                        "): fewer samples, or the inputs in several runs");
 }
 
 ToleranceReport AnalyseTolerances(const MechanismBuilder& builder, const std::vector<double>& nominal, const ToleranceOptions& o) {
@@ -249,7 +298,7 @@ ToleranceReport AnalyseTolerances(const MechanismBuilder& builder, const std::ve
     // the sensitivities need the Jacobian factorised at exactly this pose
     if (row.message.empty() && !walk.solver().Correct(input, q).ok()) row.message = "the nominal pose did not converge";
     if (row.message.empty()) {
-      row.ok = true;
+      row.ok = true;  // unless its stack-up overflows (Linear)
       PositionSolver& solver = walk.solver();
       row.nominal = solver.system().Output(o.output, o.component, q.data());
       Eigen::MatrixXd d;
@@ -257,6 +306,8 @@ ToleranceReport AnalyseTolerances(const MechanismBuilder& builder, const std::ve
       row.sensitivity.assign(d.data(), d.data() + d.size());
       for (int joint : o.clearance_joints) row.clearance_gain.push_back(ClearanceGradient(solver, q, joint, o.output, o.component).norm());
       Linear(o, &row);
+    }
+    if (row.ok) {
       reached.push_back(report.rows.size());
       poses.push_back({input, q});
       nominal_y.push_back(row.nominal);

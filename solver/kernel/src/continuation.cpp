@@ -5,6 +5,7 @@
 #include "koppel/solver/singular.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -99,6 +100,7 @@ bool ContinuationOptions::IsValid(std::string* why) const {
   if (!positive(max_correction)) return fail("max_correction must be positive");
   if (!positive(max_tangent_change)) return fail("max_tangent_change must be positive");
   if (max_steps < 1) return fail("max_steps must be at least 1");
+  if (!positive(time_budget)) return fail("time_budget must be positive");
   if (why) why->clear();
   return true;
 }
@@ -670,10 +672,13 @@ WalkReport Continuation::Walk(double target, double max_step) {
   double h = cap;
   bool examined = false;
   long steps = 0;
+  const auto start = std::chrono::steady_clock::now();
   while (input_ != target) {
     if (++steps > options_.max_steps) {
       return Ended(WalkStatus::kTooFar, "more than " + std::to_string(options_.max_steps) + " continuation steps");
     }
+    // the clock is read every 1024 steps: a step is a microsecond, a clock read a few dozen ns
+    if (steps % 1024 == 0 && OutOfTime(start)) return Ended(WalkStatus::kTooFar, OutOfTimeMessage(steps, target));
     const double remaining = target - input_;
     const double direction = remaining > 0.0 ? 1.0 : -1.0;
     const double next = std::abs(remaining) <= h ? target : input_ + direction * h;
@@ -689,6 +694,7 @@ WalkReport Continuation::Walk(double target, double max_step) {
     }
     h *= 0.5;
     if (!examined && h < options_.stall_fraction * cap) {
+      if (OutOfTime(start)) return Ended(WalkStatus::kTooFar, OutOfTimeMessage(steps, target));
       examined = true;
       const Crossing crossing = ExamineStall(direction, target, &finished);
       if (crossing == Crossing::kFinished) return finished;
@@ -701,6 +707,17 @@ WalkReport Continuation::Walk(double target, double max_step) {
     if (h < options_.limit_resolution * input_scale_) return EndAtStall(direction, target);
   }
   return Reached();
+}
+
+bool Continuation::OutOfTime(std::chrono::steady_clock::time_point start) const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > options_.time_budget;
+}
+
+std::string Continuation::OutOfTimeMessage(long steps, double target) const {
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%g", options_.time_budget);
+  return "the walk stopped at " + Where(input_) + " short of " + Where(target) + " after " + seconds + " s and " +
+         std::to_string(steps) + " continuation steps (its time budget): the branch creeps through a singular stretch there";
 }
 
 bool Continuation::RunsOff() const {

@@ -5,7 +5,7 @@
 #include "koppel/core/memory.hpp"
 #include "koppel/synthesis/atlas_file.hpp"
 #include "atlas_curve.hpp"
-#include "worker_threads.hpp"
+#include "koppel/core/worker_threads.hpp"
 
 #include <fmt/core.h>
 

@@ -8,7 +8,7 @@
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
 #include "koppel/core/limits.hpp"
-#include "worker_threads.hpp"
+#include "koppel/core/worker_threads.hpp"
 
 #include <fmt/core.h>
 

@@ -6,7 +6,7 @@
 
 #include "path_prepolish.hpp"
 #include "koppel/core/limits.hpp"
-#include "worker_threads.hpp"
+#include "koppel/core/worker_threads.hpp"
 
 #include <fmt/core.h>
 #include <nanoflann.hpp>

@@ -291,3 +291,36 @@ TEST_CASE("continuation options validate themselves", "[continuation]") {
 }
 
 }  // namespace koppel::continuation_test
+
+namespace koppel::continuation_test {
+
+// The walk budget: a walk that has spent its time ends, saying where it stood, and the walk
+// stands on the branch there (a later walk goes on from it). The reference: a crank-rocker's
+// rocker angle at the input the walk stopped at, from the same mechanism walked there directly.
+TEST_CASE("a walk past its time budget stops where it stands and says so", "[continuation]") {
+  const Mechanism m = test::PlainFourBar(1, 3.5, 3, 4, 0.0, Eigen::Vector2d(2.5, 2.6));
+  PositionSolver solver(m);
+  Eigen::VectorXd q(solver.NumCoordinates());
+  REQUIRE(solver.Assemble(q).ok());
+  ContinuationOptions options;
+  options.time_budget = 1e-9;  // spent at the first look at the clock (the 1024th step)
+  Continuation walk(solver, options);
+  REQUIRE(walk.Start(0.0, q).ok());
+  const WalkReport r = walk.AdvanceTo(1e4, 0.01);  // a million steps of 0.01 rad
+  REQUIRE(r.status == WalkStatus::kTooFar);
+  CHECK_THAT(r.message, Catch::Contains("time budget") && Catch::Contains("1024 continuation steps"));
+  CHECK(r.input == Approx(1023 * 0.01).margin(1e-9));
+  const Eigen::VectorXd stood = walk.q();
+  PositionSolver fresh_solver(m);
+  Continuation fresh(fresh_solver);
+  REQUIRE(fresh.Start(0.0, q).ok());
+  REQUIRE(fresh.AdvanceTo(r.input, 0.01).ok());
+  CHECK((fresh.q() - stood).cwiseAbs().maxCoeff() < 1e-9);
+  ContinuationOptions none;
+  none.time_budget = 0;
+  std::string why;
+  CHECK_FALSE(none.IsValid(&why));
+  CHECK_THAT(why, Catch::Contains("time_budget"));
+}
+
+}  // namespace koppel::continuation_test

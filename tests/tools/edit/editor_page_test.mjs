@@ -103,6 +103,11 @@ try {
       await compare(page, id, analyze(file, ['--set', 'e=0.3']), 'e=0.3');
       const unknown = await page.evaluate(() => window.koppel.set('nope', 1));
       check(!unknown.ok, `${id}: set of an unknown parameter was accepted`);
+      // not numbers: '' null [] set 0 and true set 1 ({ok: true}); 'x' blamed a formula
+      const junk = await page.evaluate(() => ['', null, [], true, 'x', '0.3', NaN, Infinity].map((v) => window.koppel.set('e', v)));
+      check(junk.every((r) => !r.ok && /expected a finite number/.test(r.message)), `${id}: a non-number was taken: ${JSON.stringify(junk)}`);
+      check((await page.evaluate(() => window.koppel.parameters().find((p) => p.name === 'e').value)) === 0.3,
+        `${id}: a refused non-number changed e`);
 
       // a change that cannot assemble (e = 5: the crank's end stays 4 or more below the slide
       // line, the coupler of 2.6 cannot reach it at any input): refused, said, and the numbers

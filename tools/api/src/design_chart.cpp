@@ -6,6 +6,7 @@
 #include "koppel/core/angles.hpp"
 #include "koppel/core/diagnostic.hpp"
 #include "koppel/core/limits.hpp"
+#include "koppel/core/worker_threads.hpp"
 #include "koppel/synthesis/deadcentre_synthesis.hpp"
 
 #include <fmt/core.h>
@@ -14,7 +15,6 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
-#include <thread>
 
 namespace koppel {
 
@@ -35,11 +35,7 @@ std::vector<Design> DesignAll(size_t n, const std::function<Design(size_t)>& des
   auto work = [&] {
     for (size_t i = next++; i < n; i = next++) designs[i] = design(i);
   };
-  const unsigned count = threads > 0 ? static_cast<unsigned>(threads) : std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < std::min<size_t>(count, std::max<size_t>(n, 1)); ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+  RunOnThreads(threads, work);
   return designs;
 }
 

@@ -8,6 +8,7 @@
 #include "koppel/analysis/tolerance.hpp"
 #include "koppel/catalog/parameter_builder.hpp"
 #include "koppel/core/angles.hpp"
+#include "koppel/core/memory.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -99,7 +100,7 @@ ToleranceOptions CheckedToleranceOptions(const Model& model, const ToleranceRequ
     auto found = std::find_if(values.begin(), values.end(), [&](const auto& v) { return v.first == name; });
     if (found == values.end()) BadInput(model.path(), "tol", "the mechanism has no parameter '" + name + "'");
     if (std::find(names.begin(), names.end(), name) != names.end()) BadInput(model.path(), "tol", "parameter '" + name + "' is toleranced twice");
-    if (!(tolerance > 0) || !std::isfinite(tolerance)) BadInput(model.path(), "tol", "the tolerance of '" + name + "' must be a positive number");
+    if (!IsToleranceSize(tolerance)) BadInput(model.path(), "tol", "the tolerance of '" + name + "' must be " + kToleranceSizeRule);
     names.push_back(name);
     nominal.push_back(found->second);
     o.tolerances.push_back(tolerance);
@@ -109,14 +110,13 @@ ToleranceOptions CheckedToleranceOptions(const Model& model, const ToleranceRequ
     if (j < 0) BadInput(model.path(), "clearance", "the mechanism has no joint '" + joint + "'");
     if (model.mechanism().joints[j].type != JointType::kRevolute)
       BadInput(model.path(), "clearance", "joint '" + joint + "' is a slide: clearance is modelled for revolute joints (a pin in a hole)");
-    if (!(radius > 0) || !std::isfinite(radius)) BadInput(model.path(), "clearance", "the clearance of '" + joint + "' must be a positive number");
+    if (!IsToleranceSize(radius)) BadInput(model.path(), "clearance", "the clearance of '" + joint + "' must be " + kToleranceSizeRule);
     if (std::find(o.clearance_joints.begin(), o.clearance_joints.end(), j) != o.clearance_joints.end())
       BadInput(model.path(), "clearance", "joint '" + joint + "' is given twice");
     o.clearance_joints.push_back(j);
     o.clearances.push_back(radius);
   }
   if (names.empty() && o.clearances.empty()) BadInput(model.path(), "tol", "give at least one tolerance or clearance");
-  if (request.samples < 0) BadInput(model.path(), "samples", "the number of samples must not be negative");
   if (request.distribution == "uniform") o.distribution = ToleranceDistribution::kUniform;
   else if (request.distribution == "normal") o.distribution = ToleranceDistribution::kNormal;
   else BadInput(model.path(), "distribution", "the distribution is uniform or normal, not '" + request.distribution + "'");
@@ -124,6 +124,9 @@ ToleranceOptions CheckedToleranceOptions(const Model& model, const ToleranceRequ
   o.seed = request.seed;
   o.threads = request.threads;
   o.progress = request.progress;
+  if (std::string why; !o.IsValid(model.mechanism(), &why)) BadInput(model.path(), "tolerance", why);
+  const MemoryLimit memory = UsableMemory();
+  if (const Outcome fits = CheckToleranceMemory(o, memory.bytes, memory.source); !fits) BadInput(model.path(), "samples", fits.error());
   return o;
 }
 
@@ -148,6 +151,13 @@ ToleranceRowReport ToleranceRowShown(const ToleranceRow& row, double k, double i
   r.mc_mean = k * row.mc_mean;
   r.mc_std = k * row.mc_std;
   for (double q : row.quantiles) r.quantiles.push_back(k * q);
+  // radians to degrees can overflow what radians held
+  std::vector<double> shown = {r.nominal, r.worst_case, r.rss, r.clearance_worst_case, r.linear_std, r.mc_min, r.mc_max, r.mc_mean, r.mc_std};
+  for (const auto* part : {&r.sensitivity, &r.clearance_gain, &r.quantiles}) shown.insert(shown.end(), part->begin(), part->end());
+  if (r.ok && !std::all_of(shown.begin(), shown.end(), [](double x) { return std::isfinite(x); })) {
+    r.ok = false;
+    r.message = "the output's numbers in degrees exceed the range of double-precision numbers";
+  }
   return r;
 }
 

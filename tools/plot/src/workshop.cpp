@@ -3,6 +3,8 @@
 #include "koppel/plot/svg.hpp"
 #include "plot_support.hpp"
 
+#include <fmt/core.h>
+
 #include <stdexcept>
 
 namespace koppel::plot {
@@ -25,7 +27,7 @@ WorkshopDrawing DrawWorkshop(const Mechanism& m, const WorkshopOptions& options)
   if (!samples) return FailedDrawing(samples.error());
   const double input = options.at.value_or(m.hint.input);
   const Expected<Eigen::VectorXd> pose = PoseOnCycle(m, *samples, input);
-  if (!pose) return FailedDrawing("cannot reach " + InputName(m) + " = " + Num(ShownInput(m, input), 6) + ": " + pose.error());
+  if (!pose) return FailedDrawing("cannot reach " + InputName(m) + " = " + fmt::format("{:.12g}", ShownInput(m, input)) + ": " + pose.error());
   WorkshopDrawing drawing;
   drawing.input = input;
   drawing.range = samples->range;

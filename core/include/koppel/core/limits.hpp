@@ -57,6 +57,23 @@ inline constexpr long kMaxPathPointFits = 3'000;
 // --t 0:1e6 --dt 1 asked for a million.
 inline constexpr long kMaxSimulationRows = 100'000;
 
+// Monte Carlo samples of one tolerance analysis (tolerance --samples): each sample evaluates the
+// file anew with its drawn parameters and solves every input, about 0.4 ms of one core a sample
+// (measured: 200 000 samples of the offset slider-crank at one input in 38 s on two cores), so a
+// million is some three minutes on two cores; 100 000 already put 100 samples beyond the 0.001
+// quantile. --samples 10000000 asked for half an hour.
+inline constexpr long kMaxToleranceSamples = 1'000'000;
+
+// Samples x inputs of one tolerance analysis: every value is held until its input's quantiles are
+// taken (8 bytes each, 800 MB at the limit; the run also checks it against the memory the process
+// may have). --samples 5000000 over a turn asked for 1.8 billion.
+inline constexpr long kMaxToleranceValues = 100'000'000;
+
+// The largest coordinate of a point of a mechanism file [its length unit]: a billion. The solver
+// works in double precision relative to the mechanism's size, and a squared length of 1e300
+// overflows; `--set l1=1e300` made a mechanism whose every derived size was infinite.
+inline constexpr double kMaxCoordinate = 1e9;
+
 // Metres per length unit of a file (units: {length: ...}): a nanometre to a thousand kilometres.
 // Forces, energies and moments of inertia scale with up to the fifth power of the unit (a mass's
 // inertia in kg m^2 times speeds squared), so a unit of 1e308 m makes every force overflow.

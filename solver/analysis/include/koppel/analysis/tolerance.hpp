@@ -28,6 +28,7 @@
 
 #include "koppel/analysis/sensitivity.hpp"
 #include "koppel/analysis/status.hpp"
+#include "koppel/core/expected.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -35,6 +36,11 @@
 #include <vector>
 
 namespace koppel {
+
+// What a tolerance T or a clearance c may be: positive, and within kMaxCoordinate (a tolerance
+// beyond the largest coordinate a mechanism file may hold describes no part).
+bool IsToleranceSize(double value);
+inline constexpr const char* kToleranceSizeRule = "a positive number up to 1e9 (kMaxCoordinate)";
 
 enum class ToleranceDistribution { kUniform, kNormal };
 const char* ToString(ToleranceDistribution distribution);  // "uniform", "normal"
@@ -47,10 +53,11 @@ struct ToleranceOptions {
   std::vector<double> tolerances;    // T_j > 0 of the builder's parameters, in their order
   std::vector<int> clearance_joints; // revolute joints with play
   std::vector<double> clearances;    // their radius c > 0 [length]
-  long samples = 0;                  // Monte Carlo samples; 0: the linear analysis only
+  long samples = 0;                  // Monte Carlo samples; 0: the linear analysis only (kMaxToleranceSamples,
+                                     // and samples x inputs at most kMaxToleranceValues: core/limits.hpp)
   std::uint64_t seed = 1;
   ToleranceDistribution distribution = ToleranceDistribution::kUniform;
-  int threads = 0;                   // 0: every core
+  int threads = 0;                   // 0: every core; at most kMaxThreads (fewer run when no more can be had)
   // Called on the caller's thread about ten times a second while the samples run: (done, total).
   std::function<void(long done, long total)> progress;
   std::vector<double> quantile_levels = {0.001, 0.01, 0.5, 0.99, 0.999};
@@ -79,6 +86,12 @@ struct ToleranceReport {
   std::string message;
   std::vector<ToleranceRow> rows;
 };
+
+// The memory a run holds its samples' values in [bytes], and whether that fits in half of
+// `usable_bytes` (koppel/core/memory.hpp's UsableMemory, named by `source` in the message): a run
+// that cannot hold them ends before it starts, with the figures, not with std::bad_alloc.
+std::uint64_t ToleranceValueBytes(const ToleranceOptions& options);
+Outcome CheckToleranceMemory(const ToleranceOptions& options, std::uint64_t usable_bytes, const std::string& source);
 
 // `builder` rebuilds the mechanism from the toleranced parameters' values; `nominal` are their
 // nominal values. Bad options: status failed with the reason (the CLI checks them first).

@@ -43,6 +43,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -73,6 +74,10 @@ struct ContinuationOptions {
   BranchPointAction at_branch_point = BranchPointAction::kContinue;
   // Continuation steps one AdvanceTo may take: a walk to a far input is refused, never endless.
   long max_steps = 20'000'000;
+  // Seconds one AdvanceTo may take: a walk that creeps (a singular stretch examined again and
+  // again) ends, saying where it stood, instead of running on. 20 million steps of a four-bar take
+  // about 4 s; a walk of a few samples' distance takes microseconds.
+  double time_budget = 30.0;
 
   // Empty *why and true when every field is usable; otherwise the first problem.
   bool IsValid(std::string* why) const;
@@ -83,7 +88,7 @@ enum class WalkStatus {
   kReached,          // the target input was reached
   kLimitPoint,       // a limit point of the drive lies between: the branch ends there
   kBranchPointStop,  // a branch point lies between and the options say stop
-  kTooFar,           // the target needs more than max_steps steps
+  kTooFar,           // the target needs more than max_steps steps or time_budget seconds
   kFailed,           // no pose could be found (Newton failed without a singular position)
   kRunOff,           // a joint runs off to infinity ahead (two slide lines turn parallel): the branch ends there
 };
@@ -187,6 +192,8 @@ class Continuation {
   // parallel, their meeting point goes to infinity, and no step reaches the input there.
   bool RunsOff() const;
   std::string RunOffMessage() const;
+  bool OutOfTime(std::chrono::steady_clock::time_point start) const;  // the walk's time_budget is spent
+  std::string OutOfTimeMessage(long steps, double target) const;
   // AdvanceTo's steps fell below the limit resolution: the walk ends here (at a limit point, or failed).
   WalkReport EndAtStall(double direction, double target);
   // At a stall in `direction` towards `target`: locates the limit point ahead and reaches the

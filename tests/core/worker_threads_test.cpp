@@ -1,8 +1,8 @@
-// RunOnThreads (solver/synthesis/src/worker_threads.cpp) against its definition in
+// RunOnThreads (core/src/worker_threads.cpp) against its definition in
 // worker_threads.hpp: `work` runs once on each of the threads it reports, the calling thread
 // among them; 0 asks for one per core (std::thread::hardware_concurrency, capped at
 // kMaxThreads); work pulled from a shared counter is done exactly once whatever the count.
-#include "worker_threads.hpp"
+#include "koppel/core/worker_threads.hpp"
 
 #include "koppel/core/limits.hpp"
 

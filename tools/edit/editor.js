@@ -95,16 +95,32 @@
     const dead = doc.mechanism.outputs.length ? call('koppel_dead_centres', ['number', 'number'], [Math.min(sw.from, sw.to), Math.max(sw.from, sw.to)]) : { ok: false };
     return { table: table, frames: frames, deadCentres: dead.ok ? dead : null, notes: loaded.notes };
   }
-  // Makes `next` current when it solves with a pose at the current input (or anywhere, `anywhere`);
-  // otherwise says why and keeps the last valid state. True when it was taken.
-  function adopt(next, what, anywhere) {
+  // Makes `next` current when it solves with a pose at the current input, assembled there from
+  // the hint (or anywhere, `anywhere`: the file as read); otherwise says why and keeps the last
+  // valid state. A change the page cannot follow on the branch shown (no pose at the current
+  // input next to the pose shown: koppel assembled elsewhere, and its notes say where and how) is
+  // not taken silently: the page keeps the pose shown, says so in koppel's words and offers
+  // koppel's assembly (the button "Take koppel's assembly"). True when it was taken.
+  let offer = null;
+  function adopt(next, what, anywhere, record) {
     const input = solved ? solved.table.rows[frame][0] : null;
     const result = solve(next);
     let why = result.error;
     let index = 0;
+    offer = null;
+    $('take-offer').hidden = true;
     if (!why && input !== null && !anywhere) {
       index = result.table.rows.findIndex((r) => r[0] === input);
-      if (index < 0) why = 'no pose at ' + doc.input.name + ' = ' + input + ' on this branch';
+      const elsewhere = (result.table.notes || []).join('; ');
+      if (index < 0 || elsewhere) {
+        if (state) call('koppel_load', ['string'], [JSON.stringify(state.mechanism)]);  // the module back to the pose shown
+        offer = { next: next, what: what };
+        $('take-offer').hidden = false;
+        say((what || 'the change') + ': cannot keep the branch shown at ' + doc.input.name + ' = ' + input + ' (' +
+            (elsewhere || 'no pose there on the branch koppel assembled') + '); the page keeps the pose shown: "Take koppel\'s assembly" shows the other', true);
+        if (state || pending) drawParameters();
+        return false;
+      }
     }
     if (why) {
       if (state) call('koppel_load', ['string'], [JSON.stringify(state.mechanism)]);  // the module back to the last valid model
@@ -112,16 +128,20 @@
       if (state || pending) drawParameters();  // the sliders back to the values that solved
       return false;
     }
-    if (state) undo.push(state);
+    if (state && record !== false) undo.push(state);
     $('undo').disabled = undo.length === 0;
     state = next;
     solved = result;
     frame = Math.max(0, index);
     const t = result.table;
-    say(t.complete ? (what ? what + ': solved' : '') : 'partial: ' + t.message, !t.complete);
+    // the library's notes say where the assembly was not where it was asked for (the CLI's words)
+    const notes = (t.notes || []).join('; ');
+    const said = t.complete ? (what ? what + ': solved' : '') : (what ? what + ': ' : '') + 'partial: ' + t.message;
+    say([said, notes].filter((x) => x).join('; '), !t.complete);
     redraw();
     return true;
   }
+  $('take-offer').addEventListener('click', () => { if (offer) adopt(offer.next, offer.what + ", koppel's assembly", true); });
 
   // ---- the scheme
   function pointsAt(i) {
@@ -162,7 +182,9 @@
       if (xy.length >= 3) el('polygon', { points: xy.map((p) => p.join(',')).join(' '), fill: colour, 'fill-opacity': 0.15, stroke: colour, 'stroke-width': 3 }, g);
       else if (xy.length === 2) el('line', { x1: xy[0][0], y1: xy[0][1], x2: xy[1][0], y2: xy[1][1], stroke: colour, 'stroke-width': 4, 'stroke-linecap': 'round' }, g);
     });
-    m.joints.forEach((j, ji) => {
+    // guides, blocks and pivots first, every joint's handle and name last: a handle under a
+    // slider block or on a guide line is still the pointer's to grab
+    m.joints.forEach((j) => {
       const a = px(pts[j.link_a][j.point_a]), b = px(pts[j.link_b][j.point_b]);
       const frameJoint = m.links[j.link_a].frame || m.links[j.link_b].frame;
       if (j.type === 'P') {
@@ -172,12 +194,16 @@
         el('line', { x1: a[0] - L * dir[0], y1: a[1] + L * dir[1], x2: a[0] + L * dir[0], y2: a[1] - L * dir[1], stroke: '#555', 'stroke-width': 1, class: 'guide' });
         const angle = -Math.atan2(dir[1], dir[0]) * 180 / Math.PI;
         el('rect', { x: -14, y: -8, width: 28, height: 16, fill: '#fff', stroke: '#1d2b3a', 'stroke-width': 2, transform: 'translate(' + b[0] + ',' + b[1] + ') rotate(' + angle + ')', class: 'block' });
-        return;
+      } else if (frameJoint) {
+        el('path', { d: 'M' + a[0] + ',' + a[1] + ' l-10,16 h20 z', fill: '#d5dbe1', stroke: '#1d2b3a', 'stroke-width': 1.5, class: 'pivot' });
       }
-      if (frameJoint) el('path', { d: 'M' + a[0] + ',' + a[1] + ' l-10,16 h20 z', fill: '#d5dbe1', stroke: '#1d2b3a', 'stroke-width': 1.5, class: 'pivot' });
+    });
+    m.joints.forEach((j, ji) => {
+      if (j.type !== 'R') return;
+      const a = px(pts[j.link_a][j.point_a]);
       const c = el('circle', { cx: a[0], cy: a[1], r: 6, fill: '#fff', stroke: '#1d2b3a', 'stroke-width': 2, class: 'handle joint', 'data-joint': j.name });
       c.addEventListener('pointerdown', (e) => startDrag(e, ji));
-      el('text', { x: a[0] + 9, y: a[1] - 9, 'font-size': 12, fill: '#1d2b3a' }).textContent = j.name;
+      el('text', { x: a[0] + 9, y: a[1] - 9, 'font-size': 12, fill: '#1d2b3a', 'pointer-events': 'none' }).textContent = j.name;
     });
   }
   function linkAngle(li, pts) {
@@ -197,52 +223,91 @@
     return [Math.cos(t) * ax - Math.sin(t) * ay, Math.sin(t) * ax + Math.cos(t) * ay];
   }
 
-  // ---- dragging an R joint: its point moves on both links (their lengths change), the frame's
-  // pivots move in the frame; then the mechanism is solved from the current pose (the hint), so
+  // ---- dragging an R joint (moveJoint below), solved from the current pose (the hint), so that
   // it stays on its branch
   let drag = null;
   function startDrag(e, ji) {
     e.preventDefault();
-    drag = { joint: ji };
+    drag = { joint: ji, before: state, scheduled: false, moved: false };
     svg.setPointerCapture(e.pointerId);
+  }
+  // the mechanism follows the pointer, solved once per animation frame (a sweep of the file's
+  // range is a few milliseconds); the whole drag is one step of undo
+  function dragTo() {
+    drag.scheduled = false;
+    if (drag.to && moveJoint(state.mechanism.joints[drag.joint].name, drag.to[0], drag.to[1], false)) drag.moved = true;
   }
   svg.addEventListener('pointermove', (e) => {
     if (!drag) return;
     const r = svg.getBoundingClientRect();
     drag.to = unpx(e.clientX - r.left, e.clientY - r.top);
-    // the handle follows the pointer; the mechanism is solved when it is let go
-    // a joint's name may hold quotes: escaped for the selector
-    const handle = svg.querySelector('circle[data-joint="' + CSS.escape(state.mechanism.joints[drag.joint].name) + '"]');
-    if (handle) { handle.setAttribute('cx', e.clientX - r.left); handle.setAttribute('cy', e.clientY - r.top); }
+    if (!drag.scheduled) {
+      drag.scheduled = true;
+      requestAnimationFrame(() => { if (drag) dragTo(); });
+    }
   });
   svg.addEventListener('pointerup', () => {
-    if (drag && drag.to) moveJoint(state.mechanism.joints[drag.joint].name, drag.to[0], drag.to[1]);
+    if (!drag) return;
+    if (drag.to) dragTo();
+    if (drag.moved) {
+      undo.push(drag.before);
+      $('undo').disabled = false;
+    }
     drag = null;
   });
-  function moveJoint(name, x, y) {
+  // The pose at the current frame as the assembly hint: the solver assembles next to it, so
+  // every loop stays on its branch through a change (a parameter, a dragged joint). Where it
+  // cannot assemble there, koppel searches a turn and says so (the notes, as the CLI words them).
+  function hintFromPose(m, pts) {
+    m.hint.input = (doc.input.angle ? Math.PI / 180 : 1) * solved.table.rows[frame][0];
+    m.hint.points = [];
+    m.links.forEach((l, li) => { if (!l.frame) l.points.forEach((p, pi) => m.hint.points.push({ link: li, point: pi, x: pts[li][pi][0], y: pts[li][pi][1] })); });
+  }
+  const kParameterName = /^\s*[A-Za-z_][A-Za-z0-9_]*\s*$/;
+  // A dragged revolute joint: a frame pivot moves in the frame only (the link on it keeps its
+  // lengths); any other joint's point moves on both its links. A coordinate the file writes as a
+  // plain parameter (B0: [d1, 0]) changes that parameter; one written as another formula becomes
+  // a number, and the page says which.
+  function moveJoint(name, x, y, record) {
     const m = clone(state.mechanism), pts = pointsAt(frame);
     const ji = m.joints.findIndex((j) => j.name === name);
     if (ji < 0 || m.joints[ji].type !== 'R') throw new Error("no R joint '" + name + "'");
     const j = m.joints[ji];
-    const moved = [[j.link_a, j.point_a], [j.link_b, j.point_b]];
+    const onFrame = m.links[j.link_a].frame ? [[j.link_a, j.point_a]] : m.links[j.link_b].frame ? [[j.link_b, j.point_b]] : null;
+    const moved = onFrame || [[j.link_a, j.point_a], [j.link_b, j.point_b]];
     let formulas = state.formulas;
+    const parameters = [], numbers = [];
     for (const [li, pi] of moved) {
       const t = linkAngle(li, pts), o = pts[li][0], l0 = m.links[li].points[0];
       // global -> the link's body frame at the current pose
       const gx = x - o[0], gy = y - o[1];
-      const lx = Math.cos(t) * gx + Math.sin(t) * gy + l0.x, ly = -Math.sin(t) * gx + Math.cos(t) * gy + l0.y;
-      m.links[li].points[pi].x = lx;
-      m.links[li].points[pi].y = ly;
-      const base = '/links/' + li + '/points/' + pi + '/';
-      formulas = formulas.filter((f) => f.target !== base + 'x' && f.target !== base + 'y');  // a number now, no longer a formula
+      const local = { x: Math.cos(t) * gx + Math.sin(t) * gy + l0.x, y: -Math.sin(t) * gx + Math.cos(t) * gy + l0.y };
+      for (const c of ['x', 'y']) {
+        m.links[li].points[pi][c] = local[c];
+        const target = '/links/' + li + '/points/' + pi + '/' + c;
+        const f = formulas.find((g) => g.target === target);
+        if (!f) continue;
+        const parameter = kParameterName.test(f.formula) && f.scale === 1 && state.parameters.find((p) => p.name === f.formula.trim());
+        if (parameter) {
+          parameters.push([parameter.name, local[c]]);
+        } else {
+          numbers.push(m.links[li].name + '.' + m.links[li].points[pi].name + ' ' + c + " was '" + f.formula + "'");
+          formulas = formulas.filter((g) => g !== f);  // a number now, no longer a formula
+        }
+      }
     }
-    // the current pose is the hint: the solver assembles next to it
-    m.hint.input = (doc.input.angle ? Math.PI / 180 : 1) * solved.table.rows[frame][0];
-    m.hint.points = [];
-    m.links.forEach((l, li) => { if (!l.frame) l.points.forEach((p, pi) => m.hint.points.push({ link: li, point: pi, x: pts[li][pi][0], y: pts[li][pi][1] })); });
-    for (const h of m.hint.points) if ((h.link === j.link_a && h.point === j.point_a) || (h.link === j.link_b && h.point === j.point_b)) { h.x = x; h.y = y; }
-    formulas = formulas.filter((f) => !f.target.startsWith('/hint/'));
-    return adopt({ mechanism: m, parameters: state.parameters, formulas: formulas }, 'moved ' + name);
+    let next = { mechanism: m, parameters: state.parameters, formulas: formulas.filter((f) => !f.target.startsWith('/hint/')) };
+    try {
+      for (const [p, v] of parameters) next = evaluated(next, p, v);
+    } catch (e) {
+      say('moving ' + name + ': ' + e.message, true);
+      return false;
+    }
+    hintFromPose(next.mechanism, pts);
+    for (const h of next.mechanism.hint.points) if ((h.link === j.link_a && h.point === j.point_a) || (h.link === j.link_b && h.point === j.point_b)) { h.x = x; h.y = y; }
+    const what = 'moved ' + name + (parameters.length ? ' (' + parameters.map(([p, v]) => p + ' = ' + +v.toPrecision(12)).join(', ') + ')' : '') +
+      (numbers.length ? '; now numbers: ' + numbers.join(', ') : '');
+    return adopt(next, what, false, record);
   }
 
   // ---- charts: every scalar output with its 1st and 2nd order transfer functions; the
@@ -440,10 +505,11 @@
       if (!base.parameters.some((p) => p.name === name)) return { ok: false, message: "'" + name + "' is not a parameter of this file" };
       let next;
       try { next = evaluated(base, name, +value); } catch (e) { say(name + ' = ' + value + ': ' + e.message, true); return { ok: false, message: e.message }; }
-      const ok = adopt(next, name + ' = ' + value, true);
+      if (state && solved) hintFromPose(next.mechanism, pointsAt(frame));
+      const ok = adopt(next, name + ' = ' + value, !state);
       return { ok: ok, message: message.textContent };
     },
-    moveJoint(name, x, y) { return { ok: moveJoint(name, x, y), message: message.textContent }; },
+    moveJoint(name, x, y) { return { ok: moveJoint(name, x, y, true), message: message.textContent }; },
     toYaml() {
       const y = call('koppel_yaml', [], []);
       if (!y.ok) throw new Error(y.message);

@@ -58,7 +58,8 @@ const char* koppel_load(const char* mechanism_json) {
 }
 
 // The table of `koppel analyze --format json`: columns, rows (a NaN cell null, singular 0/1),
-// and what the sweep met; `at_branch_point` as --at-branch-point ("": continue).
+// and what the sweep met (notes: where the assembly was not the hint's, in the CLI's words);
+// `at_branch_point` as --at-branch-point ("": continue).
 const char* koppel_sweep(double from, double to, double step, int order, const char* at_branch_point) {
   if (!current) return NoModel();
   try {
@@ -73,7 +74,7 @@ const char* koppel_sweep(double from, double to, double step, int order, const c
       rows.push_back(std::move(row));
     }
     return Answer({{"ok", true}, {"columns", t.columns}, {"units", t.units}, {"rows", rows}, {"complete", t.status == koppel::AnalysisStatus::kComplete},
-                   {"status", t.sweep_status}, {"message", t.message}, {"singular_points", Singular(t.singular_points)}, {"gaps", Gaps(t.gaps)}});
+                   {"status", t.sweep_status}, {"message", t.message}, {"notes", t.notes}, {"singular_points", Singular(t.singular_points)}, {"gaps", Gaps(t.gaps)}});
   } catch (const std::exception& e) {
     return Failure(e);
   }

@@ -2,6 +2,7 @@
 // (tests/data/function-*.yaml); error_max is the maximum of the error curve (refined between its
 // samples: at least their largest |error|), it vanishes at the precision points, and the
 // mechanism file sweeps through the range.
+#include "support/closed_forms.hpp"
 #include "support/run.hpp"
 #include "support/temp_file.hpp"
 #include "support/text.hpp"
@@ -21,9 +22,16 @@ TEST_CASE("synth function log10: the rows, the error curve and the mechanism", "
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto s = test::ParseSummary(r.out);
-  for (const char* key : {"crank", "coupler", "rocker", "frame", "error_max"}) CHECK(s.count(key) == 1);
-  CHECK(s.size() == 5);
+  for (const char* key : {"crank", "coupler", "rocker", "frame", "error_max", "mu_min"}) CHECK(s.count(key) == 1);
+  CHECK(s.size() == 6);
   CHECK(s.at("frame") == 1);
+  // mu_min against the closed form (support/closed_forms.hpp: mu from the diagonal A B0 by the
+  // law of cosines), its least value over the crank's 15..75 deg on a 1e-4 deg grid: the grid's
+  // own error is ~mu'' h^2 / 8, far below 1e-6 deg
+  double least = 180;
+  for (double phi = 15; phi <= 75; phi += 1e-4)
+    least = std::min(least, test::CrankRockerMu(s.at("crank"), s.at("coupler"), s.at("rocker"), s.at("frame"), phi * M_PI / 180) * 180 / M_PI);
+  CHECK(s.at("mu_min") == Approx(least).margin(1e-6));
   // error_max is at least the curve's largest |error| and above it by less than the curve's
   // curvature allows between samples; at x = 5.5 (a Chebyshev point) the error vanishes
   std::istringstream in(test::ReadText(curve));

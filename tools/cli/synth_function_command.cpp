@@ -43,8 +43,9 @@ void AddFunctionSubcommand(CLI::App& synth) {
       "follows y = f(x) while the crank angle follows x, both mapped linearly (SPEC.yaml: function, x, input, output, points\n"
       "or at, frame; see README). Freudenstein's equation: exact for 3 precision points (Chebyshev spacing unless `at:`),\n"
       "least squares for more, then polished by the Ceres fit on the true output through the mechanism. Prints crank,\n"
-      "coupler, rocker, frame (slider-crank: crank, coupler, offset) and error_max, the largest structural error over the\n"
-      "whole range (deg, or length) by the solver. Exit 1 when the design does not run through the whole input range.\n"
+      "coupler, rocker, frame (slider-crank: crank, coupler, offset), error_max, the largest structural error over the\n"
+      "whole range (deg, or length) by the solver, and mu_min, the least transmission angle over the input range (deg; a\n"
+      "design that passes a small one jams in practice). Exit 1 when the design does not run through the whole input range.\n"
       "Example: koppel synth function tests/data/function-log10.yaml --error-curve error.csv -o log10-generator.yaml");
   cmd->add_option("spec", args->spec, "SPEC.yaml")->required();
   OutputFile(cmd->add_option("-o,--yaml", args->yaml, "Write the mechanism as a YAML file"));

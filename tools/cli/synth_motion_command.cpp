@@ -86,19 +86,23 @@ void Run(const Args& args) {
   const int top = args.top.empty() ? 0 : ParseCountFlag("--top", args.top, 1, 1'000'000);
   if (!args.curves.empty()) WriteCurves(args, spec.poses);
   const MotionReport report = Checked([&] { return SynthesiseMotionReport(spec, args.poses); });
-  for (const std::string& note : report.notes) Complain(args.poses + ": " + note);
   if (report.status == DesignStatus::kInvalidRequest)  // the work, estimated before it starts
     BadFlags(fmt::format("{}: {} dyads make {:.3g} four-bars to re-analyse, more than the limit of {:.0f} ({}, about 2.5 ms each; see "
                          "README 'Limits'): fewer dyads",
                          n == 3 ? "--grid/--circle-point" : "--samples", report.dyads, report.four_bars, kMotionFourBars.value, kMotionFourBars.name));
-  if (!report.paired) throw Exit{kExitFailed};  // no dyad: the note said why
-  std::cerr << fmt::format("koppel synth motion: {} poses, {} dyads, {} four-bars re-analysed through every pose{}\n", n, report.dyads,
-                           report.designs.size(), spec.require_crank ? fmt::format(", {} without a crank left out", report.rejected) : "");
+  if (!report.paired) {  // no dyad: the notes say why
+    for (const std::string& note : report.notes) Complain(args.poses + ": " + note);
+    throw Exit{kExitFailed};
+  }
+  // the counts: what was made, what can be built, what has a defect, what failed
+  std::cerr << fmt::format("koppel synth motion: {} poses, {} dyads, {:.0f} candidate four-bars: {} without a defect, {} with a branch or "
+                           "order defect, {} failed their re-analysis{}\n",
+                           n, report.dyads, report.four_bars, report.defect_free, report.designs.size() - report.defect_free, report.failed,
+                           spec.require_crank ? fmt::format(", {} without a crank left out", report.rejected) : "");
   WriteDesigns(args, report, top > 0 ? std::min<size_t>(top, report.designs.size()) : report.designs.size());
-  for (const std::string& failure : report.failures) Complain("a four-bar failed its re-analysis: " + failure);
-  if (report.failed > 0) throw Exit{kExitFailed};
-  if (report.designs.empty()) {
-    Complain(report.message);
+  for (const std::string& note : report.notes) Complain(args.poses + ": " + note);
+  if (report.status != DesignStatus::kOk) {
+    Complain(args.poses + ": " + report.message);
     throw Exit{kExitFailed};
   }
 }
@@ -121,11 +125,13 @@ void AddMotionSubcommand(CLI::App& synth) {
       "    must lie on the circle-point curve) or --samples N lines through a pole (up to two dyads each).\n"
       "  5 poses: the Ball-Burmester points (at most four real ones, from the resultant of two circular cubics).\n"
       "Every pair of dyads (either one driven) is re-analysed by the solver: the coupler's point and angle must meet every pose\n"
-      "to 1e-9 of the four-bar's size. One CSV row per four-bar, by mu_min (largest first): pivots and circle points in the\n"
+      "to 1e-9 of the four-bar's size. One CSV row per four-bar, those without a defect first, each part by mu_min (largest\n"
+      "first): pivots and circle points in the\n"
       "first pose, the Grashof type, branch defect (poses on different assembly branches, or not reachable driving the\n"
       "crank), order defect (driven one way, the crank meets the poses out of order), mu_min [deg] over the travel from the\n"
       "first pose to the last. --require crank keeps the four-bars whose input turns fully; -o DIR writes each as a\n"
-      "mechanism file (four-bar-1.yaml, ...; the comment gives the drivable range). Exit 1 when no four-bar results.\n"
+      "mechanism file (four-bar-1.yaml, ...; the comment gives the drivable range). stderr counts the candidates, those with\n"
+      "a defect and those that failed their re-analysis (not listed). Exit 1 when no four-bar without a defect results.\n"
       "Example: koppel synth motion tests/data/motion-three-poses.yaml --circle-point 1,0.2 --circle-point 3.1,2.4 -o designs");
   cmd->add_option("poses", args->poses, "POSES.yaml")->required();
   cmd->add_option("--circle-point", args->circle_points, "A circle point X,Y (first pose, global); repeat for more");

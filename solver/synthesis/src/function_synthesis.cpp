@@ -1,7 +1,10 @@
 #include "koppel/synthesis/function_synthesis.hpp"
 
+#include "koppel/analysis/extremes.hpp"
+
 #include "bar_linkages.hpp"
 
+#include "koppel/analysis/extremes.hpp"
 #include "koppel/analysis/sampled_maximum.hpp"
 #include "koppel/core/angles.hpp"
 #include "koppel/solver/sweep.hpp"
@@ -245,6 +248,26 @@ bool RefineErrorMaximum(const FunctionRequest& r, const FunctionMap& map, const 
   return true;
 }
 
+// The least transmission angle over the input range (the design's transmission output), refined
+// between the samples (extremes.hpp): a generator that runs through a mu of 15 deg jams in
+// practice however small its error. Left unknown (mu_known false) when the search fails.
+void MeasureTransmission(const FunctionRequest& r, FunctionDesign& design) {
+  const Mechanism& m = design.mechanism;
+  for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
+    if (m.outputs[o].kind != OutputKind::kTransmissionAngle) continue;
+    SweepOptions range;
+    range.from = r.input_from;
+    range.to = r.input_to;
+    range.step = (r.input_to - r.input_from) / std::max(2, r.error_samples - 1);
+    range.order = 2;
+    const OutputExtremes mu = FindOutputExtremes(m, o, 0, range);
+    if (mu.status != AnalysisStatus::kComplete) return;
+    design.mu_min = mu.minimum.value;
+    design.mu_known = true;
+    return;
+  }
+}
+
 // The structural error over the whole input range and at the precision points, by the solver;
 // the design's status says whether the mechanism runs through the range.
 FunctionDesign MeasureError(const FunctionRequest& r, const FunctionMap& map, const std::vector<double>& phi,
@@ -290,6 +313,7 @@ FunctionDesign MeasureError(const FunctionRequest& r, const FunctionMap& map, co
                                four_bar ? RadToDeg(design.error_at_precision) : design.error_at_precision, four_bar ? " deg" : ""));
   if (!s.complete())
     return Refused(design, FunctionStatus::kNotDrivable, "the mechanism does not run through the whole input range on its branch: " + s.message);
+  MeasureTransmission(r, design);
   design.status = FunctionStatus::kOk;
   return design;
 }

@@ -249,7 +249,13 @@ MotionResult FourBarsFromDyads(const std::vector<Pose>& poses, const std::vector
       result.four_bars.push_back(std::move(f));
     }
   }
-  std::stable_sort(result.four_bars.begin(), result.four_bars.end(), [](const MotionFourBar& x, const MotionFourBar& y) { return x.mu_min > y.mu_min; });
+  // a four-bar with a branch or order defect does not carry the plane through the poses when
+  // driven: every defect-free one first, then by mu_min
+  std::stable_sort(result.four_bars.begin(), result.four_bars.end(), [](const MotionFourBar& x, const MotionFourBar& y) {
+    if (x.DefectFree() != y.DefectFree()) return x.DefectFree();
+    return x.mu_min > y.mu_min;
+  });
+  result.defect_free = static_cast<int>(std::count_if(result.four_bars.begin(), result.four_bars.end(), [](const MotionFourBar& f) { return f.DefectFree(); }));
   return result;
 }
 

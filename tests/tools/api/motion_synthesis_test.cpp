@@ -101,7 +101,10 @@ TEST_CASE("SynthesiseMotionReport: a grid search, its files, and the work limit 
     // the file reads back as the same four-bar: the crank pivot where the figures put it
     const Model back = Model::Parse(d.yaml, "four-bar.yaml");
     CHECK(back.sweep_to() > back.sweep_from());
-    if (i > 0) CHECK(report.designs[i - 1].Get("mu_min") >= d.Get("mu_min"));  // by mu_min, largest first
+    // the first defect_free without a branch or order defect, each part by mu_min, largest first
+    const bool free = static_cast<int>(i) < report.defect_free;
+    CHECK(free == (d.Get("branch_defect") == 0 && d.Get("order_defect") == 0));
+    if (i > 0 && free == (static_cast<int>(i) - 1 < report.defect_free)) CHECK(report.designs[i - 1].Get("mu_min") >= d.Get("mu_min"));
   }
   // --grid 20: 400 circle points, about 160 000 four-bars: refused as a status, nothing paired
   spec.grid = 20;

@@ -99,14 +99,23 @@ void Paired(const std::vector<Pose>& poses, const std::vector<Dyad>& dyads, cons
   out.failed = result.failed;
   out.failures = result.failures;
   for (size_t i = 0; i < result.four_bars.size(); ++i) out.designs.push_back(MotionDesign(result.four_bars[i], static_cast<int>(i + 1), source));
-  if (result.failed > 0) {
+  out.defect_free = result.defect_free;
+  const std::string failures = result.failed == 0 ? "" :
+      fmt::format("{} four-bar(s) failed their re-analysis and are not listed{}", result.failed,
+                  result.failures.empty() ? "" : " (the first: " + result.failures.front() + ")");
+  if (result.defect_free > 0) {
+    out.status = DesignStatus::kOk;
+    if (!failures.empty()) out.notes.push_back(failures);
+  } else if (!out.designs.empty()) {
+    out.status = DesignStatus::kNoDesign;
+    out.message = fmt::format("none of the {} four-bars carries the plane through the poses without a branch or order defect "
+                              "(listed with their defects){}", out.designs.size(), failures.empty() ? "" : "; " + failures);
+  } else if (result.failed > 0) {
     out.status = DesignStatus::kReanalysisFailed;
-    out.message = fmt::format("{} four-bar(s) failed their re-analysis{}", result.failed, result.failures.empty() ? "" : ": " + result.failures.front());
-  } else if (out.designs.empty()) {
+    out.message = failures;
+  } else {
     out.status = DesignStatus::kNoDesign;
     out.message = dyads.empty() ? "no dyad meets the poses" : "no four-bar meets the request";
-  } else {
-    out.status = DesignStatus::kOk;
   }
 }
 

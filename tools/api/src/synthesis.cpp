@@ -270,6 +270,7 @@ Design ShownFunction(const FunctionRequest& r, const FunctionDesign& d, const st
   if (d.status != FunctionStatus::kMissesPoints) {
     f.Add("error_max", shown(d.error_max), unit);
     f.Add("error_at_precision", shown(d.error_at_precision), unit);
+    if (d.mu_known) f.Add("mu_min", RadToDeg(d.mu_min), "deg");
     design.curve.columns = {"x", "crank", "desired", "generated", "error"};
     for (const StructuralErrorSample& e : d.error_curve)
       design.curve.rows.push_back({e.x, RadToDeg(e.input), shown(e.desired), shown(e.generated), shown(e.error)});

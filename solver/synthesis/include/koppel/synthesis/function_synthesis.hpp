@@ -76,6 +76,9 @@ struct FunctionDesign {
   double error_max = 0;
   double error_max_x = 0;
   double error_at_precision = 0;  // max |error| at the precision points (solver)
+  // the least transmission angle over the input range [rad] (its output; refined), when known
+  double mu_min = 0;
+  bool mu_known = false;
 };
 
 FunctionDesign SynthesiseFunction(const FunctionRequest& request);

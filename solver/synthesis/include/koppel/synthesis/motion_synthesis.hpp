@@ -35,6 +35,7 @@ struct MotionFourBar {
   double mu_min = 0;                   // [rad], over the travel from the first pose to the last
   std::vector<double> pose_inputs;     // the crank angle at each pose [rad], in the sense of travel
   std::string message;                 // why it does not pass, or what the re-analysis noted
+  bool DefectFree() const { return !branch_defect && !order_defect; }
 };
 
 // Re-analyses the four-bar of two dyads (the first driven). Degenerate links (shorter than 1e-9 of
@@ -49,7 +50,8 @@ struct MotionOptions {
 };
 
 struct MotionResult {
-  std::vector<MotionFourBar> four_bars;  // passing ones, by mu_min (largest first)
+  std::vector<MotionFourBar> four_bars;  // passing ones: the defect-free first, each part by mu_min (largest first)
+  int defect_free = 0;                   // of four_bars: without a branch or order defect
   int rejected = 0;                      // --require crank
   int failed = 0;                        // did not pass the re-analysis (a defect of the synthesis)
   std::vector<std::string> failures;     // their messages

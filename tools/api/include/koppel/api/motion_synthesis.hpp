@@ -30,8 +30,10 @@ struct BurmesterCurveTable {
 };
 BurmesterCurveTable MotionCurves(const std::vector<MotionPose>& poses);
 
-// The whole search. status: kOk (designs), kNoDesign (message: no dyad or no four-bar),
-// kReanalysisFailed (failed > 0; the passing designs are kept, the failures listed) or
+// The whole search. status: kOk (a design without a branch or order defect is listed: the
+// defect-free first, then by mu_min; four-bars that failed their re-analysis are counted and
+// named in the notes), kNoDesign (message: no dyad, no four-bar, or only four-bars with a defect,
+// which are still listed), kReanalysisFailed (nothing listed and failed > 0) or
 // kInvalidRequest when the dyads make more four-bars than kMaxMotionFourBars (four_bars: how many;
 // nothing was paired). paired: the dyads were paired into four-bars (false when the dyad choice
 // found none for 2 to 4 poses: message says why). Each design as SynthesiseMotion's, its model and
@@ -43,9 +45,10 @@ struct MotionReport {
   std::vector<std::string> notes;  // what the dyad choice noted (e.g. the Ball–Burmester search)
   bool paired = false;
   int dyads = 0, rejected = 0, failed = 0;  // rejected: no crank, with require_crank
+  int defect_free = 0;                       // designs without a branch or order defect (listed first)
   double four_bars = 0;                      // the four-bars the dyads make, each re-analysed
   std::vector<std::string> failures;
-  std::vector<Design> designs;  // by mu_min, largest first
+  std::vector<Design> designs;  // the defect-free first, each part by mu_min, largest first
 };
 MotionReport SynthesiseMotionReport(const MotionSpec& spec, const std::string& source = "");
 

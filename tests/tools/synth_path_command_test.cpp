@@ -92,3 +92,63 @@ TEST_CASE("synth path refuses bad points files", "[cli][path]") {
 }
 
 }  // namespace koppel::synth_path_command_test
+
+namespace koppel::synth_path_command_test {
+
+// The ellipse of the path-synthesis literature (tests/data/path-ellipse.csv): without a design
+// space the nearest atlas curves fit it exactly with a frame of 862 for points that span 20. With
+// the papers' space (every length within [0, 80], both pivots within +-80, a crank input) no
+// returned linkage lies outside it: each row's lengths, pivots and Grashof type are checked here
+// against the space, from the printed numbers.
+TEST_CASE("synth path --design: no linkage outside the design space", "[cli][path]") {
+  test::TempDir dir;
+  const std::string space = dir.Write("space.yaml", "lengths: [0, 80]\npivots: {x: [-80, 80], y: [-80, 80]}\ninput: crank\n");
+  const test::RunResult r =
+      test::RunKoppel("synth path " + test::TestDataPath("path-ellipse.csv") + " --atlas " + CiAtlas() + " --top 3 --design " + space);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  std::istringstream in(r.out);
+  std::string line;
+  std::getline(in, line);
+  REQUIRE(line == "rank,error,A0_x,A0_y,B0_x,B0_y,crank,coupler,rocker,frame,K_along,K_left,grashof,cognate_of");
+  int rows = 0;
+  while (std::getline(in, line)) {
+    ++rows;
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    REQUIRE(cells.size() >= 13);
+    INFO(line);
+    for (int c = 2; c <= 5; ++c) CHECK(std::abs(std::stod(cells[c])) <= 80 + 1e-9);
+    for (int c = 6; c <= 9; ++c) CHECK(std::stod(cells[c]) <= 80 + 1e-9);
+    CHECK((cells[12] == "crank-rocker" || cells[12] == "double-crank"));
+    CHECK(std::stod(cells[1]) < 0.5);  // RMS in the points' unit: the points span 20
+  }
+  CHECK(rows >= 1);
+  // a space no linkage of the atlas meets: exit 1, naming the constraint the nearest one broke
+  const std::string tiny = dir.Write("tiny.yaml", "lengths: [0, 0.001]\n");
+  const test::RunResult none = test::RunKoppel("synth path " + test::TestDataPath("path-ellipse.csv") + " --atlas " + CiAtlas() + " --design " + tiny);
+  CHECK(none.exit_code == 1);
+  CHECK_THAT(none.err, Catch::Contains("inside the design space") && Catch::Contains("lengths: the"));
+}
+
+TEST_CASE("synth path --design refuses a bad design file with its line", "[cli][path]") {
+  test::TempDir dir;
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"lenghts: [0, 80]\n", "lenghts"},
+      {"lengths: [80, 0]\n", "an empty interval"},
+      {"ratio: 0.5\n", "at least 1"},
+      {"lengths: [0, 1e300*1e300]\n", "finite"},
+      {"pivots: {x: [0, 1], z: [0, 1]}\n", "'z'"},
+      {"input: rocker\n", "expected crank or any"},
+  };
+  for (const auto& [text, phrase] : cases) {
+    const std::string file = dir.Write("design.yaml", text);
+    const test::RunResult r = test::RunKoppel("synth path " + test::TestDataPath("path-ellipse.csv") + " --atlas " + CiAtlas() + " --design " + file);
+    INFO(text << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains("design.yaml:1:") && Catch::Contains(phrase));
+  }
+}
+
+}  // namespace koppel::synth_path_command_test

@@ -3,6 +3,8 @@
 #include "common.hpp"
 
 #include "koppel/api/path_synthesis.hpp"
+#include "koppel/catalog/design_space_file.hpp"
+#include "model_loading.hpp"
 
 #include <fmt/core.h>
 
@@ -17,7 +19,7 @@ namespace synth_path_command {  // this file's own names, apart from the other c
 namespace {
 
 struct Args {
-  std::string points, atlas, top = "10", candidates, dir, out, threads, format = "csv";
+  std::string points, atlas, top = "10", candidates, dir, out, threads, format = "csv", design;
   bool open = false;
 };
 
@@ -50,6 +52,7 @@ void Run(const Args& args) {
   request.top = ParseCountFlag("--top", args.top, 1, 1000);
   if (!args.candidates.empty()) request.candidates = ParseCountFlag("--candidates", args.candidates, 1, 10000);
   if (!args.threads.empty()) request.threads = ParseCountFlag("--threads", args.threads, 0, kMaxThreads);
+  if (!args.design.empty()) request.space = Checked([&] { return ReadDesignSpace(args.design); });  // file:line, exit 2
   if (const std::string why = PathSpecProblem(request); !why.empty()) {
     Complain(args.points + ": " + why);
     throw Exit{kExitBadInput};
@@ -94,6 +97,9 @@ void AddPathSubcommand(CLI::App& synth) {
       "Each row is a distinct design: one found again from another atlas curve (the same joints where K passes the\n"
       "first point, to 1e-4 of the points' size, either pivot as the crank's) is dropped and the next candidate polished.\n"
       "--open matches an open stretch against the arcs of rocker-driven four-bars. -o DIR writes each as a mechanism file.\n"
+      "--design FILE.yaml states the design space (every key optional): lengths: [min, max] (every link, the frame too),\n"
+      "ratio: max (longest / shortest link), pivots: {x: [a, b], y: [c, d]} (both frame pivots), input: crank (the input\n"
+      "turns fully). No linkage outside it is returned; when none is left, exit 1 names the constraint the best one broke.\n"
       "Examples: koppel atlas build --count 100000 -o atlas.bin\n"
       "          koppel synth path tests/data/path-points.csv --atlas atlas.bin --top 5 -o linkages");
   cmd->add_option("points", args->points, "POINTS.csv (header x,y)")->required();
@@ -105,6 +111,7 @@ void AddPathSubcommand(CLI::App& synth) {
   OutputFile(cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout"));
   cmd->add_option("--format", args->format, "The table as csv (default) or json ({\"columns\", \"rows\"}; grashof a string, cognate_of null when none)");
   cmd->add_option("--threads", args->threads, "Threads (default: one per core; at most 256, kMaxThreads)");
+  cmd->add_option("--design", args->design, "The design space: a YAML file (lengths, ratio, pivots, input)");
   cmd->callback([args] { Run(*args); });
 }
 

@@ -57,7 +57,8 @@ LeastSquaresOutcome SolveFit(const BoundedLeastSquares& p, double* x) {
 
 // path_prepolish.hpp: the coupler point in closed form fitted to the points with automatic
 // derivatives, each point's crank angle an unknown of its own.
-double SolvePrePolish(const std::vector<Eigen::Vector2d>& points, int branch, std::vector<double>* v, std::vector<double>* inputs) {
+double SolvePrePolish(const std::vector<Eigen::Vector2d>& points, int branch, std::vector<double>* v, std::vector<double>* inputs,
+                      const std::vector<std::pair<double, double>>* bounds) {
   ceres::Problem problem;
   for (size_t i = 0; i < points.size(); ++i) {
     auto* cost = new ceres::AutoDiffCostFunction<PointResidual, 2, 9, 1>(new PointResidual{points[i], branch});
@@ -68,6 +69,11 @@ double SolvePrePolish(const std::vector<Eigen::Vector2d>& points, int branch, st
       return std::numeric_limits<double>::infinity();
     }
     problem.AddResidualBlock(cost, nullptr, v->data(), &(*inputs)[i]);
+  }
+  // a design space's bounds on the pivots and lengths (the start lies inside them)
+  for (size_t j = 0; bounds && j < bounds->size() && j < v->size(); ++j) {
+    if (Finite((*bounds)[j].first)) problem.SetParameterLowerBound(v->data(), static_cast<int>(j), (*bounds)[j].first);
+    if (Finite((*bounds)[j].second)) problem.SetParameterUpperBound(v->data(), static_cast<int>(j), (*bounds)[j].second);
   }
   ceres::Solver::Options options;
   options.max_num_iterations = 500;

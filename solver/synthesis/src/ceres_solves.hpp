@@ -37,7 +37,7 @@ struct CeresSolvesTable : ModuleTable {
   LeastSquaresOutcome (*fit)(const BoundedLeastSquares& problem, double* x);
   // path_prepolish.hpp's PrePolish
   double (*prepolish)(const std::vector<Eigen::Vector2d>& points, int branch, std::vector<double>* unknowns,
-                      std::vector<double>* inputs);
+                      std::vector<double>* inputs, const std::vector<std::pair<double, double>>* bounds);
   // glog, which Ceres logs through, lets only fatal messages through (quiet_solver_log.hpp)
   void (*quiet_solver_log)();
 };

@@ -12,8 +12,9 @@ bool CouplerPointAt(const std::vector<double>& v, int branch, double phi, Eigen:
   return true;
 }
 
-double PrePolish(const std::vector<Eigen::Vector2d>& points, int branch, std::vector<double>* v, std::vector<double>* inputs) {
-  return CeresSolves().prepolish(points, branch, v, inputs);
+double PrePolish(const std::vector<Eigen::Vector2d>& points, int branch, std::vector<double>* v, std::vector<double>* inputs,
+                 const std::vector<std::pair<double, double>>* bounds) {
+  return CeresSolves().prepolish(points, branch, v, inputs, bounds);
 }
 
 }  // namespace koppel

@@ -7,14 +7,17 @@
 
 #include <Eigen/Core>
 
+#include <utility>
 #include <vector>
 
 namespace koppel {
 
 // unknowns: A0x, A0y, B0x, B0y, crank, coupler, rocker, K along A -> B, K left of it; inputs:
 // one crank angle per point (updated). Returns the RMS distance at the end (infinity when the
-// start does not close the loop at every point).
-double PrePolish(const std::vector<Eigen::Vector2d>& points, int branch, std::vector<double>* unknowns, std::vector<double>* inputs);
+// start does not close the loop at every point). `bounds` (when given): [lower, upper] per unknown,
+// infinite where free; the start must lie inside them.
+double PrePolish(const std::vector<Eigen::Vector2d>& points, int branch, std::vector<double>* unknowns, std::vector<double>* inputs,
+                 const std::vector<std::pair<double, double>>* bounds = nullptr);
 
 // The coupler point of `unknowns` at crank angle phi on `branch`; false where the loop does not close.
 bool CouplerPointAt(const std::vector<double>& unknowns, int branch, double phi, Eigen::Vector2d* point);

@@ -75,6 +75,12 @@ constexpr int kRetimings = 4;
 // A polished design within this of the points (times the points' scale) fits them exactly: the
 // kernel's Newton tolerance is 1e-13 L.
 constexpr double kExactFit = 1e-12;
+// With a design space, the candidates inside it are looked for among this many times the
+// candidates wanted, nearest first, at most kMaxSpacePool (laying 20 000 curves is about 3 s on
+// two cores): the ellipse of the literature's test problems has its first linkage within
+// lengths [0, 80] at about the 2 000th nearest of 200 000 curves.
+constexpr int kSpacePoolFactor = 20;
+constexpr int kMaxSpacePool = 20'000;
 
 // One way of reading the points: mirrored or not, with its descriptor.
 struct Reading {
@@ -127,6 +133,18 @@ struct Placed {
   double error = std::numeric_limits<double>::infinity();
 };
 
+// The design space as bounds on the fit's unknowns (A0, B0, the three moving links); the frame's
+// length and the ratio are checked on the result. Empty without a space.
+std::vector<std::pair<double, double>> UnknownBounds(const DesignSpace& space) {
+  if (space.Empty()) return {};
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<std::pair<double, double>> b(9, {-inf, inf});
+  for (int j : {0, 2}) if (space.pivots_x) b[j] = *space.pivots_x;
+  for (int j : {1, 3}) if (space.pivots_y) b[j] = *space.pivots_y;
+  for (int j : {4, 5, 6}) if (space.lengths) b[j] = *space.lengths;
+  return b;
+}
+
 // The timing is where free-timing fits get stuck: gives each point the crank angle of its nearest
 // point on the polished curve and polishes again, while that helps.
 void RetimePlacement(const PathRequest& request, Placed* out) {
@@ -144,7 +162,8 @@ void RetimePlacement(const PathRequest& request, Placed* out) {
         }
       }
     }
-    const double error = PrePolish(request.points, out->placement.branch, &unknowns, &inputs);
+    const std::vector<std::pair<double, double>> bounds = UnknownBounds(request.space);
+    const double error = PrePolish(request.points, out->placement.branch, &unknowns, &inputs, bounds.empty() ? nullptr : &bounds);
     if (!(error < 0.99 * out->error)) break;
     out->error = error;
     out->unknowns = unknowns;
@@ -152,18 +171,45 @@ void RetimePlacement(const PathRequest& request, Placed* out) {
   }
 }
 
-std::optional<Placed> Place(const AtlasIndex& atlas, const Candidate& c, const PathRequest& request) {
-  const AtlasEntry& entry = atlas.entries()[c.entry];
+// An atlas curve and the similarity that lays it onto the points (then the mirror, if read so).
+struct Laid {
   AtlasCurve curve;
   CurveDescriptor own;
-  if (!TraceAtlasCurve(entry, kCandidateSamples, &curve) || !DescribeCurve(curve.coupler_point, &own)) return std::nullopt;
-  // the similarity that lays the atlas curve onto the points (then the mirror, if read so)
-  const CurveDescriptor& q = c.reading.descriptor;
-  const Complex rho = std::polar(q.scale / own.scale, own.turn - q.turn);
-  auto place = [&](const Eigen::Vector2d& p) {
+  Complex rho;
+  const Candidate* c = nullptr;
+  Eigen::Vector2d operator()(const Eigen::Vector2d& p) const {
+    const CurveDescriptor& q = c->reading.descriptor;
     const Complex z = q.centre + rho * (Complex(p.x(), p.y()) - own.centre);
-    return c.reading.mirror ? Eigen::Vector2d(z.real(), -z.imag()) : Eigen::Vector2d(z.real(), z.imag());
-  };
+    return c->reading.mirror ? Eigen::Vector2d(z.real(), -z.imag()) : Eigen::Vector2d(z.real(), z.imag());
+  }
+  double scale() const { return std::abs(rho); }
+};
+
+std::optional<Laid> Lay(const AtlasIndex& atlas, const Candidate& c) {
+  Laid laid;
+  laid.c = &c;
+  if (!TraceAtlasCurve(atlas.entries()[c.entry], kCandidateSamples, &laid.curve) || !DescribeCurve(laid.curve.coupler_point, &laid.own))
+    return std::nullopt;
+  const CurveDescriptor& q = c.reading.descriptor;
+  laid.rho = std::polar(q.scale / laid.own.scale, laid.own.turn - q.turn);
+  return laid;
+}
+
+// The design space's verdict on a candidate as the similarity lays it, before any polish (which
+// moves it little): empty inside, else the constraint it breaks; "no curve" when it cannot be laid.
+std::string SpaceViolation(const AtlasIndex& atlas, const Candidate& c, const DesignSpace& space) {
+  const std::optional<Laid> laid = Lay(atlas, c);
+  if (!laid) return "no curve";
+  const AtlasEntry& e = atlas.entries()[c.entry];
+  const double k = laid->scale();
+  return space.Violation({(*laid)({0, 0}), (*laid)({1, 0}), k * e.crank, k * e.coupler, k * e.rocker});
+}
+
+std::optional<Placed> Place(const AtlasIndex& atlas, const Candidate& c, const PathRequest& request) {
+  const std::optional<Laid> laid = Lay(atlas, c);
+  if (!laid) return std::nullopt;
+  const AtlasCurve& curve = laid->curve;
+  const Laid& place = *laid;
   const Eigen::Vector2d a0 = place({0, 0}), b0 = place({1, 0});
   std::vector<Eigen::Vector2d> k(kCandidateSamples);
   for (int i = 0; i < kCandidateSamples; ++i) k[i] = place(curve.coupler_point[i]);
@@ -185,7 +231,12 @@ std::optional<Placed> Place(const AtlasIndex& atlas, const Candidate& c, const P
     const double phi = Direction(place(curve.a[nearest(p)]) - a0);
     out.inputs.push_back(out.placement.phi + AngleDifference(phi, out.placement.phi));
   }
-  out.error = PrePolish(request.points, out.placement.branch, &out.unknowns, &out.inputs);
+  // a candidate laid outside the design space is not pre-polished: its start breaks the bounds
+  const std::vector<std::pair<double, double>> bounds = UnknownBounds(request.space);
+  if (!request.space.Violation({{out.unknowns[0], out.unknowns[1]}, {out.unknowns[2], out.unknowns[3]}, out.unknowns[4], out.unknowns[5],
+                                out.unknowns[6]}).empty())
+    return std::nullopt;
+  out.error = PrePolish(request.points, out.placement.branch, &out.unknowns, &out.inputs, bounds.empty() ? nullptr : &bounds);
   if (!std::isfinite(out.error)) return std::nullopt;
   RetimePlacement(request, &out);
   // the crank angles stay within a turn of the assembly's (the fit walks there by continuation)
@@ -198,9 +249,14 @@ std::optional<PathLinkage> Polish(const Placed& placed, const Candidate& c, cons
   const Placement placement = placed.placement;
   std::vector<FitParameter> parameters;
   const char* names[] = {"A0_x", "A0_y", "B0_x", "B0_y", "crank", "coupler", "rocker", "K_along", "K_left"};
+  const std::vector<std::pair<double, double>> bounds = UnknownBounds(request.space);
   for (int j = 0; j < 9; ++j) {
     FitParameter p{names[j], placed.unknowns[j]};
     if (j >= 4 && j <= 6) p.lower = std::min(1e-6 * scale, p.start);  // link lengths stay positive
+    if (static_cast<size_t>(j) < bounds.size()) {  // the design space's, where one is given (the start lies inside)
+      p.lower = std::max(p.lower, bounds[j].first);
+      p.upper = std::min(p.upper, bounds[j].second);
+    }
     parameters.push_back(p);
   }
   std::vector<FitTarget> targets;
@@ -321,6 +377,7 @@ bool PathRequest::IsValid(std::string* why) const {
   else if (points.size() > 10'000) problem = "at most 10000 points";
   else if (top < 1 || top > 1000) problem = "top must be between 1 and 1000";
   else if (candidates < 0 || candidates > 10'000) problem = "candidates must be between 0 and 10000";
+  else if (std::string space_problem; !space.IsValid(&space_problem)) problem = "design space: " + space_problem;
   // the work, estimated before it starts: each of the top linkages is fitted over every point
   else if (static_cast<long>(top) * static_cast<long>(points.size()) > kMaxPathPointFits)
     problem = "top " + std::to_string(top) + " linkages fitted over " + std::to_string(points.size()) + " points ask for " +
@@ -391,18 +448,49 @@ PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
     return result;
   }
   const int wanted = request.candidates > 0 ? request.candidates : std::max(100, 10 * request.top);
-  const std::vector<Candidate> candidates = NearestAtlasCandidates(atlas, request, readings, wanted);
+  std::vector<Candidate> candidates;
+  std::string broke;  // the constraint the nearest candidate outside the design space broke
+  if (request.space.Empty()) {
+    candidates = NearestAtlasCandidates(atlas, request, readings, wanted);
+  } else {
+    // the nearest curves whose linkage, laid onto the points, lies inside the space: looked for
+    // among many more (laying a curve is a trace, some 50 us; pre-polishing one is 14 ms)
+    const std::vector<Candidate> pool = NearestAtlasCandidates(atlas, request, readings, std::max(kMaxSpacePool, kSpacePoolFactor * wanted));
+    std::vector<std::string> verdicts(pool.size());
+    OnEveryCore(pool.size(), request.threads, [&](size_t i) { verdicts[i] = SpaceViolation(atlas, pool[i], request.space); });
+    for (size_t i = 0; i < pool.size() && candidates.size() < static_cast<size_t>(wanted); ++i) {
+      if (verdicts[i].empty()) candidates.push_back(pool[i]);
+      else if (broke.empty() && verdicts[i] != "no curve") broke = verdicts[i];
+    }
+    if (candidates.empty()) {
+      result.status = PathStatus::kNoCandidate;
+      result.message = fmt::format("none of the {} nearest atlas curves gives a linkage inside the design space; the nearest broke {}",
+                                   pool.size(), broke.empty() ? "nothing (no curve could be laid)" : broke);
+      return result;
+    }
+  }
   if (candidates.empty()) {
     result.status = PathStatus::kNoCandidate;
     result.message = request.open ? "the atlas holds no open curves (rocker arcs)" : "the atlas holds no closed curves";
     return result;
   }
   // every candidate pre-polished in closed form; the best `top` polished through the mechanism
+  double best_broken = 0;
   std::vector<std::optional<Placed>> placed(candidates.size());
   OnEveryCore(candidates.size(), request.threads, [&](size_t i) { placed[i] = Place(atlas, candidates[i], request); });
+  // a candidate outside the design space is not polished (the polish moves it little); the
+  // first constraint the best of them broke is kept to say why, should nothing be left
   std::vector<size_t> order;
-  for (size_t i = 0; i < placed.size(); ++i)
-    if (placed[i]) order.push_back(i);
+  for (size_t i = 0; i < placed.size(); ++i) {
+    if (!placed[i]) continue;
+    const std::vector<double>& v = placed[i]->unknowns;
+    const std::string violation = request.space.Violation({{v[0], v[1]}, {v[2], v[3]}, v[4], v[5], v[6]});
+    if (violation.empty()) order.push_back(i);
+    else if (broke.empty() || placed[i]->error < best_broken) {
+      broke = violation;
+      best_broken = placed[i]->error;
+    }
+  }
   // exact fits in closed form (errors at roundoff) keep the atlas's order, nearest first: their
   // errors' order is roundoff, which any change of the kernel's arithmetic reshuffles
   const auto rank_placed = [&](size_t i) { return placed[i]->error < kExactFit * scale ? 0.0 : placed[i]->error; };
@@ -415,6 +503,13 @@ PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
     const size_t count = std::min(order.size() - next, next == 0 ? top : 2 * missing);
     PolishBatch(atlas, request, scale, candidates, placed, order, next, count, &polished);
     next += count;
+    // the polish may carry a linkage out of the space: dropped, never returned
+    polished.erase(std::remove_if(polished.begin(), polished.end(), [&](const PathLinkage& l) {
+                     const std::string violation = request.space.Violation({l.geometry.a0, l.geometry.b0, l.crank, l.coupler, l.rocker});
+                     if (!violation.empty() && broke.empty()) broke = violation + " (after the polish)";
+                     return !violation.empty();
+                   }),
+                   polished.end());
     // exact fits (errors at roundoff) keep the order of their atlas candidates: their errors'
     // order is roundoff, which any change of the kernel's arithmetic reshuffles
     const auto rank_error = [&](const PathLinkage& l) { return l.error < kExactFit * scale ? 0.0 : l.error; };
@@ -426,7 +521,9 @@ PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
   if (result.linkages.size() > top) result.linkages.resize(top);
   if (result.linkages.empty()) {
     result.status = PathStatus::kNoCandidate;
-    result.message = fmt::format("none of the {} nearest atlas curves could be polished onto the points", candidates.size());
+    result.message = !broke.empty() ? fmt::format("none of the {} nearest atlas curves gives a linkage inside the design space; the "
+                                                  "best broke {}", candidates.size(), broke)
+                                    : fmt::format("none of the {} nearest atlas curves could be polished onto the points", candidates.size());
     return result;
   }
   result.status = PathStatus::kOk;

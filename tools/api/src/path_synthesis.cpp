@@ -17,6 +17,7 @@ PathRequest PathRequestOf(const PathSpec& spec) {
   request.top = spec.top;
   request.candidates = spec.candidates;
   request.threads = spec.threads;
+  request.space = spec.space;
   return request;
 }
 

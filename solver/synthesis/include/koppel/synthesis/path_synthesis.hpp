@@ -20,6 +20,8 @@
 // curve from another four-bar, cognates.hpp) is kept and named: cognate_of.
 #pragma once
 
+#include "koppel/synthesis/design_space.hpp"
+
 #include "koppel/analysis/classification.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/synthesis/atlas.hpp"
@@ -57,6 +59,9 @@ struct PathRequest {
   int top = 10;                         // linkages returned
   int candidates = 0;                   // atlas candidates pre-polished in closed form (0: max(100, 10 top))
   int threads = 0;                      // polishing threads (0: one per core)
+  // Candidates and polished linkages outside it are dropped (never returned); when none is left,
+  // the message names the constraint the best one broke.
+  DesignSpace space;
   bool IsValid(std::string* why) const;
 };
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "koppel/core/mechanism.hpp"
+#include "koppel/synthesis/design_space.hpp"
 
 #include <Eigen/Core>
 
@@ -24,6 +25,7 @@ struct PathSpec {
   int top = 10;                         // linkages returned
   int candidates = 0;                   // atlas curves pre-polished (0: max(100, 10 top))
   int threads = 0;                      // 0: one per core
+  DesignSpace space;                    // no linkage outside it is returned (design_space.hpp)
 };
 // Empty when the spec can be run; else why not (too few points, ...).
 std::string PathSpecProblem(const PathSpec& spec);

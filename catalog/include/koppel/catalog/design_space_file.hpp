@@ -1,0 +1,20 @@
+// The design file of a synthesis (--design FILE.yaml): the design space
+// (koppel/synthesis/design_space.hpp) as an engineer writes it, every key optional:
+//   lengths: [min, max]        every link, the frame too
+//   ratio: max                 longest link / shortest link
+//   pivots: {x: [a, b], y: [c, d]}   both frame pivots inside this box
+//   input: crank | any         crank: the input turns fully
+// Numbers may be formulas. Unknown keys, a contradiction (an empty interval, a ratio below 1) and
+// non-finite numbers are errors with file:line:column (InputError, as mechanism_file.hpp).
+#pragma once
+
+#include "koppel/synthesis/design_space.hpp"
+
+#include <string>
+
+namespace koppel {
+
+DesignSpace ReadDesignSpace(const std::string& path);
+DesignSpace ParseDesignSpaceText(const std::string& text, const std::string& path);
+
+}  // namespace koppel

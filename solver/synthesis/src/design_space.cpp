@@ -1,0 +1,58 @@
+#include "koppel/synthesis/design_space.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace koppel {
+namespace {
+
+bool FiniteInterval(const std::optional<std::pair<double, double>>& range) {
+  return !range || (std::isfinite(range->first) && std::isfinite(range->second) && range->first <= range->second);
+}
+
+}  // namespace
+
+bool DesignSpace::IsValid(std::string* why) const {
+  std::string problem;
+  if (!FiniteInterval(lengths)) problem = "lengths: [min, max] must be finite with min <= max";
+  else if (lengths && lengths->second <= 0) problem = "lengths: the largest length must be positive";
+  else if (ratio && !(std::isfinite(*ratio) && *ratio >= 1)) problem = "ratio: the longest link over the shortest is at least 1";
+  else if (!FiniteInterval(pivots_x) || !FiniteInterval(pivots_y)) problem = "pivots: each of x and y must be [min, max], finite, min <= max";
+  if (why) *why = problem;
+  return problem.empty();
+}
+
+std::string DesignSpace::Violation(const FourBarSizes& s) const {
+  const double frame = (s.b0 - s.a0).norm();
+  const std::array<std::pair<const char*, double>, 4> links = {{{"crank", s.crank}, {"coupler", s.coupler}, {"rocker", s.rocker}, {"frame", frame}}};
+  if (lengths) {
+    for (const auto& [name, length] : links) {
+      if (length < lengths->first) return fmt::format("lengths: the {} is {:.6g}, below {:.6g}", name, length, lengths->first);
+      if (length > lengths->second) return fmt::format("lengths: the {} is {:.6g}, beyond {:.6g}", name, length, lengths->second);
+    }
+  }
+  const auto [shortest, longest] = std::minmax_element(links.begin(), links.end(), [](const auto& x, const auto& y) { return x.second < y.second; });
+  if (ratio && longest->second > *ratio * shortest->second)
+    return fmt::format("ratio: the {} ({:.6g}) is {:.4g} times the {} ({:.6g}), more than {:.6g}", longest->first, longest->second,
+                       longest->second / shortest->second, shortest->first, shortest->second, *ratio);
+  for (const auto& [name, p] : {std::pair<const char*, Eigen::Vector2d>{"A0", s.a0}, {"B0", s.b0}}) {
+    if (pivots_x && (p.x() < pivots_x->first || p.x() > pivots_x->second))
+      return fmt::format("pivots: {} at x = {:.6g}, outside [{:.6g}, {:.6g}]", name, p.x(), pivots_x->first, pivots_x->second);
+    if (pivots_y && (p.y() < pivots_y->first || p.y() > pivots_y->second))
+      return fmt::format("pivots: {} at y = {:.6g}, outside [{:.6g}, {:.6g}]", name, p.y(), pivots_y->first, pivots_y->second);
+  }
+  if (input == InputTurn::kCrank) {
+    // Grashof: shortest + longest <= the other two; the input turns fully when the crank or the
+    // frame is the shortest (crank-rocker, double crank)
+    const double sum = s.crank + s.coupler + s.rocker + frame;
+    const bool grashof = shortest->second + longest->second <= sum - shortest->second - longest->second;
+    const bool input_turns = grashof && (shortest->first == std::string("crank") || shortest->first == std::string("frame"));
+    if (!input_turns) return "input: crank, but the input does not turn fully (not Grashof with the crank or the frame shortest)";
+  }
+  return "";
+}
+
+}  // namespace koppel

@@ -109,6 +109,26 @@ TEST_CASE("Model::ToYaml reads back to the same outputs", "[api]") {
   CHECK_THAT(Workspace(back).MoveTo(77).Get("s"), WithinAbs(Workspace(m).MoveTo(77).Get("s"), kWrittenBack));
 }
 
+TEST_CASE("Model::ToYaml is the file as written with only the set parameters' values changed", "[api]") {
+  // reference: the catalog entry's own text, with e's line edited by hand
+  const std::string path = test::CatalogEntryPath("slider-crank-offset");
+  const std::string text = test::ReadText(path);
+  CHECK(Model::Load(path).ToYaml() == text);
+  const Model m = Model::Load(path).With("e", 0.25);
+  const size_t e = text.find("\n  e: ");
+  REQUIRE(e != std::string::npos);
+  const size_t value = e + std::string("\n  e: ").size(), value_end = text.find_first_of(" \n", value);
+  CHECK(m.ToYaml() == text.substr(0, value) + "0.25" + text.substr(value_end));
+  const Model back = Model::Parse(m.ToYaml(), "written.yaml");
+  CHECK(back.parameters() == m.parameters());
+}
+
+TEST_CASE("Model::With refuses a parameter that no formula reads", "[api]") {
+  const Model m = Model::Load(test::CatalogEntryPath("watt-six-bar"));
+  CHECK_THROWS_WITH(m.With("psi1_a", 1.0), Catch::Contains("no formula of this file reads the parameter 'psi1_a'"));
+  CHECK_NOTHROW(m.With("a1", 1.01));
+}
+
 TEST_CASE("Model::FromMechanism refuses an inconsistent mechanism", "[api]") {
   Mechanism broken;
   broken.name = "broken";

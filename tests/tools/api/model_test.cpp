@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 
 using namespace koppel;
 using Catch::Matchers::WithinAbs;
@@ -121,6 +122,17 @@ TEST_CASE("Model::ToYaml is the file as written with only the set parameters' va
   CHECK(m.ToYaml() == text.substr(0, value) + "0.25" + text.substr(value_end));
   const Model back = Model::Parse(m.ToYaml(), "written.yaml");
   CHECK(back.parameters() == m.parameters());
+}
+
+TEST_CASE("Model::ToYaml of every catalog entry, unchanged, is the entry's text byte for byte", "[api]") {
+  int entries = 0;
+  for (const auto& e : std::filesystem::directory_iterator(KOPPEL_CATALOG_DIR)) {
+    if (e.path().extension() != ".yaml") continue;
+    INFO(e.path());
+    CHECK(Model::Load(e.path().string()).ToYaml() == test::ReadText(e.path().string()));
+    ++entries;
+  }
+  CHECK(entries >= 30);
 }
 
 TEST_CASE("Model::With refuses a parameter that no formula reads", "[api]") {

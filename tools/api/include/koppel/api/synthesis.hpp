@@ -25,7 +25,7 @@ namespace koppel {
 struct DesignFigure {
   std::string name;  // the CLI's summary names: "l1", "mu_min", "beta", ...
   double value = 0;
-  std::string unit;  // "deg", "length", "1"
+  std::string unit;  // "deg", "1", "length" or the unit the request names ("mm")
 };
 
 // A table of numbers a design comes with (function generation: its structural error curve).

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <sstream>
 
@@ -159,6 +160,19 @@ TEST_CASE("synth mzc --lambda 5/6: six-point contact and the seed 003 cognate", 
   CHECK(v.at("crank_rocker_l4") / v.at("crank_rocker_l1") == Approx(4.0).epsilon(1e-9));
   CHECK(test::RunKoppel("analyze " + (dir.path() / "mzc.yaml").string()).exit_code == 0);
   CHECK(test::RunKoppel("synth mzc --lambda 2").exit_code == 2);
+  // in millimetres: the double rocker's file and its crank-rocker cognate's say so, the table too
+  const std::string mm = (dir.path() / "mzc-mm.yaml").string(), cognates = (dir.path() / "cognates").string();
+  const test::RunResult in_mm = test::RunKoppel("synth mzc --lambda 5/6 --D 100 --units mm -o " + mm + " --cognate-dir " + cognates);
+  INFO(in_mm.err);
+  REQUIRE(in_mm.exit_code == 0);
+  CHECK_THAT(in_mm.out, Catch::Contains("\nl1,") && Catch::Contains(",mm\n") && !Catch::Contains(",length\n"));
+  CHECK_THAT(test::ReadText(mm), Catch::Contains("\nunits: {length: mm}\n"));
+  int cognate_files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(cognates)) {
+    CHECK_THAT(test::ReadText(e.path().string()), Catch::Contains("\nunits: {length: mm}\n"));
+    ++cognate_files;
+  }
+  CHECK(cognate_files == 1);
 }
 
 TEST_CASE("synth fit: five precision points recover seed 003's dimensions", "[cli][synth]") {

@@ -189,13 +189,14 @@ void RunMzc(const Args& args) {
   if (!args.kappa.empty()) spec.kappa = ParseNumberFlag("--kappa", args.kappa);
   else spec.lambda = Required("--lambda", args.lambda);
   spec.diameter = ParseNumberFlag("--D", args.diameter);
+  spec.units = args.units;
   const Design d = Requested([&] { return SynthesiseMzc(spec); });
   if (!d.ok()) {
     Complain(d.message);
     throw Exit{kExitBadInput};
   }
   if (!args.cognates_dir.empty()) {
-    const Design crank_rocker = MzcCrankRocker(d);
+    const Design crank_rocker = MzcCrankRocker(d, args.units);
     if (crank_rocker.ok()) {
       MakeOutputDirectory(args.cognates_dir);
       WriteOutput(args.cognates_dir + "/" + crank_rocker.model->name() + ".yaml", crank_rocker.yaml);
@@ -286,6 +287,7 @@ void AddSynthCommand(CLI::App& app) {
   mzc->add_option("--D", args->diameter, "Inflection-circle diameter D (default 1)");
   OutputFile(mzc->add_option("-o,--yaml", args->yaml, "Write the double rocker as a YAML file"));
   OutputDirectory(mzc->add_option("--cognate-dir", args->cognates_dir, "Also write the crank-rocker cognate into this directory"));
+  mzc->add_option("--units", args->units, "The designed mechanisms' length unit, as synth deadcentre --units");
   common(mzc);
   mzc->callback([args] { RunMzc(*args); });
 

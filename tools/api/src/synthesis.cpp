@@ -50,8 +50,9 @@ Design Finished(const Result& result, Figures figures, const Mechanism& mechanis
 
 // A design from no file in the unit the user names: its file says the unit, its length
 // figures carry its name.
-void InUnits(const std::optional<Loads>& units, Design& design, const Mechanism& m, const std::string& comment) {
-  design.yaml = WriteMechanismYaml(m, comment, {0, 360, 1}, {}, units ? &*units : nullptr);
+void InUnits(const std::optional<Loads>& units, Design& design, const Mechanism& m, const std::string& comment,
+             const SweepDefaults& sweep = {0, 360, 1}) {
+  design.yaml = WriteMechanismYaml(m, comment, sweep, {}, units ? &*units : nullptr);
   if (!units) return;
   for (DesignFigure& f : design.figures)
     if (f.unit == "length") f.unit = units->LengthUnit();
@@ -193,6 +194,7 @@ void AddCrankRocker(const Cognates& c, Figures& f) {
 }  // namespace
 
 Design SynthesiseMzc(const MzcSpec& spec) {
+  const std::optional<Loads> units = UnitsOf(spec.units);
   Require(spec.lambda.has_value() != spec.kappa.has_value(), "lambda/kappa", "give lambda or kappa (one of them)");
   double lambda = spec.lambda.value_or(0);
   if (spec.kappa) {
@@ -221,16 +223,17 @@ Design SynthesiseMzc(const MzcSpec& spec) {
   // the double rocker's own input range, a hundredth of a degree inside its limit positions
   const InputRange range = DrivableRange(m, kPi, DegToRad(1));
   const double lo = RadToDeg(range.low) + 0.01, hi = RadToDeg(range.high) - 0.01;
-  design.yaml = WriteMechanismYaml(m,
-                                   fmt::format("Meyer zur Capellen straight-line linkage (koppel synth mzc): lambda = {}, D = {}.\n"
-                                               "Assembled in the crossed symmetric position; K is the inflection pole there.",
-                                               d.lambda, d.D),
-                                   {lo, hi, (hi - lo) / 200});
+  InUnits(units, design, m,
+          fmt::format("Meyer zur Capellen straight-line linkage (koppel synth mzc): lambda = {}, D = {}.\n"
+                      "Assembled in the crossed symmetric position; K is the inflection pole there.",
+                      d.lambda, d.D),
+          {lo, hi, (hi - lo) / 200});
   return design;
 }
 
-Design MzcCrankRocker(const Design& double_rocker) {
+Design MzcCrankRocker(const Design& double_rocker, const std::string& unit_name) {
   if (!double_rocker.ok() || !double_rocker.model) BadInput("design", "double rocker", "no Meyer zur Capellen design: " + double_rocker.message);
+  const std::optional<Loads> units = UnitsOf(unit_name);
   const Cognates c = MzcCognates(double_rocker.model->mechanism());
   Figures f;
   if (c.ok()) {
@@ -241,7 +244,7 @@ Design MzcCrankRocker(const Design& double_rocker) {
     f.Add("AK", c.k_first, "length");
   }
   Design design = Finished(c, f, c.first);
-  if (design.ok()) design.yaml = WriteMechanismYaml(c.first, "Crank-rocker cognate of a Meyer zur Capellen linkage (koppel synth mzc).", {0, 360, 1});
+  if (design.ok()) InUnits(units, design, c.first, "Crank-rocker cognate of a Meyer zur Capellen linkage (koppel synth mzc).");
   return design;
 }
 

@@ -85,12 +85,13 @@ Design SynthesiseSliderCrank(const SliderCrankSpec& spec);
 struct MzcSpec {
   std::optional<double> lambda, kappa;
   double diameter = 1;
+  std::string units;  // as CrankRockerSpec::units
 };
 Design SynthesiseMzc(const MzcSpec& spec);
 // The crank-rocker of a Meyer zur Capellen double rocker (SynthesiseMzc's design): its Roberts
 // cognate about K whose crank turns with the double rocker's coupler (seed 003). Figures l1 (the
 // crank), l2, l3, l4 (the frame), AK [length]. InputError for a design that is not ok.
-Design MzcCrankRocker(const Design& double_rocker);
+Design MzcCrankRocker(const Design& double_rocker, const std::string& units = "");  // units: as MzcSpec::units
 
 // Function generation (koppel synth function): a four-bar (rocker angle) or slider-crank
 // (slider displacement) whose output follows y = f(x) while the crank follows x, mapped linearly

@@ -1,5 +1,6 @@
 #include "koppel/catalog/fit_problem.hpp"
 #include "koppel/catalog/parameter_builder.hpp"
+#include "koppel/catalog/parameter_use.hpp"
 
 #include "koppel/catalog/catalog.hpp"
 
@@ -10,6 +11,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -21,10 +23,15 @@ namespace {
 // the fit may change, and within which bounds.
 void ReadFitParameters(YamlReader& r, const YAML::Node& root, const std::string& relative, FitProblem& problem) {
   const YAML::Node params = r.Require(root, "parameters", "");
+  const std::vector<std::string> read = ParametersRead(problem.base);  // a free parameter nothing reads fits nothing
   for (const YamlReader::Entry& e : r.Entries(params, "parameters")) {
     const std::string ppath = Child("parameters", e.key);
     if (!problem.base.parameters.Has(e.key)) {
       r.Error(e.key_node, ppath, "'" + e.key + "' is not a parameter of " + relative);
+      continue;
+    }
+    if (std::find(read.begin(), read.end(), e.key) == read.end()) {
+      r.Error(e.key_node, ppath, UnreadParameterMessage(e.key, read));
       continue;
     }
     FitParameter p;
@@ -152,8 +159,9 @@ FitProblem ReadFitProblem(const std::string& path) {
   }
   std::string mechanism_text;
   try {
-    problem.base = ReadMechanismFile(problem.mechanism_path);
-    mechanism_text = MechanismTextWithoutCard(ReadInputText(problem.mechanism_path), problem.mechanism_path);
+    problem.mechanism_text = ReadInputText(problem.mechanism_path);
+    problem.base = ParseMechanismText(problem.mechanism_text, problem.mechanism_path);
+    mechanism_text = MechanismTextWithoutCard(problem.mechanism_text, problem.mechanism_path);
   } catch (const InputError& e) {
     std::vector<Diagnostic> all = {{path, mech.Mark().line + 1, mech.Mark().column + 1, "mechanism", "the mechanism file has problems:"}};
     all.insert(all.end(), e.diagnostics().begin(), e.diagnostics().end());
@@ -183,6 +191,19 @@ FitProblem ReadFitProblem(const std::string& path) {
 
   problem.builder = BuilderFor(problem, std::move(mechanism_text));
   return problem;
+}
+
+std::string FitUnitName(const FitProblem& problem, FitUnit unit) {
+  return unit == FitUnit::kAngle ? "deg" : problem.base.loads.LengthUnit();
+}
+
+std::string FitParameterUnitName(const FitProblem& problem, const std::string& name) {
+  switch (MeasureOf(problem.base, name)) {
+    case ParameterMeasure::kLength: return problem.base.loads.LengthUnit();
+    case ParameterMeasure::kAngle: return "deg";
+    case ParameterMeasure::kUnknown: break;
+  }
+  return "parameter";
 }
 
 }  // namespace koppel

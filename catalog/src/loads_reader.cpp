@@ -1,6 +1,7 @@
 // The masses and loads of a mechanism file: links.*.{mass, cg, inertia}, units, gravity, loads
 // (format in README.md, "Masses and loads"). Every problem is reported at its line like the rest
 // of the file's.
+#include "koppel/catalog/length_units.hpp"
 #include "koppel/core/formula.hpp"
 #include "koppel/core/limits.hpp"
 #include "yaml_reader.hpp"
@@ -8,18 +9,9 @@
 #include <fmt/core.h>
 
 #include <cmath>
-#include <map>
 
 namespace koppel {
 namespace {
-
-// Metres per length unit, by name.
-const std::map<std::string, double>& LengthUnits() {
-  static const std::map<std::string, double> units = {{"m", 1.0},      {"dm", 0.1},      {"cm", 0.01},
-                                                      {"mm", 0.001},   {"um", 1e-6},     {"km", 1000.0},
-                                                      {"in", 0.0254},  {"ft", 0.3048}};
-  return units;
-}
 
 class LoadsReader {
  public:
@@ -49,17 +41,18 @@ class LoadsReader {
     const YAML::Node length = node["length"];
     if (!length.IsDefined() || length.IsNull()) return;
     if (length.IsScalar()) {
-      if (const auto named = LengthUnits().find(length.Scalar()); named != LengthUnits().end()) {
-        loads_.metres_per_unit = named->second;
+      for (const auto& [name, metres] : NamedLengthUnits()) {
+        if (name != length.Scalar()) continue;
+        loads_.metres_per_unit = metres;
         loads_.length_unit_given = true;
-        loads_.length_unit_name = named->first;
+        loads_.length_unit_name = name;
         return;
       }
     }
     const std::optional<double> metres = r_.Number(length, "units.length");
     if (!metres) return;
     if (!(*metres > 0.0)) {
-      r_.Error(length, "units.length", "the length unit must be m, dm, cm, mm, um, km, in, ft or a positive number of metres");
+      r_.Error(length, "units.length", "the length unit must be " + NamedLengthUnitList() + " or a positive number of metres");
       return;
     }
     // forces and energies scale with powers of the unit: beyond these they overflow a double

@@ -1,6 +1,7 @@
 #include "koppel/catalog/mechanism_file.hpp"
 
 #include "koppel/catalog/catalog.hpp"
+#include "koppel/catalog/parameter_use.hpp"
 
 #include "mechanism_node.hpp"
 
@@ -10,6 +11,7 @@
 #include "koppel/core/transmission.hpp"
 #include "yaml_reader.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <limits>
@@ -426,6 +428,16 @@ class MechanismReader {
   Mechanism& m_;
 };
 
+// An override of a parameter that no formula reads would change nothing: the user believes a
+// change was made when it was not. Unknown names are reported by ReadParameters.
+void RefuseUnreadOverrides(const MechanismFile& file, const Overrides& overrides, std::vector<Diagnostic>& diagnostics) {
+  const std::vector<std::string> read = ParametersRead(file);
+  for (const auto& [name, formula] : overrides) {
+    if (!file.parameters.Has(name) || std::find(read.begin(), read.end(), name) != read.end()) continue;
+    diagnostics.push_back({file.path, 0, 0, "--set " + name, UnreadParameterMessage(name, read)});
+  }
+}
+
 }  // namespace
 
 MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides,
@@ -446,6 +458,8 @@ MechanismFile ParseMechanismNode(const YAML::Node& root, const std::string& file
     if (reader.diagnostics().empty()) {
       for (const std::string& problem : CheckConsistency(out.mechanism)) reader.diagnostics().push_back({file_name, 1, 1, "", problem});
     }
+    // only a file read in full knows every formula (a problem above may have stopped the reading)
+    if (reader.diagnostics().empty() && !overrides.empty()) RefuseUnreadOverrides(out, overrides, reader.diagnostics());
     if (card == CardReading::kRead && reader.diagnostics().empty() && root.IsMap() && root["catalog"].IsDefined()) {
       out.card = ReadCard(reader, root["catalog"], out);
     }

@@ -93,6 +93,20 @@ TEST_CASE("cognates of a parallelogram: cognate 1 cannot be driven, and says so"
   CHECK(test::RunKoppel("analyze " + (dir.path() / "parallel-crank-cognate-2.yaml").string() + " --step 30").exit_code == 0);
 }
 
+TEST_CASE("cognates of a file in millimetres write their files in millimetres", "[cli]") {
+  test::TempDir dir;
+  const std::string text = test::ReadText(test::CatalogEntryPath("mzc-crank-rocker"));
+  const std::string mm = dir.Write("mm.yaml", test::Replace(text, "\nparameters:", "\nunits: {length: mm}\nparameters:"));
+  const test::RunResult r = test::RunKoppel("cognates " + mm + " --point K -o " + dir.path().string());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  // the files are named by the mechanism, not by the file
+  for (const char* name : {"mzc-crank-rocker-cognate-1.yaml", "mzc-crank-rocker-cognate-2.yaml"}) {
+    INFO(name);
+    CHECK_THAT(test::ReadText((dir.path() / name).string()), Catch::Contains("\nunits: {length: mm}\n"));
+  }
+}
+
 TEST_CASE("cognates writes two mechanism files that koppel analyses", "[cli]") {
   test::TempDir dir;
   const test::RunResult r = test::RunKoppel("cognates " + test::CatalogEntryPath("mzc-crank-rocker") + " --point K -o " + dir.path().string());

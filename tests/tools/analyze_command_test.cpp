@@ -69,6 +69,17 @@ TEST_CASE("analyze --set, --format json and -o", "[cli]") {
   CHECK_THAT(json, Catch::Contains("3.6"));  // e = 0, phi = 90 deg: s = l1 + l2 (extended)
 }
 
+TEST_CASE("analyze --set of a parameter that no formula reads exits 2 naming it and the ones read", "[cli]") {
+  // watt-six-bar's psi1_a is read only by its catalog card's checks, never by the mechanism
+  const std::string watt = test::CatalogEntryPath("watt-six-bar");
+  const test::RunResult r = test::RunKoppel("analyze " + watt + " --step 90 --set psi1_a=1");
+  CHECK(r.exit_code == 2);
+  CHECK(r.out.empty());
+  CHECK_THAT(r.err, Catch::Contains("--set psi1_a") && Catch::Contains("no formula of this file reads the parameter 'psi1_a'") &&
+                        Catch::Contains("the parameters read: a1 b1 c1 d1"));
+  CHECK(test::RunKoppel("analyze " + watt + " --step 90 --set a1=1.01").exit_code == 0);
+}
+
 TEST_CASE("analyze: bad input exits 2 naming file and line; nothing is written", "[cli]") {
   test::TempDir dir;
   std::string text = test::ReadText(test::CatalogEntryPath("slider-crank-offset"));

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <sstream>
 
@@ -134,6 +135,21 @@ TEST_CASE("synth deadcentre slider-crank and the charts", "[cli][synth]") {
   CHECK(test::RunKoppel("synth chart crank-rocker --phi0 170:160:1").exit_code == 2);
 }
 
+TEST_CASE("synth deadcentre --units writes the unit into the file and labels the lengths with it", "[cli][synth]") {
+  test::TempDir dir;
+  const std::string file = (dir.path() / "slider.yaml").string();
+  const test::RunResult r = test::RunKoppel("synth deadcentre slider-crank --phi0 200 --stroke 100 --units mm -o " + file);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.out, Catch::Contains("\nstroke,100,mm\n") && Catch::Contains("\nphi0,200,deg\n") && !Catch::Contains(",length\n"));
+  CHECK_THAT(test::ReadText(file), Catch::Contains("\nunits: {length: mm}\n"));
+  // the file reads back in millimetres: analyze labels its lengths mm
+  CHECK_THAT(test::RunKoppel("analyze " + file + " --step 90 --format json").out, Catch::Contains("\"mm\""));
+  const test::RunResult bad = test::RunKoppel("synth deadcentre slider-crank --phi0 200 --stroke 100 --units furlong");
+  CHECK(bad.exit_code == 2);
+  CHECK_THAT(bad.err, Catch::Contains("furlong") && Catch::Contains("m, dm, cm, mm, um, km, in, ft"));
+}
+
 TEST_CASE("synth mzc --lambda 5/6: six-point contact and the seed 003 cognate", "[cli][synth]") {
   test::TempDir dir;
   const test::RunResult r = test::RunKoppel("synth mzc --lambda 5/6 --D 1 -o " + (dir.path() / "mzc.yaml").string());
@@ -144,6 +160,19 @@ TEST_CASE("synth mzc --lambda 5/6: six-point contact and the seed 003 cognate", 
   CHECK(v.at("crank_rocker_l4") / v.at("crank_rocker_l1") == Approx(4.0).epsilon(1e-9));
   CHECK(test::RunKoppel("analyze " + (dir.path() / "mzc.yaml").string()).exit_code == 0);
   CHECK(test::RunKoppel("synth mzc --lambda 2").exit_code == 2);
+  // in millimetres: the double rocker's file and its crank-rocker cognate's say so, the table too
+  const std::string mm = (dir.path() / "mzc-mm.yaml").string(), cognates = (dir.path() / "cognates").string();
+  const test::RunResult in_mm = test::RunKoppel("synth mzc --lambda 5/6 --D 100 --units mm -o " + mm + " --cognate-dir " + cognates);
+  INFO(in_mm.err);
+  REQUIRE(in_mm.exit_code == 0);
+  CHECK_THAT(in_mm.out, Catch::Contains("\nl1,") && Catch::Contains(",mm\n") && !Catch::Contains(",length\n"));
+  CHECK_THAT(test::ReadText(mm), Catch::Contains("\nunits: {length: mm}\n"));
+  int cognate_files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(cognates)) {
+    CHECK_THAT(test::ReadText(e.path().string()), Catch::Contains("\nunits: {length: mm}\n"));
+    ++cognate_files;
+  }
+  CHECK(cognate_files == 1);
 }
 
 TEST_CASE("synth fit: five precision points recover seed 003's dimensions", "[cli][synth]") {
@@ -164,6 +193,44 @@ TEST_CASE("synth fit: five precision points recover seed 003's dimensions", "[cl
   const test::RunResult b = test::RunKoppel("synth fit " + bad);
   CHECK(b.exit_code == 2);
   CHECK_THAT(b.err, Catch::Contains("bad.yaml:1:"));
+}
+
+TEST_CASE("synth fit -o edits the user's file: units, masses, loads kept; forces equal --set of the fitted value", "[cli][synth]") {
+  // slider-crank-loads.yaml with l2 free and s = 150 mm at phi = 90 deg. Reference for l2: the
+  // closed form of the offset slider-crank at phi = 90 deg, A = (l1, -e) and B = (s, 0), so
+  // l2 = sqrt((s - l1)^2 + e^2) = sqrt(100^2 + 10^2); reference for out.yaml: the input file with
+  // only l2's value replaced; for its forces: `koppel forces` of the input with --set l2.
+  test::TempDir dir;
+  const std::string mechanism = test::TestDataPath("slider-crank-loads.yaml");
+  const std::string problem = dir.Write("fit.yaml", "mechanism: " + mechanism +
+                                                        "\nparameters:\n  l2: {start: 160, lower: 70, upper: 200}\n"
+                                                        "targets:\n  - {output: s, input: 90, value: 150}\n");
+  const std::string out = (dir.path() / "out.yaml").string();
+  const test::RunResult r = test::RunKoppel("synth fit " + problem + " --quiet -o " + out);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(test::ParseSummary(r.out).at("l2") == Approx(std::sqrt(100.0 * 100 + 10 * 10)).margin(1e-6));
+  CHECK_THAT(r.out, Catch::Contains("\nl2,") && Catch::Contains(",mm\ntarget1_s_residual,") && !Catch::Contains("parameter"));
+  CHECK_THAT(r.out, Catch::Contains("target1_s_tolerance,1e-06,mm\n"));
+
+  const std::string original = test::ReadText(mechanism), written = test::ReadText(out);
+  const size_t first_line = written.find('\n');
+  REQUIRE(first_line != std::string::npos);
+  CHECK_THAT(written.substr(0, first_line), Catch::StartsWith("# Fitted by koppel synth fit from "));
+  const std::string body = written.substr(first_line + 1);
+  const size_t l2 = original.find("  l2: 160 ");
+  REQUIRE(l2 != std::string::npos);
+  const size_t value = l2 + std::string("  l2: ").size();
+  const size_t value_end = body.find(' ', value);
+  CHECK(body.substr(0, value) == original.substr(0, value));
+  const std::string fitted = body.substr(value, value_end - value);
+  CHECK(body.substr(value_end) == original.substr(value + 3));  // "160" replaced, nothing else
+  const test::RunResult forces = test::RunKoppel("forces " + out + " --step 30");
+  const test::RunResult by_set = test::RunKoppel("forces " + mechanism + " --step 30 --set l2=" + fitted);
+  REQUIRE(forces.exit_code == 0);
+  REQUIRE(by_set.exit_code == 0);
+  CHECK(forces.out == by_set.out);
+  CHECK_THAT(forces.out, Catch::Contains("torque"));
 }
 
 TEST_CASE("issue 12: synth fit with direction targets at 153/202/223 deg finds the exact design", "[cli][synth]") {

@@ -65,7 +65,7 @@ void AddFitSubcommand(CLI::App& synth) {
       "its tolerance (`tolerance:`, default 1e-6 in the target's unit) or the design does not assemble over `require`.\n"
       "Example: koppel synth fit tests/data/fit-mzc-every-target.yaml -o fitted.yaml");
   cmd->add_option("problem", args->problem, "Fit problem YAML file")->required();
-  OutputFile(cmd->add_option("-o,--yaml", args->yaml, "Write the fitted mechanism as a YAML file"));
+  OutputFile(cmd->add_option("-o,--yaml", args->yaml, "Write the mechanism file with the fitted values in place of the free parameters' (the rest as written)"));
   OutputFile(cmd->add_option("--output-file", args->out, "Write the report to this file instead of stdout"));
   cmd->add_option("--format", args->format, "csv (default) or json");
   cmd->add_flag("--quiet", args->quiet, "Do not print each start's Ceres report on stderr");

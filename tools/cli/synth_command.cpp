@@ -24,6 +24,7 @@ struct Args {
   std::string out, yaml, cognates_dir;
   std::string format = "csv";
   std::string sense = "ccw";
+  std::string units;
   bool quiet = false;
 };
 
@@ -104,6 +105,7 @@ void RunCrankRocker(const Args& args, double phi0) {
   }
   spec.beta = OptionalNumberFlag("--beta", args.beta);
   spec.lambda = OptionalNumberFlag("--lambda", args.lambda_cr);
+  spec.units = args.units;
   const Design d = Requested([&] { return SynthesiseCrankRocker(spec); });
   if (!d.ok()) Refuse(d);
   Emit(args, d);
@@ -119,6 +121,7 @@ void RunSliderCrank(const Args& args, double phi0) {
   }
   spec.offset = OptionalNumberFlag("--offset", args.offset);
   spec.beta = OptionalNumberFlag("--beta", args.beta);
+  spec.units = args.units;
   const Design d = Requested([&] { return SynthesiseSliderCrank(spec); });
   if (!d.ok()) Refuse(d);
   Emit(args, d);
@@ -186,13 +189,14 @@ void RunMzc(const Args& args) {
   if (!args.kappa.empty()) spec.kappa = ParseNumberFlag("--kappa", args.kappa);
   else spec.lambda = Required("--lambda", args.lambda);
   spec.diameter = ParseNumberFlag("--D", args.diameter);
+  spec.units = args.units;
   const Design d = Requested([&] { return SynthesiseMzc(spec); });
   if (!d.ok()) {
     Complain(d.message);
     throw Exit{kExitBadInput};
   }
   if (!args.cognates_dir.empty()) {
-    const Design crank_rocker = MzcCrankRocker(d);
+    const Design crank_rocker = MzcCrankRocker(d, args.units);
     if (crank_rocker.ok()) {
       MakeOutputDirectory(args.cognates_dir);
       WriteOutput(args.cognates_dir + "/" + crank_rocker.model->name() + ".yaml", crank_rocker.yaml);
@@ -234,7 +238,8 @@ void AddSynthCommand(CLI::App& app) {
       "  (90 < phi0 < 270 deg; phi0 > 180 puts A0 above the slide line, e < 0), the stroke s0 between them, and the offset\n"
       "  |e| (--offset) or beta (angle between the slide line and A0B_a), each within the range that gives a crank; by\n"
       "  default the offset that maximises mu_min. phi0 = 180 deg (centric) has no best design.\n"
-      "Example: koppel synth deadcentre crank-rocker --phi0 164 --psi0 60 -o mech.yaml");
+      "Examples: koppel synth deadcentre crank-rocker --phi0 164 --psi0 60 -o mech.yaml\n"
+      "          koppel synth deadcentre slider-crank --phi0 200 --stroke 100 --units mm -o slider.yaml");
   dc->add_option("type", args->type, "crank-rocker or slider-crank")->required();
   dc->add_option("--phi0", args->phi0, "Crank angle from the folded to the extended dead centre [deg]")->required();
   dc->add_option("--psi0", args->psi0, "Rocker swing angle [deg] (crank-rocker)");
@@ -249,6 +254,8 @@ void AddSynthCommand(CLI::App& app) {
   dc->add_option("--stroke", args->stroke, "Stroke s0 (slider-crank)");
   dc->add_option("--offset", args->offset, "Offset |e| (slider-crank; default: best mu_min)");
   OutputFile(dc->add_option("-o,--yaml", args->yaml, "Write the mechanism as a YAML file"));
+  dc->add_option("--units", args->units, "The designed mechanism's length unit: its file says `units: {length: UNIT}` and the\n"
+                                         "table labels its lengths with it (m, dm, cm, mm, um, km, in, ft; default: none)");
   common(dc);
   dc->callback([args] { RunDeadCentre(*args); });
 
@@ -280,6 +287,7 @@ void AddSynthCommand(CLI::App& app) {
   mzc->add_option("--D", args->diameter, "Inflection-circle diameter D (default 1)");
   OutputFile(mzc->add_option("-o,--yaml", args->yaml, "Write the double rocker as a YAML file"));
   OutputDirectory(mzc->add_option("--cognate-dir", args->cognates_dir, "Also write the crank-rocker cognate into this directory"));
+  mzc->add_option("--units", args->units, "The designed mechanisms' length unit, as synth deadcentre --units");
   common(mzc);
   mzc->callback([args] { RunMzc(*args); });
 

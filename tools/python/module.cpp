@@ -433,7 +433,9 @@ void BindModelTolerances(py::class_<PyMechanism>& c) {
            "koppel tolerance: exact sensitivities, worst case, rss, shares, clearance and a seeded Monte Carlo run of `output` "
            "at each input; rows are dicts with the CLI's column names.")
       .def("_cognates", [](const PyMechanism& self, const std::string& point) { return DesignList(FindCognates(self.model(), point)); })
-      .def("to_yaml", Of(&Model::ToYaml), "The mechanism as a mechanism file.")
+      .def("to_yaml", Of(&Model::ToYaml),
+           "The mechanism as a mechanism file: the file it was read from, the parameters set since changed in place\n"
+           "(formulas, comments, units, masses and loads as written).")
       .def("__repr__", [](const PyMechanism& self) { return "<koppel.Mechanism '" + self.model().name() + "' from " + self.model().path() + ">"; });
 }
 

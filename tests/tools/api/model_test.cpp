@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 
 using namespace koppel;
 using Catch::Matchers::WithinAbs;
@@ -107,6 +108,37 @@ TEST_CASE("Model::ToYaml reads back to the same outputs", "[api]") {
   const Model m = Model::Load(test::CatalogEntryPath("slider-crank-offset"), {{"e", "0.3"}});
   const Model back = Model::Parse(m.ToYaml(), "written.yaml");
   CHECK_THAT(Workspace(back).MoveTo(77).Get("s"), WithinAbs(Workspace(m).MoveTo(77).Get("s"), kWrittenBack));
+}
+
+TEST_CASE("Model::ToYaml is the file as written with only the set parameters' values changed", "[api]") {
+  // reference: the catalog entry's own text, with e's line edited by hand
+  const std::string path = test::CatalogEntryPath("slider-crank-offset");
+  const std::string text = test::ReadText(path);
+  CHECK(Model::Load(path).ToYaml() == text);
+  const Model m = Model::Load(path).With("e", 0.25);
+  const size_t e = text.find("\n  e: ");
+  REQUIRE(e != std::string::npos);
+  const size_t value = e + std::string("\n  e: ").size(), value_end = text.find_first_of(" \n", value);
+  CHECK(m.ToYaml() == text.substr(0, value) + "0.25" + text.substr(value_end));
+  const Model back = Model::Parse(m.ToYaml(), "written.yaml");
+  CHECK(back.parameters() == m.parameters());
+}
+
+TEST_CASE("Model::ToYaml of every catalog entry, unchanged, is the entry's text byte for byte", "[api]") {
+  int entries = 0;
+  for (const auto& e : std::filesystem::directory_iterator(KOPPEL_CATALOG_DIR)) {
+    if (e.path().extension() != ".yaml") continue;
+    INFO(e.path());
+    CHECK(Model::Load(e.path().string()).ToYaml() == test::ReadText(e.path().string()));
+    ++entries;
+  }
+  CHECK(entries >= 30);
+}
+
+TEST_CASE("Model::With refuses a parameter that no formula reads", "[api]") {
+  const Model m = Model::Load(test::CatalogEntryPath("watt-six-bar"));
+  CHECK_THROWS_WITH(m.With("psi1_a", 1.0), Catch::Contains("no formula of this file reads the parameter 'psi1_a'"));
+  CHECK_NOTHROW(m.With("a1", 1.01));
 }
 
 TEST_CASE("Model::FromMechanism refuses an inconsistent mechanism", "[api]") {

@@ -141,6 +141,15 @@ class MechanismTest(unittest.TestCase):
         with self.assertRaises(koppel.InputError):
             koppel.Mechanism.load(SLIDER_CRANK).sweep(0, 360, 0)
 
+    def test_set_of_an_unread_parameter_raises(self):
+        # watt-six-bar's psi1_a is read only by its catalog card, never by the mechanism
+        m = koppel.Mechanism.load(os.path.join(CATALOG, "watt-six-bar.yaml"))
+        with self.assertRaises(koppel.InputError) as caught:
+            m.set("psi1_a", 1)
+        self.assertIn("psi1_a", str(caught.exception))
+        self.assertIn("the parameters read:", str(caught.exception))
+        m.set("a1", 1.01)  # a parameter that is read
+
     def test_catalog_find(self):
         hits = koppel.catalog.find(links=4, prismatic=1, directory=CATALOG)
         self.assertIn("slider-crank-offset", [h.id for h in hits])

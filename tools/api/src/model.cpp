@@ -4,6 +4,7 @@
 #include "model_impl.hpp"
 
 #include "admission.hpp"
+#include "koppel/catalog/document_edit.hpp"
 #include "koppel/catalog/mechanism_writer.hpp"
 
 #include <algorithm>
@@ -17,12 +18,6 @@ namespace koppel {
 using namespace api_detail;
 
 namespace {
-
-std::string NumberText(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
-}
 
 }  // namespace
 
@@ -134,6 +129,12 @@ Model Model::With(const std::string& name, double value) const {
 }
 
 std::string Model::ToYaml() const {
+  if (impl_->source) {
+    // the user's own text with the parameters set so far rewritten in place: nothing else moves
+    DocumentChanges changes;
+    changes.parameters = impl_->overrides;
+    return EditMechanismText(impl_->source->text(), impl_->source->path(), changes);
+  }
   const MechanismFile& f = impl_->file;
   const bool has_loads = f.loads.HasMass() || !f.loads.forces.empty() || !f.loads.torques.empty() || !f.loads.springs.empty();
   return WriteMechanismYaml(f.mechanism, f.title.empty() ? f.id : f.title, f.sweep, f.parameters.Values(),

@@ -5,6 +5,7 @@
 #include "model_impl.hpp"
 
 #include "koppel/catalog/fit_problem.hpp"
+#include "koppel/catalog/length_units.hpp"
 #include "koppel/catalog/mechanism_writer.hpp"
 #include "koppel/catalog/synthesis_spec.hpp"
 #include "koppel/core/angles.hpp"
@@ -45,6 +46,21 @@ Design Finished(const Result& result, Figures figures, const Mechanism& mechanis
     d.model = Model::FromMechanism(mechanism);
   }
   return d;
+}
+
+// A design from no file in the unit the user names: its file says the unit, its length
+// figures carry its name.
+void InUnits(const std::optional<Loads>& units, Design& design, const Mechanism& m, const std::string& comment,
+             const SweepDefaults& sweep = {0, 360, 1}) {
+  design.yaml = WriteMechanismYaml(m, comment, sweep, {}, units ? &*units : nullptr);
+  if (!units) return;
+  for (DesignFigure& f : design.figures)
+    if (f.unit == "length") f.unit = units->LengthUnit();
+}
+
+std::optional<Loads> UnitsOf(const std::string& units) {
+  if (units.empty()) return std::nullopt;
+  return UnitOnlyLoads(units, "units");
 }
 
 }  // namespace
@@ -106,6 +122,7 @@ Figures CrankRockerFigures(const CrankRockerRequest& r, const CrankRockerDesign&
 
 Design SynthesiseCrankRocker(const CrankRockerSpec& spec) {
   Require(!(spec.beta && spec.lambda), "beta/lambda", "give beta or lambda, not both");
+  const std::optional<Loads> units = UnitsOf(spec.units);
   CrankRockerRequest request;
   request.phi0 = DegToRad(spec.phi0);
   request.psi0 = DegToRad(spec.psi0);
@@ -120,12 +137,13 @@ Design SynthesiseCrankRocker(const CrankRockerSpec& spec) {
   if (!d.ok()) return Finished(d, Figures{}, Mechanism{});
   const Mechanism m = spec.clockwise ? MirrorMechanism(CrankRockerMechanism(d)) : CrankRockerMechanism(d);
   Design design = Finished(d, CrankRockerFigures(request, d, spec.clockwise), m);
-  design.yaml = WriteMechanismYaml(m, CrankRockerComment(request, d, spec.clockwise), {0, 360, 1});
+  InUnits(units, design, m, CrankRockerComment(request, d, spec.clockwise));
   return design;
 }
 
 Design SynthesiseSliderCrank(const SliderCrankSpec& spec) {
   Require(!(spec.offset && spec.beta), "offset/beta", "give the offset or beta, not both");
+  const std::optional<Loads> units = UnitsOf(spec.units);
   SliderCrankRequest request;
   request.phi0 = DegToRad(spec.phi0);
   request.stroke = spec.stroke;
@@ -152,11 +170,10 @@ Design SynthesiseSliderCrank(const SliderCrankSpec& spec) {
   f.Add("reanalysed_stroke", d.reanalysed_stroke, "length");
   const Mechanism m = SliderCrankMechanism(d);
   Design design = Finished(d, f, m);
-  design.yaml = WriteMechanismYaml(m,
-                                   fmt::format("Slider-crank from dead-centre synthesis (koppel synth): phi0 = {:.10g} deg, stroke = {:.10g}, e = {:.10g}.\n"
-                                               "Conventions of seed 000: A0 = (0, -e), phi from -y counter-clockwise, s from the foot point.",
-                                               RadToDeg(request.phi0), request.stroke, d.e),
-                                   {0, 360, 1});
+  InUnits(units, design, m,
+          fmt::format("Slider-crank from dead-centre synthesis (koppel synth): phi0 = {:.10g} deg, stroke = {:.10g}, e = {:.10g}.\n"
+                      "Conventions of seed 000: A0 = (0, -e), phi from -y counter-clockwise, s from the foot point.",
+                      RadToDeg(request.phi0), request.stroke, d.e));
   return design;
 }
 
@@ -177,6 +194,7 @@ void AddCrankRocker(const Cognates& c, Figures& f) {
 }  // namespace
 
 Design SynthesiseMzc(const MzcSpec& spec) {
+  const std::optional<Loads> units = UnitsOf(spec.units);
   Require(spec.lambda.has_value() != spec.kappa.has_value(), "lambda/kappa", "give lambda or kappa (one of them)");
   double lambda = spec.lambda.value_or(0);
   if (spec.kappa) {
@@ -205,16 +223,17 @@ Design SynthesiseMzc(const MzcSpec& spec) {
   // the double rocker's own input range, a hundredth of a degree inside its limit positions
   const InputRange range = DrivableRange(m, kPi, DegToRad(1));
   const double lo = RadToDeg(range.low) + 0.01, hi = RadToDeg(range.high) - 0.01;
-  design.yaml = WriteMechanismYaml(m,
-                                   fmt::format("Meyer zur Capellen straight-line linkage (koppel synth mzc): lambda = {}, D = {}.\n"
-                                               "Assembled in the crossed symmetric position; K is the inflection pole there.",
-                                               d.lambda, d.D),
-                                   {lo, hi, (hi - lo) / 200});
+  InUnits(units, design, m,
+          fmt::format("Meyer zur Capellen straight-line linkage (koppel synth mzc): lambda = {}, D = {}.\n"
+                      "Assembled in the crossed symmetric position; K is the inflection pole there.",
+                      d.lambda, d.D),
+          {lo, hi, (hi - lo) / 200});
   return design;
 }
 
-Design MzcCrankRocker(const Design& double_rocker) {
+Design MzcCrankRocker(const Design& double_rocker, const std::string& unit_name) {
   if (!double_rocker.ok() || !double_rocker.model) BadInput("design", "double rocker", "no Meyer zur Capellen design: " + double_rocker.message);
+  const std::optional<Loads> units = UnitsOf(unit_name);
   const Cognates c = MzcCognates(double_rocker.model->mechanism());
   Figures f;
   if (c.ok()) {
@@ -225,7 +244,7 @@ Design MzcCrankRocker(const Design& double_rocker) {
     f.Add("AK", c.k_first, "length");
   }
   Design design = Finished(c, f, c.first);
-  if (design.ok()) design.yaml = WriteMechanismYaml(c.first, "Crank-rocker cognate of a Meyer zur Capellen linkage (koppel synth mzc).", {0, 360, 1});
+  if (design.ok()) InUnits(units, design, c.first, "Crank-rocker cognate of a Meyer zur Capellen linkage (koppel synth mzc).");
   return design;
 }
 
@@ -333,7 +352,7 @@ Design SynthesiseFit(const FitSpec& spec) {
   Figures f;
   ParameterValues fitted;
   for (size_t j = 0; j < r.values.size(); ++j) {
-    f.Add(problem.parameters[j].name, r.values[j], "parameter");
+    f.Add(problem.parameters[j].name, r.values[j], FitParameterUnitName(problem, problem.parameters[j].name));
     fitted.emplace_back(problem.parameters[j].name, fmt::format("{:.17g}", r.values[j]));
   }
   design.model = Model::Load(problem.mechanism_path, fitted);
@@ -341,9 +360,10 @@ Design SynthesiseFit(const FitSpec& spec) {
   for (size_t i = 0; i < r.targets.size(); ++i) {
     const FitTargetResult& t = r.targets[i];
     const bool angle = t.unit == FitUnit::kAngle;
-    f.Add(fmt::format("target{}_{}_residual", i + 1, t.name), angle ? RadToDeg(t.residual) : t.residual, angle ? "deg" : "length");
+    f.Add(fmt::format("target{}_{}_residual", i + 1, t.name), angle ? RadToDeg(t.residual) : t.residual, FitUnitName(problem, t.unit));
     if (problem.targets[i].input_free)
-      f.Add(fmt::format("target{}_input", i + 1), angle_input ? RadToDeg(t.input) : t.input, angle_input ? "deg" : "length");
+      f.Add(fmt::format("target{}_input", i + 1), angle_input ? RadToDeg(t.input) : t.input,
+            FitUnitName(problem, angle_input ? FitUnit::kAngle : FitUnit::kLength));
   }
   f.Add("cost", r.cost, "1");
   f.Add("starts_at_best", r.starts_at_best, "1");
@@ -398,11 +418,17 @@ Designs FindCognates(const Model& original, const std::string& point) {
   out.designs.push_back(Finished(c, second, c.second));
   const std::string note = "Roberts–Chebyshev cognate of " + original.path() + " (koppel cognates): traces the same curve of K.\n";
   std::string why;
+  // the cognates' links are not the original's: of its loads only the length unit carries over
+  const Loads& given = ModelAccess::File(original).loads;
+  Loads units;
+  units.metres_per_unit = given.metres_per_unit;
+  units.length_unit_given = given.length_unit_given;
+  units.length_unit_name = given.length_unit_name;
   out.designs[0].yaml = WriteMechanismYaml(c.first, note + "Pivots A0 and C0; its crank A0A1 turns with the original coupler.",
-                                           FirstCognateSweep(c, &why));
+                                           FirstCognateSweep(c, &why), {}, &units);
   if (!why.empty()) out.notes.push_back(why);
   out.designs[1].yaml = WriteMechanismYaml(c.second, note + "Pivots C0 and B0; its crank C0C2 turns with the original crank: same input.",
-                                           ModelAccess::File(original).sweep);
+                                           ModelAccess::File(original).sweep, {}, &units);
   return out;
 }
 

@@ -1,6 +1,7 @@
 // What the page's module leaves out, said where a call would need it: muparser (formulas are
-// evaluated by the page, editor.js), yaml-cpp (the page holds the mechanism as JSON) and
-// SuiteSparse's BTF. The API's Model refers to them; in the page no call reaches them.
+// evaluated by the page, editor.js), yaml-cpp (the page holds the mechanism as JSON; no file text
+// to edit) and SuiteSparse's BTF. The API's Model refers to them; in the page no call reaches them.
+#include "koppel/catalog/document_edit.hpp"
 #include "koppel/catalog/mechanism_file.hpp"
 #include "koppel/catalog/mechanism_source.hpp"
 #include "koppel/core/expression.hpp"
@@ -24,6 +25,8 @@ MechanismSource MechanismSource::Read(const std::string&) { Absent("reading a me
 MechanismSource MechanismSource::Parse(const std::string&, const std::string&) { Absent("reading YAML"); }
 MechanismFile MechanismSource::Evaluate(const Overrides&) const { Absent("evaluating a mechanism file"); }
 MechanismFile ReadMechanismFile(const std::string&, const Overrides&) { Absent("reading a mechanism file"); }
+// the page's models are made from its JSON: they have no file text to edit (Model::ToYaml)
+std::string EditMechanismText(const std::string&, const std::string&, const DocumentChanges&) { Absent("editing a mechanism file"); }
 
 }  // namespace koppel
 

@@ -29,6 +29,7 @@ namespace koppel {
 struct FitProblem {
   std::string path;
   std::string mechanism_path;
+  std::string mechanism_text;        // the mechanism file as the user wrote it (the fitted file edits it)
   MechanismFile base;                // the mechanism with its own parameter values
   std::vector<FitParameter> parameters;
   std::vector<FitTarget> targets;
@@ -37,5 +38,13 @@ struct FitProblem {
 };
 
 FitProblem ReadFitProblem(const std::string& path);
+
+// The unit a report labels a value of `unit` with: "deg", or the mechanism file's length unit
+// ("mm"; "length" when the file names none).
+std::string FitUnitName(const FitProblem& problem, FitUnit unit);
+// A free parameter's unit, read off where its value goes (MeasureOf, parameter_use.hpp): the
+// file's length unit, "deg", or "parameter" for a value of no one measure (an angle inside
+// cos( ), a ratio).
+std::string FitParameterUnitName(const FitProblem& problem, const std::string& name);
 
 }  // namespace koppel

@@ -54,7 +54,9 @@ enum class CardReading { kRead, kSkipped };
 // Reads and checks a mechanism file: `path`, or the catalog entry when `path` is no file but a
 // catalog id (ResolveMechanismName in catalog.hpp; MechanismFile::path is then the entry's
 // file). `overrides` (NAME -> formula, from --set) replace parameter formulas before
-// evaluation; overriding a name that is not a parameter is an error. Throws InputError.
+// evaluation; overriding a name that is not a parameter, or a parameter that no formula of the
+// model reads (ParametersRead, parameter_use.hpp: it would change nothing), is an error. Throws
+// InputError.
 MechanismFile ReadMechanismFile(const std::string& path, const Overrides& overrides = {});
 MechanismFile ParseMechanismText(const std::string& text, const std::string& file_name, const Overrides& overrides = {},
                                  CardReading card = CardReading::kRead);

@@ -17,7 +17,9 @@ struct FitRequest {
   bool yaml = false;           // also write the fitted mechanism file (FitOutcome::yaml)
 };
 
-// One row of the report: quantity, value, unit ("parameter", "deg", "length", "bool", "1").
+// One row of the report: quantity, value, unit: the file's length unit ("mm"; "length" when the
+// file names none), "deg", "bool", "1", or "parameter" for a fitted parameter of no one measure
+// (MeasureOf, koppel/catalog/parameter_use.hpp).
 struct FitQuantity {
   std::string quantity;
   double value = 0;
@@ -42,7 +44,9 @@ struct FitOutcome {
   // its assembly), assembles_over_required_range (else drivable_from / drivable_to), and for each
   // transmission angle output mu_min_<name> over that turn.
   std::vector<FitQuantity> report;
-  std::string yaml;  // request.yaml: the problem's mechanism file with the fitted values (a comment on top)
+  // request.yaml: the problem's mechanism file as its user wrote it, the free parameters' values
+  // replaced by the fitted ones in place (EditMechanismText) and a comment line on top
+  std::string yaml;
 };
 
 // Throws InputError (file, line) for a problem file that does not read.

@@ -278,7 +278,10 @@ class Model {
   // unknown output, parameter or joint, a clearance on a slide, a tolerance that is not positive.
   ToleranceResult Tolerances(const ToleranceRequest& request) const;
 
-  // The mechanism as a mechanism file (numbers with 17 digits) that Parse reads back.
+  // The mechanism as a mechanism file that Parse reads back: the text the model was read from
+  // with every parameter set since (Load's `set`, With) rewritten in place, every other byte as
+  // the user wrote it (EditMechanismText, koppel/catalog/document_edit.hpp); a mechanism made in
+  // code (the editor page's) written anew, numbers with 17 digits.
   std::string ToYaml() const;
 
  private:

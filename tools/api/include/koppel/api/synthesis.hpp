@@ -25,7 +25,7 @@ namespace koppel {
 struct DesignFigure {
   std::string name;  // the CLI's summary names: "l1", "mu_min", "beta", ...
   double value = 0;
-  std::string unit;  // "deg", "length", "1"
+  std::string unit;  // "deg", "1", "length" or the unit the request names ("mm")
 };
 
 // A table of numbers a design comes with (function generation: its structural error curve).
@@ -53,13 +53,16 @@ struct Design {
 // phi0 the crank's turn from the folded to the extended dead centre, psi0 the rocker's swing
 // meanwhile [deg]; beta [deg] or lambda = l1/l2 choose the design of the family (neither: the one
 // with the largest smallest transmission angle); frame = A0B0; the crank runs counter-clockwise
-// (clockwise: the mirror image). Model: input phi, outputs psi and mu.
+// (clockwise: the mirror image). Model: input phi, outputs psi and mu. `units` names the length
+// unit the yaml says and the length figures are labelled with; InputError listing the known
+// units for another name.
 struct CrankRockerSpec {
   double phi0 = 0, psi0 = 0;
   bool same_sense = true;  // the rocker turns the crank's way from folded to extended
   std::optional<double> beta, lambda;
   double frame = 1;
   bool clockwise = false;
+  std::string units;  // the design's length unit (m, dm, cm, mm, um, km, in, ft: length_units.hpp); empty: none
 };
 Design SynthesiseCrankRocker(const CrankRockerSpec& spec);
 
@@ -69,6 +72,7 @@ Design SynthesiseCrankRocker(const CrankRockerSpec& spec);
 struct SliderCrankSpec {
   double phi0 = 0, stroke = 0;
   std::optional<double> offset, beta;
+  std::string units;  // as CrankRockerSpec::units
 };
 Design SynthesiseSliderCrank(const SliderCrankSpec& spec);
 
@@ -81,12 +85,13 @@ Design SynthesiseSliderCrank(const SliderCrankSpec& spec);
 struct MzcSpec {
   std::optional<double> lambda, kappa;
   double diameter = 1;
+  std::string units;  // as CrankRockerSpec::units
 };
 Design SynthesiseMzc(const MzcSpec& spec);
 // The crank-rocker of a Meyer zur Capellen double rocker (SynthesiseMzc's design): its Roberts
 // cognate about K whose crank turns with the double rocker's coupler (seed 003). Figures l1 (the
 // crank), l2, l3, l4 (the frame), AK [length]. InputError for a design that is not ok.
-Design MzcCrankRocker(const Design& double_rocker);
+Design MzcCrankRocker(const Design& double_rocker, const std::string& units = "");  // units: as MzcSpec::units
 
 // Function generation (koppel synth function): a four-bar (rocker angle) or slider-crank
 // (slider displacement) whose output follows y = f(x) while the crank follows x, mapped linearly

@@ -194,7 +194,9 @@ def write_pictures(koppel, stage):
 def write_config(stage, commands_nav):
     lines = ["site_name: koppel", "site_description: " + json_str("planar linkages: analysis, synthesis and a catalog"),
              "docs_dir: docs", "use_directory_urls: false", "strict: true",
+             # no web fonts (offline) and no search: its web worker cannot start from file://
              "theme:", "  name: material", "  font: false", "  features: [navigation.sections]",
+             "plugins: []",
              "markdown_extensions: [toc, tables, fenced_code, admonition]",
              "extra_css: [koppel.css]", "nav:"]
     for title, file in NAV:

@@ -95,7 +95,7 @@ def command_page(koppel, words):
     text = run([koppel] + words + ["--help"])
     title = "koppel " + " ".join(words)
     page = [f"# `{title}`", "",
-            f"Generated from `{title} --help` of koppel {run([koppel, '--version']).strip()}.", "",
+            f"Generated from `{title} --help` of {run([koppel, '--version']).strip()} when this site was built.", "",
             "<pre class=\"help\"><code>" + html.escape(text.rstrip("\n")) + "</code></pre>", ""]
     return text, "\n".join(page)
 
@@ -138,22 +138,19 @@ def signature(node, source):
 
 
 def describe(node, source, level, out):
+    """A class as its stub declares it (members and method signatures), a function as its
+    signature, each with its docstring where it has one."""
     doc = ast.get_docstring(node) or ""
     if isinstance(node, ast.ClassDef):
         out += [f"{'#' * level} class `{node.name}`", ""]
         if doc:
             out += [doc, ""]
-        for child in node.body:
-            if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef)) and (
-                    not child.name.startswith("_") or child.name in ("__init__", "__getitem__", "__len__")):
-                describe(child, source, level + 1, out)
-            elif isinstance(child, ast.AnnAssign) and isinstance(child.target, ast.Name):
-                out += [f"- `{child.target.id}: {ast.get_source_segment(source, child.annotation)}`"]
-        out.append("")
-    elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
-        decorators = [ast.get_source_segment(source, d) for d in node.decorator_list]
-        kind = "property" if "property" in decorators else "function"
-        out += [f"{'#' * level} {kind} `{node.name}`", "", "```python", signature(node, source), "```", ""]
+        out += ["```python", ast.get_source_segment(source, node), "```", ""]
+        for child in node.body:  # methods with a docstring of their own (the Python modules')
+            if isinstance(child, ast.FunctionDef) and not child.name.startswith("_") and ast.get_docstring(child):
+                out += [f"`{node.name}.{signature(child, source)}`: {ast.get_docstring(child)}", ""]
+    elif isinstance(node, ast.FunctionDef):
+        out += [f"{'#' * level} `{node.name}`", "", "```python", signature(node, source), "```", ""]
         if doc:
             out += [doc, ""]
 
@@ -163,7 +160,7 @@ def write_python_reference(stage):
     package = os.path.join(SOURCE, "tools", "python", "koppel")
     out = ["# Python reference", "",
            "Generated when this site was built from the module's type stub "
-           "(`koppel/_koppel.pyi`, the docstrings of the compiled module) and its Python modules "
+           "(`koppel/_koppel.pyi`: the compiled part's classes, members and signatures) and its Python modules "
            "`koppel.catalog` and `koppel.synth`. The [C++ and Python API](library.md) page shows "
            "how to build, install and use it.", ""]
     for module, file in (("koppel", "_koppel.pyi"), ("koppel.catalog", "catalog.py"), ("koppel.synth", "synth.py")):

@@ -24,6 +24,10 @@ Which lines are examples (so that none can be left out by accident):
   (`<!-- examples: file PATH, saved as NAME -->`, or `<!-- examples: saved as NAME -->` alone)
   the block is the file a reader saves as NAME: it is written to NAME in the temporary directory
   before the examples run (blocks saved under one NAME must agree).
+- A ```python block preceded by `<!-- examples: python -->` runs as a script in the temporary
+  directory after the command lines (it must exit 0 and print something) where `import koppel`
+  works (ctest puts the build's module on PYTHONPATH when it is built); elsewhere the test says
+  that it left them out.
 
 Each example runs under `bash -o pipefail` in one temporary directory in the order shown
 (README's first, then docs/' pages', then --help's: an example may read what an earlier one
@@ -61,6 +65,7 @@ EXAMPLE_TIMEOUT_S = 600
 COMMAND_START = re.compile(r"^(?:\$ )?(?:koppel|build/tools/koppel) ")
 NOT_RUN = re.compile(r"<!--\s*examples:\s*not run,\s*(\S.*?)\s*-->")
 SHOWN_FILE = re.compile(r"<!--\s*examples:\s*file\s+([^\s,]+)[^>]*-->")
+PYTHON_BLOCK = re.compile(r"<!--\s*examples:\s*(python)\s*-->")
 SAVED_FILE = re.compile(r"<!--\s*examples:[^>]*\bsaved as\s+([^\s,]+)[^>]*-->")
 EXIT_COMMENT = re.compile(r"^exits? (\d+)\b")
 HELP_EXAMPLE = re.compile(r"Examples?(?: \(exit (\d+)\))?: (koppel .*)$")
@@ -335,6 +340,26 @@ class Examples(unittest.TestCase):
         for example in self.readme + self.from_help:
             with self.subTest(example=repr(example)):
                 self.run_example(example)
+
+    def test_python_examples_run(self):
+        blocks = marked_files(PYTHON_BLOCK)
+        self.assertTrue(blocks, "no page marks a Python example")
+        probe = subprocess.run([sys.executable, "-c", "import koppel"], cwd=self.dir.name, env=self.env,
+                               capture_output=True, text=True)
+        if probe.returncode != 0:
+            for where, _, _ in blocks:
+                print(f"not run: the Python example of {where} (import koppel: "
+                      f"{probe.stderr.strip().splitlines()[-1] if probe.stderr.strip() else 'failed'})", file=sys.stderr)
+            self.skipTest("no koppel module for this Python")
+        for where, _, text in blocks:
+            with self.subTest(example=where):
+                started = time.monotonic()
+                r = subprocess.run([sys.executable, "-c", text], cwd=self.dir.name, env=self.env,
+                                   capture_output=True, text=True, timeout=EXAMPLE_TIMEOUT_S)
+                print(f"{time.monotonic() - started:6.1f} s  exit {r.returncode}  {where}: python", file=sys.stderr)
+                context = f"\n{where}\nstderr:\n{r.stderr[-3000:]}\nstdout:\n{r.stdout[:2000]}"
+                self.assertEqual(r.returncode, 0, "exit code" + context)
+                self.assertTrue(r.stdout.strip(), "prints nothing" + context)
 
     def run_example(self, example):
         root = self.dir.name

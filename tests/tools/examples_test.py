@@ -128,7 +128,8 @@ def readme_examples():
 
 
 def document_examples(document):
-    lines = open(os.path.join(SOURCE, document), encoding="utf-8").read().split("\n")
+    with open(os.path.join(SOURCE, document), encoding="utf-8") as f:
+        lines = f.read().split("\n")
     examples, skipped, block, fenced, blank_before, not_run = [], [], [], False, True, None
 
     def flush(block, not_run):
@@ -214,7 +215,8 @@ def marked_files(pattern):
     """(document:marker line, PATH or NAME, the text of the ``` block after a marker matching pattern)."""
     shown = []
     for document in documents():
-        lines = open(os.path.join(SOURCE, document), encoding="utf-8").read().split("\n")
+        with open(os.path.join(SOURCE, document), encoding="utf-8") as f:
+            lines = f.read().split("\n")
         for number, line in enumerate(lines):
             marker = pattern.search(line)
             if not marker:

@@ -12,7 +12,7 @@
 #   nor muparser to analyze a catalog entry;
 # - with the Python module (PYTHON_DIR, relative to the prefix; empty: not built)
 #   tests/packaging/python/stroke.py does the same against the installed module;
-# - the C++ and Python examples of README.md's "Using koppel as a library" run as written.
+# - the C++ and Python examples of docs/library.md ("C++ and Python API") run as written.
 set -euo pipefail
 build=$1 source=$2 work=$3 python=$4 python_dir=${5:-}
 prefix=$work/prefix
@@ -96,31 +96,29 @@ echo "koppel: $(wc -l < "$work/koppel_ldd.txt") libraries loaded at start-up"
 grep -q 'libstdc++' "$work/analyze_libs.txt" || fail "LD_DEBUG=files traced no library"
 if grep -Ei 'muparser|gomp' "$work/analyze_libs.txt"; then fail "koppel analyze crank-rocker maps muparser"; fi
 
-# README.md's examples, as written
-readme_block() {  # LANGUAGE: the first fenced block of that language in the library section
-  awk -v lang="$1" '/^## Using koppel as a library/ {in_section = 1; next}
-                    in_section && /^## / {exit}
-                    in_section && $0 == "```" lang {inside = 1; next}
+# docs/library.md's examples, as written
+readme_block() {  # LANGUAGE: the first fenced block of that language on the page
+  awk -v lang="$1" '$0 == "```" lang {inside = 1; next}
                     inside && /^```/ {exit}
-                    inside {print}' "$source/README.md"
+                    inside {print}' "$source/docs/library.md"
 }
 mkdir -p "$work/readme_cpp"
 readme_block cpp > "$work/readme_cpp/example.cpp"
-[ -s "$work/readme_cpp/example.cpp" ] || fail "README.md has no C++ example in 'Using koppel as a library'"
+[ -s "$work/readme_cpp/example.cpp" ] || fail "docs/library.md has no C++ example"
 readme_block cmake > "$work/readme_cpp/CMakeLists.txt"
-[ -s "$work/readme_cpp/CMakeLists.txt" ] || fail "README.md has no CMakeLists.txt in 'Using koppel as a library'"
+[ -s "$work/readme_cpp/CMakeLists.txt" ] || fail "docs/library.md has no CMakeLists.txt"
 cmake -S "$work/readme_cpp" -B "$work/readme_cpp/build" -DCMAKE_PREFIX_PATH="$prefix" > "$work/readme_cpp.log"
-cmake --build "$work/readme_cpp/build" >> "$work/readme_cpp.log" || { cat "$work/readme_cpp.log"; fail "building README's C++ example"; }
-(cd "$source" && "$work/readme_cpp/build/example") > "$work/readme_cpp.out" || fail "README's C++ example"
-echo "README C++ example:" && cat "$work/readme_cpp.out"
+cmake --build "$work/readme_cpp/build" >> "$work/readme_cpp.log" || { cat "$work/readme_cpp.log"; fail "building docs/library.md's C++ example"; }
+(cd "$source" && "$work/readme_cpp/build/example") > "$work/readme_cpp.out" || fail "docs/library.md's C++ example"
+echo "docs/library.md C++ example:" && cat "$work/readme_cpp.out"
 
 if [ -n "$python_dir" ]; then
   export PYTHONPATH="$prefix/$python_dir"
   (cd "$work" && KOPPEL_PREFIX="$prefix" "$python" "$source/tests/packaging/python/stroke.py") || fail "tests/packaging/python/stroke.py"
   readme_block python > "$work/readme_example.py"
-  [ -s "$work/readme_example.py" ] || fail "README.md has no Python example in 'Using koppel as a library'"
-  (cd "$source" && "$python" "$work/readme_example.py") > "$work/readme_python.out" || fail "README's Python example"
-  echo "README Python example:" && cat "$work/readme_python.out"
+  [ -s "$work/readme_example.py" ] || fail "docs/library.md has no Python example"
+  (cd "$source" && "$python" "$work/readme_example.py") > "$work/readme_python.out" || fail "docs/library.md's Python example"
+  echo "docs/library.md Python example:" && cat "$work/readme_python.out"
 fi
 # an installed tree moved elsewhere still finds its libraries and its catalog
 mv "$prefix" "$work/moved" && installed_catalog "$work/moved"

@@ -1,9 +1,10 @@
-"""Every example koppel shows runs: README.md's command lines and every `--help` example.
+"""Every example koppel shows runs: the command lines of README.md and docs/*.md, and every `--help` example.
 
     python3 examples_test.py KOPPEL_EXECUTABLE SOURCE_DIR [--list]
 
 Which lines are examples (so that none can be left out by accident):
-- README.md: every line of an indented code block (outside ``` fences) that starts with
+- README.md and the pages of docs/ (in the order of the site's navigation, docs/build.py's NAV;
+  a page of docs/ missing there fails the test): every line of an indented code block (outside ``` fences) that starts with
   `koppel `, `build/tools/koppel ` or `$ ` followed by one of those. In a block that has `$ `
   lines, only those are commands; the lines after one, up to the next, are what it prints: lines
   starting `koppel ...:` are its stderr (not compared), the others its stdout, compared in order,
@@ -16,20 +17,29 @@ Which lines are examples (so that none can be left out by accident):
 - A comment ` # ...` ends a command. An example meant to show a refusal says so: `# exit N` as
   the comment's start in README, `Example (exit N): koppel ...` in `--help`; every other example
   must exit 0.
-- A README code block preceded by `<!-- examples: not run, REASON -->` is left out (a cluster's
+- A code block preceded by `<!-- examples: not run, REASON -->` is left out (a cluster's
   shared file system); the test prints those it leaves out, and REASON is required.
 - A ``` block preceded by `<!-- examples: file PATH -->` shows a file that ships: it must be
-  PATH's text, so the example that reads PATH runs what README shows.
+  PATH's text, so the example that reads PATH runs what README shows. With `saved as NAME`
+  (`<!-- examples: file PATH, saved as NAME -->`, or `<!-- examples: saved as NAME -->` alone)
+  the block is the file a reader saves as NAME: it is written to NAME in the temporary directory
+  before the examples run (blocks saved under one NAME must agree).
+- A ```python block preceded by `<!-- examples: python -->` runs as a script in the temporary
+  directory after the command lines (it must exit 0 and print something) where `import koppel`
+  works (ctest puts the build's module on PYTHONPATH when it is built); elsewhere the test says
+  that it left them out.
 
 Each example runs under `bash -o pipefail` in one temporary directory in the order shown
-(README's first, then --help's: an example may read what an earlier one wrote, atlas.bin,
-chart.csv, as a reader following them would), where `catalog/`, `tests/` and `tools/` of the
+(README's first, then docs/' pages', then --help's: an example may read what an earlier one
+wrote, atlas.bin, chart.csv, as a reader following them would), where `catalog/`, `docs/`,
+`tests/` and `tools/` of the
 source tree, `build/tools/koppel` and `koppel` on PATH resolve. It must print something meaningful:
 no "internal error"; every file it names with -o (or --error-curve) exists and is not empty;
 without -o a non-empty stdout; a CSV on stdout has data rows with a non-zero number beyond its
 first column and `singular` (a table of zeros, like a torque without masses, is no example);
 `--format json` output parses.
 """
+import importlib.util
 import json
 import math
 import os
@@ -54,7 +64,9 @@ EXAMPLE_TIMEOUT_S = 600
 
 COMMAND_START = re.compile(r"^(?:\$ )?(?:koppel|build/tools/koppel) ")
 NOT_RUN = re.compile(r"<!--\s*examples:\s*not run,\s*(\S.*?)\s*-->")
-SHOWN_FILE = re.compile(r"<!--\s*examples:\s*file\s+(\S+)\s*-->")
+SHOWN_FILE = re.compile(r"<!--\s*examples:\s*file\s+([^\s,]+)[^>]*-->")
+PYTHON_BLOCK = re.compile(r"<!--\s*examples:\s*(python)\s*-->")
+SAVED_FILE = re.compile(r"<!--\s*examples:[^>]*\bsaved as\s+([^\s,]+)[^>]*-->")
 EXIT_COMMENT = re.compile(r"^exits? (\d+)\b")
 HELP_EXAMPLE = re.compile(r"Examples?(?: \(exit (\d+)\))?: (koppel .*)$")
 PLACEHOLDER = re.compile(r"\b[A-Z][A-Z0-9_]{1,}\b|\.\.\.")
@@ -94,8 +106,30 @@ def expand_synopsis(command):
     return re.sub(r"  +", " ", command).strip()
 
 
+def documents():
+    """README.md, then the hand-written pages of docs/ in the order of the site's navigation."""
+    spec = importlib.util.spec_from_file_location("docs_build", os.path.join(SOURCE, "docs", "build.py"))
+    build = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(build)
+    pages = [f"docs/{file}" for _, file in build.NAV if file and os.path.exists(os.path.join(SOURCE, "docs", file))]
+    unlisted = sorted(set(f"docs/{f}" for f in os.listdir(os.path.join(SOURCE, "docs")) if f.endswith(".md")) - set(pages))
+    if unlisted:
+        raise SystemExit(f"examples_test.py: {', '.join(unlisted)} not in docs/build.py's NAV")
+    return ["README.md"] + pages
+
+
 def readme_examples():
-    lines = open(os.path.join(SOURCE, "README.md"), encoding="utf-8").read().split("\n")
+    examples, skipped = [], []
+    for document in documents():
+        found, left_out = document_examples(document)
+        examples += found
+        skipped += left_out
+    return examples, skipped
+
+
+def document_examples(document):
+    with open(os.path.join(SOURCE, document), encoding="utf-8") as f:
+        lines = f.read().split("\n")
     examples, skipped, block, fenced, blank_before, not_run = [], [], [], False, True, None
 
     def flush(block, not_run):
@@ -108,7 +142,7 @@ def readme_examples():
                 continue
             command, comment = split_comment(text[2:] if text.startswith("$ ") else text)
             exit_match = EXIT_COMMENT.match(comment)
-            current = Example(f"README.md:{number}", expand_synopsis(command),
+            current = Example(f"{document}:{number}", expand_synopsis(command),
                               int(exit_match.group(1)) if exit_match else 0)
             (skipped if not_run else examples).append((current, not_run) if not_run else current)
             if not has_prompt:
@@ -177,18 +211,33 @@ def output_targets(command):
     return [words[i + 1] for i, w in enumerate(words[:-1]) if w in OUTPUT_FLAGS]
 
 
-def shown_files():
-    """(marker line, PATH, the text of the ``` block after `<!-- examples: file PATH -->`)."""
-    lines = open(os.path.join(SOURCE, "README.md"), encoding="utf-8").read().split("\n")
+def marked_files(pattern):
+    """(document:marker line, PATH or NAME, the text of the ``` block after a marker matching pattern)."""
     shown = []
-    for number, line in enumerate(lines):
-        marker = SHOWN_FILE.search(line)
-        if not marker:
-            continue
-        fence = next(i for i in range(number + 1, len(lines)) if lines[i].startswith("```"))
-        close = next(i for i in range(fence + 1, len(lines)) if lines[i].startswith("```"))
-        shown.append((number + 1, marker.group(1), "\n".join(lines[fence + 1:close]) + "\n"))
+    for document in documents():
+        with open(os.path.join(SOURCE, document), encoding="utf-8") as f:
+            lines = f.read().split("\n")
+        for number, line in enumerate(lines):
+            marker = pattern.search(line)
+            if not marker:
+                continue
+            fence = next(i for i in range(number + 1, len(lines)) if lines[i].startswith("```"))
+            close = next(i for i in range(fence + 1, len(lines)) if lines[i].startswith("```"))
+            shown.append((f"{document}:{number + 1}", marker.group(1), "\n".join(lines[fence + 1:close]) + "\n"))
     return shown
+
+
+def shown_files():
+    return marked_files(SHOWN_FILE)
+
+
+def saved_files():
+    """NAME -> text of every block marked `saved as NAME`; blocks saved under one name agree."""
+    saved = {}
+    for where, name, text in marked_files(SAVED_FILE):
+        if saved.setdefault(name, (where, text))[1] != text:
+            raise SystemExit(f"examples_test.py: {where} saves {name} otherwise than {saved[name][0]}")
+    return {name: text for name, (_, text) in saved.items()}
 
 
 NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$")
@@ -221,13 +270,13 @@ def transcript_mismatch(transcript, stdout):
             while position < len(actual) and not line_matches(line, actual[position]):
                 position += 1
         if skipping and position >= len(actual):
-            return f"README shows\n    {line}\nafter '...'; koppel prints no such line"
+            return f"the page shows\n    {line}\nafter '...'; koppel prints no such line"
         if position >= len(actual) or not line_matches(line, actual[position]):
             where = actual[position] if position < len(actual) else "(end of output)"
-            return f"README shows\n    {line}\nkoppel prints\n    {where}"
+            return f"the page shows\n    {line}\nkoppel prints\n    {where}"
         position, skipping = position + 1, False
     if not skipping and position != len(actual):
-        return f"koppel prints more than README shows (no '...'): {actual[position]}"
+        return f"koppel prints more than the page shows (no '...'): {actual[position]}"
     return None
 
 
@@ -254,8 +303,11 @@ class Examples(unittest.TestCase):
         cls.from_help = help_examples(cls.help)
         cls.dir = tempfile.TemporaryDirectory(prefix="koppel-examples-")
         root = cls.dir.name
-        for name in ("catalog", "tests", "tools"):
+        for name in ("catalog", "docs", "tests", "tools"):
             os.symlink(os.path.join(SOURCE, name), os.path.join(root, name))
+        for name, text in saved_files().items():  # the files a reader saves from a page
+            with open(os.path.join(root, name), "w", encoding="utf-8") as f:
+                f.write(text)
         os.makedirs(os.path.join(root, "build", "tools"))
         os.symlink(KOPPEL, os.path.join(root, "build", "tools", "koppel"))
         os.makedirs(os.path.join(root, ".bin"))
@@ -272,21 +324,44 @@ class Examples(unittest.TestCase):
             self.assertIn(name, shown, f"`koppel {name} --help` shows no example")
 
     def test_readme_has_examples(self):
-        # the extraction itself could rot: README's "Using it" block alone holds some forty
-        self.assertGreater(len(self.readme), 40)
+        # the extraction itself could rot: README's tour holds some ten, docs/usage.md's overview
+        # alone some forty
+        self.assertGreaterEqual(sum(e.origin.startswith("README.md:") for e in self.readme), 10)
+        self.assertGreaterEqual(sum(e.origin.startswith("docs/usage.md:") for e in self.readme), 40)
         for example, reason in self.skipped:
             print(f"not run: {example} ({reason})", file=sys.stderr)
 
     def test_shown_files_are_the_files(self):
-        for number, path, text in shown_files():
+        self.assertTrue(saved_files(), "no page saves a file (the tour's fourbar.yaml)")
+        for where, path, text in shown_files():
             with self.subTest(file=path):
                 with open(os.path.join(SOURCE, path), encoding="utf-8") as f:
-                    self.assertEqual(text, f.read(), f"README.md:{number} shows {path} otherwise than it ships")
+                    self.assertEqual(text, f.read(), f"{where} shows {path} otherwise than it ships")
 
     def test_examples_run(self):
         for example in self.readme + self.from_help:
             with self.subTest(example=repr(example)):
                 self.run_example(example)
+
+    def test_python_examples_run(self):
+        blocks = marked_files(PYTHON_BLOCK)
+        self.assertTrue(blocks, "no page marks a Python example")
+        probe = subprocess.run([sys.executable, "-c", "import koppel"], cwd=self.dir.name, env=self.env,
+                               capture_output=True, text=True)
+        if probe.returncode != 0:
+            for where, _, _ in blocks:
+                print(f"not run: the Python example of {where} (import koppel: "
+                      f"{probe.stderr.strip().splitlines()[-1] if probe.stderr.strip() else 'failed'})", file=sys.stderr)
+            self.skipTest("no koppel module for this Python")
+        for where, _, text in blocks:
+            with self.subTest(example=where):
+                started = time.monotonic()
+                r = subprocess.run([sys.executable, "-c", text], cwd=self.dir.name, env=self.env,
+                                   capture_output=True, text=True, timeout=EXAMPLE_TIMEOUT_S)
+                print(f"{time.monotonic() - started:6.1f} s  exit {r.returncode}  {where}: python", file=sys.stderr)
+                context = f"\n{where}\nstderr:\n{r.stderr[-3000:]}\nstdout:\n{r.stdout[:2000]}"
+                self.assertEqual(r.returncode, 0, "exit code" + context)
+                self.assertTrue(r.stdout.strip(), "prints nothing" + context)
 
     def run_example(self, example):
         root = self.dir.name

@@ -75,10 +75,10 @@ constexpr int kRetimings = 4;
 // A polished design within this of the points (times the points' scale) fits them exactly: the
 // kernel's Newton tolerance is 1e-13 L.
 constexpr double kExactFit = 1e-12;
-// With a design space, the candidates inside it are looked for among this many times the
-// candidates wanted, nearest first, at most kMaxSpacePool (laying 20 000 curves is about 3 s on
-// two cores): the ellipse of the literature's test problems has its first linkage within
-// lengths [0, 80] at about the 2 000th nearest of 200 000 curves.
+// With a design space, the candidates inside it are looked for among the kMaxSpacePool nearest
+// curves, or this many times the candidates wanted when that is more (laying 20 000 curves is
+// about 3 s on two cores): the nearest 2 000 of 200 000 curves held no linkage of the
+// literature's ellipse within lengths [0, 80] that stayed inside once pre-polished.
 constexpr int kSpacePoolFactor = 20;
 constexpr int kMaxSpacePool = 20'000;
 
@@ -245,20 +245,27 @@ std::optional<Placed> Place(const AtlasIndex& atlas, const Candidate& c, const P
 }
 
 // The final polish by the fit through the real mechanism, from the pre-polished start.
-std::optional<PathLinkage> Polish(const Placed& placed, const Candidate& c, const AtlasEntry& entry, const PathRequest& request, double scale) {
-  const Placement placement = placed.placement;
+// The fit's unknowns from the pre-polished start: the link lengths kept positive, and within the
+// design space's bounds where one is given (the start lies inside them).
+std::vector<FitParameter> PolishParameters(const Placed& placed, const PathRequest& request, double scale) {
   std::vector<FitParameter> parameters;
   const char* names[] = {"A0_x", "A0_y", "B0_x", "B0_y", "crank", "coupler", "rocker", "K_along", "K_left"};
   const std::vector<std::pair<double, double>> bounds = UnknownBounds(request.space);
   for (int j = 0; j < 9; ++j) {
     FitParameter p{names[j], placed.unknowns[j]};
-    if (j >= 4 && j <= 6) p.lower = std::min(1e-6 * scale, p.start);  // link lengths stay positive
-    if (static_cast<size_t>(j) < bounds.size()) {  // the design space's, where one is given (the start lies inside)
+    if (j >= 4 && j <= 6) p.lower = std::min(1e-6 * scale, p.start);
+    if (static_cast<size_t>(j) < bounds.size()) {
       p.lower = std::max(p.lower, bounds[j].first);
       p.upper = std::min(p.upper, bounds[j].second);
     }
     parameters.push_back(p);
   }
+  return parameters;
+}
+
+std::optional<PathLinkage> Polish(const Placed& placed, const Candidate& c, const AtlasEntry& entry, const PathRequest& request, double scale) {
+  const Placement placement = placed.placement;
+  const std::vector<FitParameter> parameters = PolishParameters(placed, request, scale);
   std::vector<FitTarget> targets;
   for (size_t i = 0; i < request.points.size(); ++i) {
     FitTarget t;
@@ -432,6 +439,56 @@ std::vector<Candidate> NearestAtlasCandidates(const AtlasIndex& atlas, const Pat
   return candidates;
 }
 
+// The `wanted` nearest curves whose linkage, laid onto the points, lies inside the design space,
+// looked for among many more (laying a curve is a trace, some 50 us; pre-polishing one is 14 ms);
+// *broke: the constraint the nearest one outside broke.
+std::vector<Candidate> CandidatesInSpace(const AtlasIndex& atlas, const PathRequest& request, const std::vector<Reading>& readings,
+                                         int wanted, std::string* broke) {
+  const std::vector<Candidate> pool = NearestAtlasCandidates(atlas, request, readings, std::max(kMaxSpacePool, kSpacePoolFactor * wanted));
+  std::vector<std::string> verdicts(pool.size());
+  OnEveryCore(pool.size(), request.threads, [&](size_t i) { verdicts[i] = SpaceViolation(atlas, pool[i], request.space); });
+  std::vector<Candidate> inside;
+  for (size_t i = 0; i < pool.size() && inside.size() < static_cast<size_t>(wanted); ++i) {
+    if (verdicts[i].empty()) inside.push_back(pool[i]);
+    else if (broke->empty() && verdicts[i] != "no curve") *broke = verdicts[i];
+  }
+  return inside;
+}
+
+// The pre-polished candidates to polish, best first. One outside the design space (its frame, its
+// ratio or its input: the bounds kept the rest) is not polished; the constraint the best of those
+// broke goes to *broke, should nothing be left. Exact fits in closed form (errors at roundoff)
+// keep the atlas's order, nearest first: their errors' order is roundoff, which any change of
+// the kernel's arithmetic reshuffles.
+std::vector<size_t> PolishOrder(const std::vector<std::optional<Placed>>& placed, const DesignSpace& space, double scale, std::string* broke) {
+  std::vector<size_t> order;
+  double best_broken = 0;
+  for (size_t i = 0; i < placed.size(); ++i) {
+    if (!placed[i]) continue;
+    const std::vector<double>& v = placed[i]->unknowns;
+    const std::string violation = space.Violation({{v[0], v[1]}, {v[2], v[3]}, v[4], v[5], v[6]});
+    if (violation.empty()) {
+      order.push_back(i);
+    } else if (broke->empty() || placed[i]->error < best_broken) {
+      *broke = violation;
+      best_broken = placed[i]->error;
+    }
+  }
+  const auto rank = [&](size_t i) { return placed[i]->error < kExactFit * scale ? 0.0 : placed[i]->error; };
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return rank(a) < rank(b); });
+  return order;
+}
+
+// The polish may carry a linkage out of the design space: dropped, never returned.
+void DropOutsideSpace(const DesignSpace& space, std::vector<PathLinkage>* polished, std::string* broke) {
+  polished->erase(std::remove_if(polished->begin(), polished->end(), [&](const PathLinkage& l) {
+                    const std::string violation = space.Violation({l.geometry.a0, l.geometry.b0, l.crank, l.coupler, l.rocker});
+                    if (!violation.empty() && broke->empty()) *broke = violation + " (after the polish)";
+                    return !violation.empty();
+                  }),
+                  polished->end());
+}
+
 }  // namespace
 
 PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
@@ -448,53 +505,19 @@ PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
     return result;
   }
   const int wanted = request.candidates > 0 ? request.candidates : std::max(100, 10 * request.top);
-  std::vector<Candidate> candidates;
   std::string broke;  // the constraint the nearest candidate outside the design space broke
-  if (request.space.Empty()) {
-    candidates = NearestAtlasCandidates(atlas, request, readings, wanted);
-  } else {
-    // the nearest curves whose linkage, laid onto the points, lies inside the space: looked for
-    // among many more (laying a curve is a trace, some 50 us; pre-polishing one is 14 ms)
-    const std::vector<Candidate> pool = NearestAtlasCandidates(atlas, request, readings, std::max(kMaxSpacePool, kSpacePoolFactor * wanted));
-    std::vector<std::string> verdicts(pool.size());
-    OnEveryCore(pool.size(), request.threads, [&](size_t i) { verdicts[i] = SpaceViolation(atlas, pool[i], request.space); });
-    for (size_t i = 0; i < pool.size() && candidates.size() < static_cast<size_t>(wanted); ++i) {
-      if (verdicts[i].empty()) candidates.push_back(pool[i]);
-      else if (broke.empty() && verdicts[i] != "no curve") broke = verdicts[i];
-    }
-    if (candidates.empty()) {
-      result.status = PathStatus::kNoCandidate;
-      result.message = fmt::format("none of the {} nearest atlas curves gives a linkage inside the design space; the nearest broke {}",
-                                   pool.size(), broke.empty() ? "nothing (no curve could be laid)" : broke);
-      return result;
-    }
-  }
-  if (candidates.empty()) {
+  const std::vector<Candidate> candidates = request.space.Empty() ? NearestAtlasCandidates(atlas, request, readings, wanted)
+                                                                  : CandidatesInSpace(atlas, request, readings, wanted, &broke);
+  if (candidates.empty() && !request.space.Empty()) {
     result.status = PathStatus::kNoCandidate;
-    result.message = request.open ? "the atlas holds no open curves (rocker arcs)" : "the atlas holds no closed curves";
+    result.message = fmt::format("none of the {} nearest atlas curves gives a linkage inside the design space; the nearest broke {}",
+                                 std::max(kMaxSpacePool, kSpacePoolFactor * wanted), broke.empty() ? "nothing (no curve could be laid)" : broke);
     return result;
   }
   // every candidate pre-polished in closed form; the best `top` polished through the mechanism
-  double best_broken = 0;
   std::vector<std::optional<Placed>> placed(candidates.size());
   OnEveryCore(candidates.size(), request.threads, [&](size_t i) { placed[i] = Place(atlas, candidates[i], request); });
-  // a candidate outside the design space is not polished (the polish moves it little); the
-  // first constraint the best of them broke is kept to say why, should nothing be left
-  std::vector<size_t> order;
-  for (size_t i = 0; i < placed.size(); ++i) {
-    if (!placed[i]) continue;
-    const std::vector<double>& v = placed[i]->unknowns;
-    const std::string violation = request.space.Violation({{v[0], v[1]}, {v[2], v[3]}, v[4], v[5], v[6]});
-    if (violation.empty()) order.push_back(i);
-    else if (broke.empty() || placed[i]->error < best_broken) {
-      broke = violation;
-      best_broken = placed[i]->error;
-    }
-  }
-  // exact fits in closed form (errors at roundoff) keep the atlas's order, nearest first: their
-  // errors' order is roundoff, which any change of the kernel's arithmetic reshuffles
-  const auto rank_placed = [&](size_t i) { return placed[i]->error < kExactFit * scale ? 0.0 : placed[i]->error; };
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return rank_placed(a) < rank_placed(b); });
+  const std::vector<size_t> order = PolishOrder(placed, request.space, scale, &broke);
   // the best `top` polished through the mechanism; where some repeat a better design, the next
   // ones too (twice as many as are missing, to need few rounds), until `top` distinct designs
   const size_t top = static_cast<size_t>(request.top);
@@ -503,13 +526,7 @@ PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
     const size_t count = std::min(order.size() - next, next == 0 ? top : 2 * missing);
     PolishBatch(atlas, request, scale, candidates, placed, order, next, count, &polished);
     next += count;
-    // the polish may carry a linkage out of the space: dropped, never returned
-    polished.erase(std::remove_if(polished.begin(), polished.end(), [&](const PathLinkage& l) {
-                     const std::string violation = request.space.Violation({l.geometry.a0, l.geometry.b0, l.crank, l.coupler, l.rocker});
-                     if (!violation.empty() && broke.empty()) broke = violation + " (after the polish)";
-                     return !violation.empty();
-                   }),
-                   polished.end());
+    DropOutsideSpace(request.space, &polished, &broke);
     // exact fits (errors at roundoff) keep the order of their atlas candidates: their errors'
     // order is roundoff, which any change of the kernel's arithmetic reshuffles
     const auto rank_error = [&](const PathLinkage& l) { return l.error < kExactFit * scale ? 0.0 : l.error; };

@@ -31,6 +31,8 @@ TEST_CASE("the same input writes the same bytes: DXF, GIF, SVG and pages", "[cli
       command.replace(command.find("{}"), 2, file);
       const std::string a = (dir.path() / ("a." + extension)).string(), b = (dir.path() / ("b." + extension)).string();
       const test::RunResult first = test::RunKoppel(command + " -o " + a);
+      // a checked build has no editor page (its WebAssembly is built in the Release build only)
+      if (first.exit_code == 1 && first.err.find("built without emscripten") != std::string::npos) continue;
       const test::RunResult second = test::RunKoppel(command + " -o " + b);
       INFO(command << "\n" << first.err);
       // a writer may end partial (exit 1) where the file's range has gaps: the bytes still agree

@@ -4,6 +4,7 @@
 #include "koppel/catalog/catalog.hpp"
 #include "koppel/catalog/mechanism_writer.hpp"
 
+#include "support/seeds.hpp"
 #include "support/temp_file.hpp"
 #include "support/text.hpp"
 
@@ -214,7 +215,7 @@ TEST_CASE("with random edits, the source reads what the whole text holds whereve
   int both = 0;
   for (const std::string& id : CatalogIds(test::CatalogEntryPath("crank-rocker").substr(0, test::CatalogEntryPath("crank-rocker").rfind('/')))) {
     const std::string good = test::ReadText(test::CatalogEntryPath(id));
-    for (int trial = 0; trial < 80; ++trial) {
+    for (int trial = 0; trial < test::SeedCount(80); ++trial) {
       std::string text = good;
       for (int k = 0; k < 1 + trial % 2; ++k) {
         const size_t at = std::uniform_int_distribution<size_t>(0, text.size())(random);
@@ -237,7 +238,7 @@ TEST_CASE("with random edits, the source reads what the whole text holds whereve
       CHECK(Everything(*alone) == Everything(*whole));
     }
   }
-  CHECK(both > 800);  // enough edits leave a file both read (a test that compares nothing proves nothing)
+  CHECK(both > 10 * test::SeedCount(80));  // enough edits leave a file both read (a test that compares nothing proves nothing)
 }
 
 }  // namespace

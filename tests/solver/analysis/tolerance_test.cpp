@@ -9,6 +9,7 @@
 #include "koppel/core/angles.hpp"
 #include "support/closed_forms.hpp"
 #include "support/mechanisms.hpp"
+#include "support/seeds.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -306,11 +307,13 @@ TEST_CASE("play alone: the Monte Carlo's spread is linear_std at every joint and
     const Mechanism* m;
     std::vector<std::pair<std::string, int>> outputs;  // name, component
   };
+  int combination = 0;
   for (const Case& k : {Case{&four_bar, {{"K", 0}, {"K", 1}, {"psi", 0}, {"mu", 0}, {"A0K", 0}}}, Case{&slider_crank, {{"s", 0}, {"mu", 0}}},
                         Case{&six_bar, {{"chi", 0}, {"mu2", 0}}}}) {
     for (const Joint& joint : k.m->joints) {
       if (joint.type != JointType::kRevolute) continue;
       for (const auto& [output, component] : k.outputs) {
+        if (!test::InCheckedShare(combination++)) continue;
         ToleranceOptions o = PlayAt(*k.m, output, {joint.name}, 1e-3, 60);
         o.component = component;
         o.samples = kPlaySamples;
@@ -335,6 +338,7 @@ TEST_CASE("the shares are each term's part of linear_std^2: against the variance
   const Mechanism m = test::SliderCrank(1.0, 2.6, 0.8);
   const std::vector<double> tolerances = {0.01, 0.02, 0.005};
   for (ToleranceDistribution distribution : {ToleranceDistribution::kUniform, ToleranceDistribution::kNormal}) {
+    if (!test::InCheckedShare(static_cast<int>(distribution) * 5)) continue;  // the checked build: uniform alone
     ToleranceOptions all = Options({60}, tolerances);
     all.clearance_joints = {m.FindJoint("A")};
     all.clearances = {0.003};

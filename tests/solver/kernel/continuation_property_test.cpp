@@ -8,6 +8,7 @@
 #include "koppel/core/angles.hpp"
 #include "support/closed_forms.hpp"
 #include "support/mechanisms.hpp"
+#include "support/seeds.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -45,7 +46,7 @@ TEST_CASE("2000 random four-bars: every row on the assembly branch, every limit 
   std::mt19937 random(20261122);
   std::uniform_real_distribution<double> length(0.2, 2.0), angle(0.0, 2 * kPi), unit(0.0, 1.0);
   Stats stats;
-  while (stats.mechanisms < 2000) {
+  while (stats.mechanisms < test::SeedCount(2000)) {
     const double a = length(random), b = length(random), c = length(random), d = length(random);
     std::array<double, 4> sorted{a, b, c, d};
     std::sort(sorted.begin(), sorted.end());
@@ -85,8 +86,8 @@ TEST_CASE("2000 random four-bars: every row on the assembly branch, every limit 
     ++stats.mechanisms;
   }
   INFO(stats.rows << " rows, " << stats.limits << " limit points");
-  CHECK(stats.rows > 20000);
-  CHECK(stats.limits > 500);
+  CHECK(stats.rows > 10 * test::SeedCount(2000));
+  CHECK(stats.limits > test::SeedCount(2000) / 4);
 }
 
 TEST_CASE("1000 random slider-cranks: every row on the assembly branch, every limit point where |A_y| = l2",
@@ -94,7 +95,7 @@ TEST_CASE("1000 random slider-cranks: every row on the assembly branch, every li
   std::mt19937 random(11222026);
   std::uniform_real_distribution<double> length(0.2, 2.0), angle(0.0, 2 * kPi), unit(0.0, 1.0);
   Stats stats;
-  while (stats.mechanisms < 1000) {
+  while (stats.mechanisms < test::SeedCount(1000)) {
     const double l1 = length(random), l2 = length(random), e = (unit(random) - 0.5) * 2.0;
     if (std::abs(l1 + std::abs(e) - l2) < kNeutralMargin * std::max(l1, l2)) continue;
     const double phi0 = angle(random);
@@ -131,8 +132,8 @@ TEST_CASE("1000 random slider-cranks: every row on the assembly branch, every li
     if (!r.complete()) REQUIRE(!r.singular_points.empty());
     ++stats.mechanisms;
   }
-  CHECK(stats.rows > 10000);
-  CHECK(stats.limits > 200);
+  CHECK(stats.rows > 10 * test::SeedCount(1000));
+  CHECK(stats.limits > test::SeedCount(1000) / 5);
 }
 
 }  // namespace koppel::continuation_property_test

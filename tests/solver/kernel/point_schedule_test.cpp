@@ -11,6 +11,7 @@
 #include "koppel/solver/assembly.hpp"
 #include "koppel/solver/continuation.hpp"
 #include "support/mechanisms.hpp"
+#include "support/seeds.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -164,7 +165,7 @@ TEST_CASE("200 random crank-rockers and 100 random slider-cranks agree with the 
   std::mt19937 random(20261127);
   std::uniform_real_distribution<double> length(0.2, 2.0), unit(0.0, 1.0);
   int fourbars = 0, slider_cranks = 0;
-  while (fourbars < 200) {
+  while (fourbars < test::SeedCount(200)) {
     // Grashof crank-rockers (the crank the shortest, s + l < p + q by a margin): no limit point
     std::array<double, 4> l{length(random), length(random), length(random), length(random)};
     std::sort(l.begin(), l.end());
@@ -182,7 +183,7 @@ TEST_CASE("200 random crank-rockers and 100 random slider-cranks agree with the 
     CheckAgreement(WalkBoth(m, 720, DegToRad(1.0)), 720);
     ++fourbars;
   }
-  while (slider_cranks < 100) {
+  while (slider_cranks < test::SeedCount(100)) {
     const double crank = length(random), coupler = length(random), offset = (unit(random) - 0.5) * crank;
     if (coupler < 1.2 * (crank + std::abs(offset))) continue;  // a crank that turns round
     const Mechanism m = test::SliderCrank(crank, coupler, offset);
@@ -196,7 +197,7 @@ TEST_CASE("100 random proportional linkages (RPR and PRP dyads) agree with the g
           "[point_schedule][property]") {
   std::mt19937 random(20261128);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  for (int i = 0; i < 100; ++i) {
+  for (int i = 0; i < test::SeedCount(100); ++i) {
     // the crank shorter than the frame: the slot swings (never upright, so the slider's guide and
     // the slot never turn parallel) and the crank turns round
     const double frame = 0.5 + 1.5 * unit(random), crank = (0.1 + 0.75 * unit(random)) * frame, h = (0.3 + 2.0 * unit(random)) * frame;

@@ -2,7 +2,6 @@
 
 #include "input_file.hpp"  // ParseYamlText
 
-#include <fmt/core.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -52,13 +51,6 @@ std::optional<YAML::Node> Locate(const YAML::Node& node, const std::string& path
   return std::nullopt;
 }
 
-// A scalar's place in the text: its span and the quote that stays around it ('\0': none, the
-// span is the whole scalar).
-struct Place {
-  TextSpan span;
-  char quote = '\0';
-};
-
 // The end of a quoted scalar that opens at `open` (the closing quote's offset), or npos.
 std::size_t ClosingQuote(const std::string& text, std::size_t open) {
   const char quote = text[open];
@@ -74,7 +66,7 @@ std::size_t ClosingQuote(const std::string& text, std::size_t open) {
   return std::string::npos;
 }
 
-Place FindPlace(const std::string& text, const std::string& file_name, const std::string& path, const YAML::Node& root) {
+ScalarPlace FindPlace(const std::string& text, const std::string& file_name, const std::string& path, const YAML::Node& root) {
   const std::optional<YAML::Node> node = Locate(root, path, 0);
   if (!node || !node->IsScalar()) Refuse(file_name, path, "the file holds no single value at '" + path + "' to change");
   const std::string& value = node->Scalar();
@@ -100,79 +92,28 @@ Place FindPlace(const std::string& text, const std::string& file_name, const std
                               "'): it cannot be changed in place");
 }
 
-// Whether `formula` reads back as the same text when written bare, in a block or a flow
-// collection alike: no indicator first, no ",[]{}" (they end a flow scalar), no ": " or " #".
-bool PlainSafe(const std::string& formula) {
-  if (formula.empty() || formula.front() == ' ' || formula.back() == ' ' || formula.back() == ':') return false;
-  if (formula == "~" || formula == "null" || formula == "Null" || formula == "NULL") return false;
-  if (std::string("?:,[]{}#&*!|>'\"%@`").find(formula.front()) != std::string::npos) return false;
-  if (formula.front() == '-' && (formula.size() == 1 || formula[1] == ' ')) return false;
-  for (std::size_t k = 0; k < formula.size(); ++k) {
-    const unsigned char c = static_cast<unsigned char>(formula[k]);
-    if (c < 0x20 || c == 0x7f || std::string(",[]{}").find(formula[k]) != std::string::npos) return false;
-    if (formula[k] == ':' && k + 1 < formula.size() && formula[k + 1] == ' ') return false;
-    if (formula[k] == '#' && k > 0 && formula[k - 1] == ' ') return false;
-  }
-  return true;
-}
-
-// `formula` as the text of a scalar inside `quote` ('\0': written bare, or double-quoted when it
-// cannot be).
-std::string ScalarText(const std::string& formula, char quote) {
-  if (quote == '\0' && PlainSafe(formula)) return formula;
-  std::string out;
-  for (char c : formula) {
-    if (quote == '\'' && c == '\'') out += '\'';
-    if (quote != '\'' && (c == '"' || c == '\\')) out += '\\';
-    out += c;
-  }
-  return quote == '\0' ? "\"" + out + "\"" : out;
-}
-
 }  // namespace
 
-std::string NumberText(double value) {
-  if (!std::isfinite(value)) throw InputError({Diagnostic{"", 0, 0, "", "a file cannot hold the value " + fmt::format("{}", value)}});
-  return fmt::format("{}", value);  // the shortest text that reads back to the same double
+TextSpan ScalarSpan(const std::string& text, const std::string& file_name, const std::string& key_path) {
+  return ScalarPlaceAt(text, file_name, key_path).span;
 }
 
-TextSpan ScalarSpan(const std::string& text, const std::string& file_name, const std::string& key_path) {
-  return FindPlace(text, file_name, key_path, ParseYamlText(text, file_name)).span;
+ScalarPlace ScalarPlaceAt(const std::string& text, const std::string& file_name, const std::string& key_path) {
+  return FindPlace(text, file_name, key_path, ParseYamlText(text, file_name));
 }
 
 std::string EditMechanismText(const std::string& text, const std::string& file_name, const DocumentChanges& changes) {
   if (changes.parameters.empty() && changes.numbers.empty()) return text;
   const YAML::Node root = ParseYamlText(text, file_name);
-  struct Edit {
-    Place place;
-    std::string replacement, what;
-  };
-  std::vector<Edit> edits;
+  std::vector<ScalarEdit> edits;
   for (const auto& [name, formula] : changes.parameters) {
     const YAML::Node parameters = root.IsMap() ? root["parameters"] : YAML::Node();
     if (!parameters.IsMap() || !parameters[name].IsDefined())
       Refuse(file_name, "parameters." + name, "'" + name + "' is not a parameter of this file");
-    const Place place = FindPlace(text, file_name, "parameters." + name, root);
-    edits.push_back({place, ScalarText(formula, place.quote), "parameter '" + name + "'"});
+    edits.push_back({FindPlace(text, file_name, "parameters." + name, root), formula, "parameter '" + name + "'"});
   }
-  for (const auto& [path, value] : changes.numbers) {
-    const Place place = FindPlace(text, file_name, path, root);
-    edits.push_back({place, ScalarText(NumberText(value), place.quote), "'" + path + "'"});
-  }
-  std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.place.span.begin < b.place.span.begin; });
-  for (std::size_t k = 1; k < edits.size(); ++k) {
-    if (edits[k].place.span.begin < edits[k - 1].place.span.end)
-      Refuse(file_name, "", "two changes of the same value: " + edits[k - 1].what + " and " + edits[k].what);
-  }
-  std::string out;
-  std::size_t from = 0;
-  for (const Edit& e : edits) {
-    out.append(text, from, e.place.span.begin - from);
-    out += e.replacement;
-    from = e.place.span.end;
-  }
-  out.append(text, from, std::string::npos);
-  return out;
+  for (const auto& [path, value] : changes.numbers) edits.push_back({FindPlace(text, file_name, path, root), NumberText(value), "'" + path + "'"});
+  return SpliceScalars(text, file_name, std::move(edits));
 }
 
 }  // namespace koppel

@@ -26,7 +26,7 @@ set(sources ${kernel} ${analysis})
 foreach(s core/src/mechanism core/src/parameter_set core/src/structure core/src/transmission core/src/diagnostic
           core/src/printable_text core/src/loads core/src/build
           tools/api/src/model tools/api/src/analyses tools/api/src/display tools/api/src/sweep_layout tools/api/src/admission
-          tools/api/src/editor_mechanism catalog/src/mechanism_writer tools/edit/wasm/module tools/edit/wasm/absent)
+          tools/api/src/editor_mechanism catalog/src/mechanism_writer catalog/src/document_splice tools/edit/wasm/module tools/edit/wasm/absent)
   list(APPEND sources ${root}/${s}.cpp)
 endforeach()
 
@@ -59,7 +59,7 @@ foreach(source IN LISTS sources)
   list(APPEND objects ${object})
 endforeach()
 set(module ${wasm_dir}/koppel_editor.js)
-set(exports "_koppel_load,_koppel_sweep,_koppel_points,_koppel_dead_centres,_koppel_ranges,_koppel_yaml")
+set(exports "_koppel_load,_koppel_sweep,_koppel_points,_koppel_dead_centres,_koppel_ranges,_koppel_yaml,_koppel_splice")
 add_custom_command(
   OUTPUT ${module}
   COMMAND ${em} -O2 -fexceptions ${objects} -o ${module} -sMODULARIZE=1 -sEXPORT_NAME=KoppelModule -sSINGLE_FILE=1

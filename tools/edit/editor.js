@@ -469,7 +469,11 @@
   }
   const base = state => state.mechanism.name || 'mechanism';
   const schemeSvg = () => new XMLSerializer().serializeToString(svg);
-  $('export-yaml').addEventListener('click', () => download(base(state) + '.yaml', new Blob([api.toYaml()], { type: 'text/yaml' })));
+  $('export-yaml').addEventListener('click', () => {
+    const e = exportYaml();
+    if (e.notes.length) say('the export: ' + e.notes.join('; '), !e.sameBranch);
+    download(base(state) + '.yaml', new Blob([e.text], { type: 'text/yaml' }));
+  });
   $('export-svg').addEventListener('click', () => download(base(state) + '.svg', new Blob([schemeSvg()], { type: 'image/svg+xml' })));
   $('export-png').addEventListener('click', () => {
     const img = new Image();
@@ -483,6 +487,159 @@
     };
     img.src = 'data:image/svg+xml;charset=utf-8,' + encodeURIComponent(schemeSvg());
   });
+
+  // ---- the YAML export: the user's own text (doc.source) with the values the page changed
+  // written in place by the library's rule (koppel_splice, as `--set` and `synth fit -o` write):
+  // formulas, comments, units, masses and loads stay as written. A parameter set here is written
+  // as its number; a coordinate a drag made a number is written at its key; once the design
+  // changed, the assembly is written at the pose shown (an `assembly:` block appended when the
+  // file has none), so that koppel reads the file back on the branch the page shows. The page
+  // then loads the mechanism as the exported file gives it and says when it assembles otherwise.
+  // A mechanism that came from no file is written anew (koppel_yaml).
+  function valueAt(object, pointer) {
+    let o = object;
+    for (const k of pointer.split('/').slice(1)) o = o[k];
+    return o;
+  }
+  function exportYaml() {
+    if (!doc.source) {
+      const y = call('koppel_yaml', [], []);
+      if (!y.ok) throw new Error(y.message);
+      return { text: y.yaml, notes: [], sameBranch: true };
+    }
+    const s = state || pending, places = doc.source.places, edits = [], notes = [];
+    const edit = (path, value, what) => {
+      const p = places[path];
+      if (!p) throw new Error(what + ' is written over several lines in ' + doc.source.file + ': the page cannot change it in place');
+      edits.push({ begin: p[0], end: p[1], quote: p[2], number: value, what: what });
+    };
+    for (const p of s.parameters) {
+      const was = doc.parameters.find((q) => q.name === p.name);
+      if (was && p.formula !== was.formula) edit('parameters.' + p.name, p.value, "parameter '" + p.name + "'");
+    }
+    const kept = new Set(s.formulas.map((f) => f.target));
+    for (const f of doc.formulas) {
+      if (kept.has(f.target) || f.target.startsWith('/hint/')) continue;
+      edit(f.path, valueAt(s.mechanism, f.target) / f.scale, "'" + f.path + "'");
+    }
+    let text = doc.source.text, sameBranch = true;
+    const splice = () => {
+      const r = call('koppel_splice', ['string'], [JSON.stringify({ text: text, file: doc.source.file, edits: edits })]);
+      if (!r.ok) throw new Error(r.message);
+      return r.text;
+    };
+    if (edits.length && state && solved && !readsBackAsShown(fileHint(s))) {
+      // the file's own assembly would put a loop on another branch: the pose shown goes into it
+      const hint = assemblyAtPose();
+      const written = new Set();
+      for (const f of doc.formulas) {
+        if (!f.path.startsWith('assembly.') || written.has(f.path)) continue;
+        written.add(f.path);
+        edit(f.path, hint.values[f.path], "'" + f.path + "'");
+      }
+      if (!written.size) text = appendAssembly(text, hint);
+      sameBranch = readsBackAsShown(hintOf(hint));
+      notes.push(sameBranch ? (written.size ? "its 'assembly:' block" : "an 'assembly:' block appended") + ' holds the pose shown, so that koppel reads it on this branch'
+                            : "koppel assembles the exported file on another branch than the one shown: add the points that pin it to its 'assembly:' block");
+    }
+    return { text: splice(), notes: notes, sameBranch: sameBranch };
+  }
+  // The hint the file's assembly block gives the mechanism s: its formulas evaluated with s's parameters.
+  function fileHint(s) {
+    const scope = {};
+    for (const p of s.parameters) scope[p.name] = p.value;
+    const holder = { hint: clone(doc.mechanism.hint) };
+    for (const f of doc.formulas) if (f.target.startsWith('/hint/')) setAt(holder, f.target, evaluate(f.formula, scope) * f.scale);
+    return holder.hint;
+  }
+  // The assembly at the pose shown: the input, and per key of the file's assembly block (or, with
+  // none, per joint not on the frame: link.point) the global position of its point.
+  function assemblyAtPose() {
+    // a block of points without an input is read at the file's own hint input: the pose there
+    let at = frame;
+    const fileInput = doc.formulas.some((f) => f.path === 'assembly.input');
+    if (!fileInput && doc.formulas.some((f) => f.path.startsWith('assembly.points.'))) {
+      const target = doc.mechanism.hint.input / (doc.input.angle ? Math.PI / 180 : 1);
+      const k = solved.table.rows.findIndex((r) => Math.abs(r[0] - target) <= 1e-9 * Math.max(1, Math.abs(target)));
+      if (k >= 0) at = k;
+    }
+    const m = state.mechanism, pts = pointsAt(at), input = solved.table.rows[at][0];
+    const values = { 'assembly.input': input }, keys = [];
+    const position = (key) => {
+      const dot = key.indexOf('.');
+      for (let li = 0; li < m.links.length; ++li) {
+        if (m.links[li].frame) continue;
+        if (dot >= 0 && key.slice(0, dot) === m.links[li].name) {
+          const pi = m.links[li].points.findIndex((p) => p.name === key.slice(dot + 1));
+          if (pi >= 0) return pts[li][pi];
+        }
+        const pi = m.links[li].points.findIndex((p) => p.name === key);
+        if (pi >= 0) return pts[li][pi];
+      }
+      return null;
+    };
+    const fileKeys = [...new Set(doc.formulas.filter((f) => f.path.startsWith('assembly.points.')).map((f) => f.path.slice(16, -3)))];
+    if (fileKeys.length) {
+      for (const k of fileKeys) keys.push(k);
+    } else {
+      for (const j of m.joints) {
+        if (m.links[j.link_a].frame || m.links[j.link_b].frame) continue;
+        keys.push(m.links[j.link_a].name + '.' + m.links[j.link_a].points[j.point_a].name);
+      }
+    }
+    const points = [];
+    for (const k of keys) {
+      const xy = position(k);
+      if (!xy) continue;
+      values['assembly.points.' + k + '[0]'] = xy[0];
+      values['assembly.points.' + k + '[1]'] = xy[1];
+      points.push([k, xy]);
+    }
+    return { input: input, points: points, values: values };
+  }
+  function appendAssembly(text, hint) {
+    const number = (v) => String(+v.toPrecision(15));
+    const entries = hint.points.map(([k, xy]) => JSON.stringify(k) + ': [' + number(xy[0]) + ', ' + number(xy[1]) + ']');
+    return text + (text.endsWith('\n') ? '' : '\n') + '# the pose koppel edit showed when this file was exported: it keeps every loop on that branch\n' +
+      'assembly: {input: ' + number(hint.input) + ', points: {' + entries.join(', ') + '}}\n';
+  }
+  // The hint an assembly block of these points makes (a bare point name: every link that has it).
+  function hintOf(hint) {
+    const m = state.mechanism, out = { input: (doc.input.angle ? Math.PI / 180 : 1) * hint.input, points: [] };
+    for (const [k, xy] of hint.points) {
+      m.links.forEach((l, li) => {
+        if (l.frame) return;
+        const dot = k.indexOf('.');
+        if (dot >= 0 && k.slice(0, dot) === l.name) {
+          const pi = l.points.findIndex((p) => p.name === k.slice(dot + 1));
+          if (pi >= 0) out.points.push({ link: li, point: pi, x: xy[0], y: xy[1] });
+          return;
+        }
+        const pi = l.points.findIndex((p) => p.name === k);
+        if (pi >= 0) out.points.push({ link: li, point: pi, x: xy[0], y: xy[1] });
+      });
+    }
+    return out;
+  }
+  // Whether the mechanism shown, assembled from `hint` as koppel reads the exported file, walks
+  // the file's range through the poses shown (1e-9 of its size).
+  function readsBackAsShown(hint) {
+    const m = clone(state.mechanism), sw = m.sweep;
+    m.hint = hint;
+    const loaded = call('koppel_load', ['string'], [JSON.stringify(m)]);
+    let same = false;
+    if (loaded.ok) {
+      const f = call('koppel_points', ['number', 'number', 'number', 'string'], [sw.from, sw.to, sw.step, '']);
+      const mine = solved.frames;
+      if (f.ok && f.inputs.length === mine.inputs.length && f.inputs.every((x, i) => x === mine.inputs[i])) {
+        let worst = 0, size = 1;
+        for (let k = 0; k < mine.points.length; ++k) { worst = Math.max(worst, Math.abs(f.points[k] - mine.points[k])); size = Math.max(size, Math.abs(mine.points[k])); }
+        same = worst <= 1e-9 * size;
+      }
+    }
+    call('koppel_load', ['string'], [JSON.stringify(state.mechanism)]);  // the module back to the mechanism shown
+    return same;
+  }
 
   // ---- the scripting API
   const api = {
@@ -510,11 +667,10 @@
       return { ok: ok, message: message.textContent };
     },
     moveJoint(name, x, y) { return { ok: moveJoint(name, x, y, true), message: message.textContent }; },
-    toYaml() {
-      const y = call('koppel_yaml', [], []);
-      if (!y.ok) throw new Error(y.message);
-      return y.yaml;
-    },
+    // the YAML export: the user's file with the page's changes written in place (exportYaml)
+    toYaml() { return exportYaml().text; },
+    // the same with what the page says of it: {text, notes, sameBranch}
+    exportYaml() { return exportYaml(); },
     parameters() { return (state || pending).parameters.map((p) => ({ name: p.name, value: p.value })); },
     state() {
       return { input: solved ? solved.table.rows[frame][0] : null, frame: frame, message: message.textContent, error: message.className === 'error' };
@@ -536,7 +692,7 @@
     }
     const notes = [];
     if (why) notes.push('the parameter sliders are off: the page evaluates a formula otherwise than koppel (' + why + ')');
-    if (doc.has_loads) notes.push("the file's masses and loads are not part of the page (its YAML export leaves them out)");
+    if (doc.has_loads) notes.push(doc.source ? "the file's masses and loads are not part of the page (its YAML export keeps them as written)" : "the file's masses and loads are not part of the page (its YAML export leaves them out)");
     if (notes.length) say(notes.join('; '), false);
     requestAnimationFrame(tick);
     return api;

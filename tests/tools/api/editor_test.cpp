@@ -4,11 +4,13 @@
 // The page itself (WebAssembly, math.js) is tested against the CLI in tests/tools/edit.
 #include "koppel/api/editor.hpp"
 #include "koppel/api/model.hpp"
+#include "koppel/catalog/document_edit.hpp"
 #include "koppel/core/angles.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <string>
 
 using namespace koppel;
@@ -98,6 +100,45 @@ TEST_CASE("editor mechanism: what the page got wrong is refused", "[editor]") {
     CHECK_THROWS_WITH(ModelFromEditorJson(m.dump()), Catch::Contains("slide axis must not be zero"));
   }
   SECTION("not JSON") { CHECK_THROWS_AS(ModelFromEditorJson("{links"), InputError); }
+}
+
+// The page's export: the document hands the page the user's text and the place of each value; a
+// change written at those places (SpliceScalars, as the page's module does) is the file that
+// Model::With's text gives (EditMechanismText, the CLI's --set written in place), for every
+// parameter and every followed formula of every catalog entry. Reference: EditMechanismText.
+TEST_CASE("editor document: the places of its values give the library's in-place edit", "[editor]") {
+  int entries = 0, edits = 0;
+  for (const auto& e : std::filesystem::directory_iterator(KOPPEL_CATALOG_DIR)) {
+    if (e.path().extension() != ".yaml") continue;
+    const Model model = Model::Load(e.path().string());
+    const json doc = json::parse(EditorDocumentJson(model));
+    INFO(e.path().string());
+    REQUIRE(doc["source"].is_object());
+    const std::string text = doc["source"]["text"], file = doc["source"]["file"];
+    CHECK(text == model.ToYaml());
+    ++entries;
+    const auto place = [&](const std::string& path) {
+      const json p = doc["source"]["places"].at(path);
+      const std::string quote = p[2];
+      return ScalarPlace{{p[0].get<size_t>(), p[1].get<size_t>()}, quote.empty() ? '\0' : quote[0]};
+    };
+    for (const json& p : doc["parameters"]) {
+      const std::string name = p["name"];
+      DocumentChanges change;
+      change.parameters = {{name, "2.5"}};
+      CHECK(SpliceScalars(text, file, {{place("parameters." + name), "2.5", name}}) == EditMechanismText(text, file, change));
+      ++edits;
+    }
+    for (const json& f : doc["formulas"]) {
+      const std::string path = f["path"];
+      DocumentChanges change;
+      change.numbers = {{path, -0.125}};
+      CHECK(SpliceScalars(text, file, {{place(path), NumberText(-0.125), path}}) == EditMechanismText(text, file, change));
+      ++edits;
+    }
+  }
+  CHECK(entries >= 30);
+  CHECK(edits > 500);
 }
 
 }  // namespace

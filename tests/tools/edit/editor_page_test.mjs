@@ -279,6 +279,59 @@ try {
     await second.page.close();
   }
 
+  // The export keeps what the user wrote: the Watt-II written with parameters and comments, after
+  // set('c3', 2.6), is its own text with c3's value alone changed (the file's assembly still gives
+  // the branch shown); its parameters stay alive (--set d1 changes the numbers) and it reads back
+  // to the page's numbers. A drag of B0 (written [d1, 0]) changes d1 in the text. The compressor
+  // in mm with masses and loads keeps its units, gravity and loads through set('l2', 170), and
+  // `koppel forces` of the export equals `koppel forces --set l2=170` of the file.
+  {
+    const id = 'watt-ii-branches';
+    const file = new URL('../../data/watt-ii-branches.yaml', import.meta.url).pathname;
+    const original = fs.readFileSync(file, 'utf8');
+    const { page, watched } = await open(id, [], 0, file);
+    check(await page.evaluate(() => window.koppel.toYaml()) === original, `${id}: the export of the file as read is not its text byte for byte`);
+    const set = await page.evaluate(() => window.koppel.set('c3', 2.6));
+    check(set.ok, `${id}: set('c3', 2.6): ${set.message}`);
+    const exported = await page.evaluate(() => window.koppel.exportYaml());
+    const expected = original.replace('c3: 3.5,', 'c3: 2.6,');
+    check(expected !== original && exported.text === expected && exported.sameBranch,
+      `${id}: after set('c3', 2.6) the export is not the file with c3 alone changed:\n${exported.text}\n${exported.notes.join('; ')}`);
+    const yaml = path.join(work, 'watt-ii-exported.yaml');
+    fs.writeFileSync(yaml, exported.text);
+    const plain = analyze(yaml, ['--step', '180']), moved = analyze(yaml, ['--step', '180', '--set', 'd1=3.2']);
+    check(difference(plain, moved) !== '', `${id}: --set d1=3.2 on the export changes nothing: its parameters are dead`);
+    await compare(page, id, analyze(yaml), 'c3 set');
+    // a drag of B0 changes d1 (B0: [d1, 0]) and nothing else in the text but the assembly, if at all
+    const b0 = await page.evaluate(() => window.koppel.moveJoint('B0', 3.6, 0));
+    check(b0.ok && /d1 = 3\.6/.test(b0.message), `${id}: the drag of B0: ${b0.message}`);
+    const dragged = await page.evaluate(() => window.koppel.exportYaml());
+    check(/d1: 3\.6,/.test(dragged.text) && /B0: \[d1, 0\]/.test(dragged.text) && /^# The Watt-II/.test(dragged.text),
+      `${id}: the export after the drag of B0 lost the user's text:\n${dragged.text}`);
+    fs.writeFileSync(yaml, dragged.text);
+    await compare(page, id, analyze(yaml), 'B0 dragged');
+    checkQuiet(check, id + ' export', watched);
+    await page.close();
+  }
+  {
+    const id = 'slider-crank-loads';
+    const file = new URL('../../data/slider-crank-loads.yaml', import.meta.url).pathname;
+    const original = fs.readFileSync(file, 'utf8');
+    const { page, watched } = await open(id, [], 0, file);
+    const set = await page.evaluate(() => window.koppel.set('l2', 170));
+    check(set.ok, `${id}: set('l2', 170): ${set.message}`);
+    const text = await page.evaluate(() => window.koppel.toYaml());
+    check(text === original.replace('l2: 160 ', 'l2: 170 '), `${id}: the export is not the file with l2 alone changed:\n${text}`);
+    const yaml = path.join(work, 'loads-exported.yaml');
+    fs.writeFileSync(yaml, text);
+    const forces = (args) => spawnSync(koppel, ['forces', ...args, '--step', '30'], { encoding: 'utf8' });
+    const exported = forces([yaml]), bySet = forces([file, '--set', 'l2=170']);
+    check(exported.status === 0 && exported.stdout === bySet.stdout,
+      `${id}: koppel forces of the export differs from --set l2=170: ${exported.stderr}\n${exported.stdout}\n${bySet.stdout}`);
+    checkQuiet(check, id + ' export', watched);
+    await page.close();
+  }
+
   // a file that does not assemble as given (e = 9: the coupler cannot reach the slide line):
   // koppel edit writes the page and exits 1; the page says so, shows no numbers, and its sliders
   // fix it (e = 0.8: the file's own numbers)

@@ -4,6 +4,7 @@
 
 #include "model_impl.hpp"
 
+#include "koppel/catalog/document_edit.hpp"
 #include "koppel/core/angles.hpp"
 
 #include <nlohmann/json.hpp>
@@ -89,6 +90,28 @@ std::vector<Target> TargetsOf(const Mechanism& m, const std::string& path, std::
   return {};
 }
 
+// The user's own text (with the parameters set so far written in, Model::ToYaml) and the place in
+// it of every value the page may change (its parameters and the formulas it follows): the page's
+// export writes its changes there (SpliceScalars) and keeps every other byte. A value written over
+// several lines has no place; the page says so when a change needs one. Null for a model of no file.
+json SourceOf(const Model& model, const json& doc) {
+  if (!ModelAccess::HasSource(model)) return nullptr;
+  const std::string text = model.ToYaml();
+  const std::string& file = ModelAccess::File(model).path;
+  json places = json::object();
+  const auto place = [&](const std::string& path) {
+    try {
+      const ScalarPlace p = ScalarPlaceAt(text, file, path);
+      places[path] = {p.span.begin, p.span.end, p.quote == '\0' ? "" : std::string(1, p.quote)};
+    } catch (const InputError&) {
+    }
+  };
+  for (const json& p : doc["parameters"]) place("parameters." + p["name"].get<std::string>());
+  for (const json& f : doc["formulas"])
+    if (!places.contains(f["path"].get<std::string>())) place(f["path"].get<std::string>());
+  return {{"text", text}, {"file", file}, {"places", places}};
+}
+
 }  // namespace
 
 std::string EditorDocumentJson(const Model& model) {
@@ -121,6 +144,7 @@ std::string EditorDocumentJson(const Model& model) {
   }
   doc["has_loads"] = f.loads.HasMass() || !f.loads.forces.empty() || !f.loads.torques.empty() || !f.loads.springs.empty();
   doc["mechanism"] = json::parse(EditorMechanismJson(model));
+  doc["source"] = SourceOf(model, doc);
   return doc.dump();
 }
 

@@ -25,6 +25,7 @@ struct Model::Impl {
 // take a `const Model&`); nothing outside tools/api sees it.
 struct ModelAccess {
   static const MechanismFile& File(const Model& model) { return model.impl_->file; }
+  static bool HasSource(const Model& model) { return model.impl_->source != nullptr; }
   // A model of a file made in code (the editor page's mechanism, editor_mechanism.cpp): admitted
   // as Model::Load admits; it has no source, so With refuses to set a parameter.
   static Model FromFile(MechanismFile file);

@@ -3,6 +3,7 @@
 // JSON text. The page (editor.js) calls them through emscripten's ccall; one model at a time.
 #include "koppel/api/editor.hpp"
 #include "koppel/api/model.hpp"
+#include "koppel/catalog/document_splice.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -120,7 +121,30 @@ const char* koppel_ranges() {
   }
 }
 
-// The mechanism as a mechanism file (Model::ToYaml) the CLI reads back.
+// The user's text with the page's changes written in place (SpliceScalars, the rule of `--set`
+// and `synth fit -o`): {"text", "file", "edits": [{"begin", "end", "quote", "formula" | "number",
+// "what"}]} -> {"ok", "text"} or {"ok": false, "message"}. A number is written as NumberText.
+const char* koppel_splice(const char* request_json) {
+  try {
+    const json request = json::parse(request_json);
+    std::vector<koppel::ScalarEdit> edits;
+    for (const json& e : request.at("edits")) {
+      koppel::ScalarEdit edit;
+      edit.place.span = {e.at("begin").get<std::size_t>(), e.at("end").get<std::size_t>()};
+      const std::string quote = e.at("quote").get<std::string>();
+      edit.place.quote = quote.empty() ? '\0' : quote[0];
+      edit.formula = e.contains("number") ? koppel::NumberText(e.at("number").get<double>()) : e.at("formula").get<std::string>();
+      edit.what = e.at("what").get<std::string>();
+      edits.push_back(std::move(edit));
+    }
+    return Answer({{"ok", true}, {"text", koppel::SpliceScalars(request.at("text"), request.at("file"), std::move(edits))}});
+  } catch (const std::exception& e) {
+    return Failure(e);
+  }
+}
+
+// The mechanism as a mechanism file (Model::ToYaml) the CLI reads back: the page's export of a
+// mechanism that came from no file.
 const char* koppel_yaml() {
   if (!current) return NoModel();
   try {

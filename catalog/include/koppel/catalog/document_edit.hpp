@@ -6,21 +6,14 @@
 // derived mechanism that no parameter writes.
 #pragma once
 
+#include "koppel/catalog/document_splice.hpp"  // TextSpan, ScalarPlace, NumberText
 #include "koppel/core/diagnostic.hpp"
 
-#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace koppel {
-
-// The bytes [begin, end) of the text that hold one scalar's value: inside the quotes of a quoted
-// scalar that holds no escape, else the whole scalar as written.
-struct TextSpan {
-  std::size_t begin = 0;
-  std::size_t end = 0;
-};
 
 struct DocumentChanges {
   // parameter name -> its new formula (a number's text, NumberText, or any formula); the span
@@ -31,15 +24,13 @@ struct DocumentChanges {
   std::vector<std::pair<std::string, double>> numbers;
 };
 
-// The shortest text that reads back to exactly `value` ("150", "0.1", "1.5e-07"). InputError
-// for a value that is not finite (a file must not hold one).
-std::string NumberText(double value);
-
 // Where the scalar at `key_path` is written in `text` (a mechanism file named `file_name` in
 // messages). A key path joins map keys with '.' and list indices as [i]; a key that holds a '.'
 // or '[' is matched as written. InputError when the text is no YAML, no scalar stands at the
 // path, or it is written over several lines (there is no one span to replace).
 TextSpan ScalarSpan(const std::string& text, const std::string& file_name, const std::string& key_path);
+// The same with the quote that stays around the span (what SpliceScalars needs).
+ScalarPlace ScalarPlaceAt(const std::string& text, const std::string& file_name, const std::string& key_path);
 
 // `text` with `changes` made in place: each changed value's span rewritten (a formula that is no
 // plain YAML scalar in its place, e.g. holds ", " or ": ", double-quoted), nothing else. No

@@ -22,7 +22,11 @@ namespace koppel {
 
 // The page's document as JSON text: {"title", "file", "input": {"name", "angle", "unit"},
 // "parameters": [{"name", "formula", "value"}], "formulas": [{"path", "formula", "value",
-// "target", "scale"}], "unfollowed": [key paths], "has_loads", "mechanism": EditorMechanismJson}.
+// "target", "scale"}], "unfollowed": [key paths], "has_loads", "mechanism": EditorMechanismJson,
+// "source": {"text", "file", "places": {key path: [begin, end, quote]}} or null}: the user's text
+// (with the parameters set so far written in) and where each parameter and followed formula is
+// written in it (koppel/catalog/document_splice.hpp), so that the page's export changes those
+// values in place and keeps every other byte; a value written over several lines has no place.
 std::string EditorDocumentJson(const Model& model);
 
 // The mechanism as the page holds it: {"name", "title", "units": {"given", "name", "metres"} (the file's length

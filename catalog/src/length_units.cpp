@@ -26,7 +26,7 @@ Loads UnitOnlyLoads(const std::string& name, const std::string& flag) {
     loads.length_unit_name = known;
     return loads;
   }
-  throw InputError({Diagnostic{flag, 0, 0, flag, "unknown length unit '" + name + "' (the units known: " + NamedLengthUnitList() + ")"}});
+  throw InputError({Diagnostic{flag, 0, 0, "", "unknown length unit '" + name + "' (the units known: " + NamedLengthUnitList() + ")"}});
 }
 
 }  // namespace koppel

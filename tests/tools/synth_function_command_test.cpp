@@ -106,4 +106,27 @@ TEST_CASE("synth function: an exact design on the wrong branch is refused, not p
   CHECK(s.count("error_max") == 0);
 }
 
+// --units: the file says the unit and reads back in it, the table labels the lengths with it, and
+// the design is the one without --units (the unit changes no number: the files differ by the
+// units line alone). Reference: the same command without --units.
+TEST_CASE("synth function --units writes the unit into the file and labels the lengths with it", "[cli][synth]") {
+  test::TempDir dir;
+  const std::string mm = (dir.path() / "mm.yaml").string(), plain = (dir.path() / "plain.yaml").string();
+  const std::string spec = test::TestDataPath("function-log10.yaml");
+  const test::RunResult r = test::RunKoppel("synth function " + spec + " --units mm -o " + mm);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.out, Catch::Contains("\ncrank,") && Catch::Contains(",mm\n") && !Catch::Contains(",length\n"));
+  REQUIRE(test::RunKoppel("synth function " + spec + " -o " + plain).exit_code == 0);
+  std::string with_units = test::ReadText(mm);
+  const std::string line = "units: {length: mm}\n";
+  REQUIRE(with_units.find(line) != std::string::npos);
+  CHECK(with_units.erase(with_units.find(line), line.size()) == test::ReadText(plain));
+  CHECK(test::RunKoppel("analyze " + mm + " --step 10").exit_code == 0);  // a four-bar's outputs are angles: no length column
+  const std::string never = (dir.path() / "never.yaml").string();
+  const test::RunResult bad = test::RunKoppel("synth function " + spec + " --units furlong -o " + never);
+  CHECK(bad.exit_code == 2);
+  CHECK_THAT(bad.err, Catch::Contains("furlong") && Catch::Contains("m, dm, cm, mm, um, km, in, ft"));
+  CHECK_FALSE(std::filesystem::exists(never));
+}
 }  // namespace koppel::synth_function_command_test

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 namespace koppel::synth_motion_command_test {
@@ -152,4 +153,25 @@ TEST_CASE("synth motion refuses bad requests", "[cli][motion]") {
   CHECK_THAT(off.err, Catch::Contains("not on the circle-point curve"));
 }
 
+// --units: every written four-bar says the unit (and reads back in it); an unknown unit is refused
+// before the search, nothing written.
+TEST_CASE("synth motion --units writes the unit into every four-bar's file", "[cli][motion]") {
+  test::TempDir dir;
+  const test::RunResult r =
+      test::RunKoppel("synth motion " + test::TestDataPath("motion-five-poses.yaml") + " --require crank --units cm -o " + dir.path().string());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir.path())) {
+    CHECK_THAT(test::ReadText(e.path().string()), Catch::Contains("\nunits: {length: cm}\n"));
+    CHECK_THAT(test::RunKoppel("analyze " + e.path().string() + " --step 30 --format json").out, Catch::Contains("\"cm\""));
+    ++files;
+  }
+  CHECK(files > 0);
+  test::TempDir none;
+  const test::RunResult bad = test::RunKoppel("synth motion " + test::TestDataPath("motion-five-poses.yaml") + " --units furlong -o " + none.path().string());
+  CHECK(bad.exit_code == 2);
+  CHECK_THAT(bad.err, Catch::Contains("furlong"));
+  CHECK(std::filesystem::is_empty(none.path()));
+}
 }  // namespace koppel::synth_motion_command_test

@@ -4,11 +4,13 @@
 // bad points files name their line.
 #include "support/run.hpp"
 #include "support/temp_file.hpp"
+#include "support/text.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -151,4 +153,21 @@ TEST_CASE("synth path --design refuses a bad design file with its line", "[cli][
   }
 }
 
+// --units: every written linkage says the unit; an unknown unit is refused before the search.
+TEST_CASE("synth path --units writes the unit into every linkage's file", "[cli][path]") {
+  test::TempDir dir;
+  const test::RunResult r =
+      test::RunKoppel("synth path " + test::TestDataPath("path-points.csv") + " --atlas " + CiAtlas() + " --top 2 --units mm -o " + dir.path().string());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir.path())) {
+    CHECK_THAT(test::ReadText(e.path().string()), Catch::Contains("\nunits: {length: mm}\n"));
+    ++files;
+  }
+  CHECK(files == 2);
+  const test::RunResult bad = test::RunKoppel("synth path " + test::TestDataPath("path-points.csv") + " --atlas " + CiAtlas() + " --units furlong");
+  CHECK(bad.exit_code == 2);
+  CHECK_THAT(bad.err, Catch::Contains("furlong"));
+}
 }  // namespace koppel::synth_path_command_test

@@ -16,7 +16,7 @@ namespace synth_motion_command {  // this file's own names, apart from the other
 namespace {
 
 struct Args {
-  std::string poses, dir, out, curves, require, crank_turn = "90", grid, samples = "18", top, threads, format = "csv";
+  std::string poses, dir, out, curves, require, crank_turn = "90", grid, samples = "18", top, threads, format = "csv", units;
   std::vector<std::string> circle_points;
 };
 
@@ -47,6 +47,7 @@ MotionSpec Spec(const Args& args, std::vector<MotionPose> poses) {
   if (!args.require.empty() && args.require != "crank") BadFlags("--require: only 'crank' (the input turns fully)");
   spec.require_crank = args.require == "crank";
   if (!args.threads.empty()) spec.threads = ParseCountFlag("--threads", args.threads, 0, kMaxThreads);
+  spec.units = args.units;
   return spec;
 }
 
@@ -140,6 +141,8 @@ void AddMotionSubcommand(CLI::App& synth) {
   OutputFile(cmd->add_option("--curves", args->curves, "Four poses: write the Burmester curves to this CSV file"));
   cmd->add_option("--crank-turn", args->crank_turn, "Two poses: the crank's turn between them [deg] (default 90)");
   cmd->add_option("--require", args->require, "crank: keep only four-bars whose input turns fully");
+  cmd->add_option("--units", args->units, "The length unit of the poses and of the mechanism files -o writes: each says\n"
+                                           "`units: {length: UNIT}`, the table labels lengths with it (m, dm, cm, mm, um, km, in, ft; default: none)");
   cmd->add_option("--top", args->top, "Print (and write) only the best N");
   OutputDirectory(cmd->add_option("-o,--dir", args->dir, "Write each four-bar as a mechanism file into this directory"));
   OutputFile(cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout"));

@@ -4,6 +4,7 @@
 
 #include "koppel/api/path_synthesis.hpp"
 #include "koppel/catalog/design_space_file.hpp"
+#include "koppel/catalog/length_units.hpp"
 #include "model_loading.hpp"
 
 #include <fmt/core.h>
@@ -19,7 +20,7 @@ namespace synth_path_command {  // this file's own names, apart from the other c
 namespace {
 
 struct Args {
-  std::string points, atlas, top = "10", candidates, dir, out, threads, format = "csv", design;
+  std::string points, atlas, top = "10", candidates, dir, out, threads, format = "csv", design, units;
   bool open = false;
 };
 
@@ -41,11 +42,12 @@ void WriteDesign(const Args& args, const PathDesign& l, size_t i) {
       "(atlas curve {} of seed {}, polished by the fit through this mechanism: {}). Grashof type {}.{}",
       i + 1, args.points, args.atlas, l.error, l.atlas_index, l.atlas_seed, l.fit.substr(0, 200), l.grashof,
       l.cognate_of >= 0 ? fmt::format("\nA Roberts cognate of linkage {}: the same coupler curve from another four-bar.", l.cognate_of + 1) : "");
-  WriteOutput((std::filesystem::path(args.dir) / (name + ".yaml")).string(), PathDesignYaml(l, name, comment));
+  WriteOutput((std::filesystem::path(args.dir) / (name + ".yaml")).string(), PathDesignYaml(l, name, comment, args.units));
 }
 
 void Run(const Args& args) {
   CheckFormat(args.format);
+  if (!args.units.empty()) Checked([&] { return UnitOnlyLoads(args.units, "units"); });  // before the search: exit 2
   PathSpec request;
   request.points = ReadPoints(args.points);
   request.open = args.open;
@@ -111,6 +113,8 @@ void AddPathSubcommand(CLI::App& synth) {
   OutputFile(cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout"));
   cmd->add_option("--format", args->format, "The table as csv (default) or json ({\"columns\", \"rows\"}; grashof a string, cognate_of null when none)");
   cmd->add_option("--threads", args->threads, "Threads (default: one per core; at most 256, kMaxThreads)");
+  cmd->add_option("--units", args->units, "The length unit of the mechanism files -o writes: each says `units: {length: UNIT}`\n"
+                                           "(m, dm, cm, mm, um, km, in, ft; default: none). The points are in that unit.");
   cmd->add_option("--design", args->design, "The design space: a YAML file (lengths, ratio, pivots, input)");
   cmd->callback([args] { Run(*args); });
 }

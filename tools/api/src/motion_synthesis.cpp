@@ -2,6 +2,7 @@
 // the number of poses, paired into four-bars that the solver re-analyses through every pose.
 #include "koppel/api/motion_synthesis.hpp"
 
+#include "design_units.hpp"
 #include "display.hpp"
 
 #include "koppel/catalog/mechanism_writer.hpp"
@@ -48,7 +49,7 @@ std::string MotionComment(const MotionFourBar& f, int rank, const std::string& s
 }
 
 // One four-bar as a Design named four-bar-<rank>: figures as synthesis.hpp lists them.
-Design MotionDesign(const MotionFourBar& f, int rank, const std::string& source) {
+Design MotionDesign(const MotionFourBar& f, int rank, const std::string& source, const std::optional<Loads>& units) {
   std::vector<DesignFigure> figures;
   const auto point = [&](const std::string& name, const Eigen::Vector2d& p) {
     figures.push_back({name + "_x", p.x(), "length"});
@@ -74,7 +75,8 @@ Design MotionDesign(const MotionFourBar& f, int rank, const std::string& source)
   // a crank: a full turn from the first pose; else its drivable interval on the first pose's branch
   const double from = RadToDeg(f.drive_from), to = RadToDeg(f.drive_to);
   const SweepDefaults sweep = f.crank_turns_fully ? SweepDefaults{from, from + 360, 1} : SweepDefaults{from, to, (to - from) / 360};
-  d.yaml = WriteMechanismYaml(m, MotionComment(f, rank, source), sweep);
+  d.yaml = WriteMechanismYaml(m, MotionComment(f, rank, source), sweep, {}, UnitsFor(units));
+  LabelLengths(units, d.figures);
   return d;
 }
 
@@ -92,13 +94,13 @@ DyadRequest Request(const MotionSpec& spec, const std::vector<Pose>& poses) {
 }
 
 void Paired(const std::vector<Pose>& poses, const std::vector<Dyad>& dyads, const MotionOptions& options, const std::string& source,
-            MotionReport& out) {
+            const std::optional<Loads>& units, MotionReport& out) {
   const MotionResult result = FourBarsFromDyads(poses, dyads, options);
   out.paired = true;
   out.rejected = result.rejected;
   out.failed = result.failed;
   out.failures = result.failures;
-  for (size_t i = 0; i < result.four_bars.size(); ++i) out.designs.push_back(MotionDesign(result.four_bars[i], static_cast<int>(i + 1), source));
+  for (size_t i = 0; i < result.four_bars.size(); ++i) out.designs.push_back(MotionDesign(result.four_bars[i], static_cast<int>(i + 1), source, units));
   out.defect_free = result.defect_free;
   const std::string failures = result.failed == 0 ? "" :
       fmt::format("{} four-bar(s) failed their re-analysis and are not listed{}", result.failed,
@@ -159,6 +161,7 @@ BurmesterCurveTable MotionCurves(const std::vector<MotionPose>& poses) {
 }
 
 MotionReport SynthesiseMotionReport(const MotionSpec& spec, const std::string& source) {
+  const std::optional<Loads> units = UnitsOf(spec.units);  // an unknown unit refused before the search
   MotionRequire(spec.threads >= 0 && spec.threads <= kMaxThreads, "threads", fmt::format("must be 0 (one per core) to {}", kMaxThreads));
   const std::vector<Pose> poses = InternalPoses(spec.poses);
   const DyadChoice dyads = DyadsForPoses(poses, Request(spec, poses));
@@ -183,7 +186,7 @@ MotionReport SynthesiseMotionReport(const MotionSpec& spec, const std::string& s
                               out.dyads, out.four_bars, kMaxMotionFourBars);
     return out;
   }
-  Paired(poses, dyads.dyads, options, source, out);
+  Paired(poses, dyads.dyads, options, source, units, out);
   return out;
 }
 

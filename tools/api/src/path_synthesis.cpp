@@ -1,5 +1,7 @@
 #include "koppel/api/path_synthesis.hpp"
 
+#include "design_units.hpp"
+
 #include "koppel/catalog/mechanism_writer.hpp"
 #include "koppel/catalog/path_points.hpp"
 #include "koppel/core/angles.hpp"
@@ -62,11 +64,11 @@ PathDesigns SynthesisePathFromAtlas(const PathSpec& spec, const std::string& atl
   return out;
 }
 
-std::string PathDesignYaml(const PathDesign& design, const std::string& name, const std::string& comment) {
+std::string PathDesignYaml(const PathDesign& design, const std::string& name, const std::string& comment, const std::string& units) {
   Mechanism m = design.mechanism;
   m.name = name;
   const double from = RadToDeg(m.hint.input);
-  return WriteMechanismYaml(m, comment, {from, from + 360, 1});
+  return WriteMechanismYaml(m, comment, {from, from + 360, 1}, {}, UnitsFor(UnitsOf(units)));
 }
 
 }  // namespace koppel

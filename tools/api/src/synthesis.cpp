@@ -1,6 +1,7 @@
 // The syntheses of `koppel synth` as functions returning a Design (synthesis.hpp).
 #include "koppel/api/synthesis.hpp"
 
+#include "design_units.hpp"
 #include "display.hpp"
 #include "model_impl.hpp"
 
@@ -52,15 +53,8 @@ Design Finished(const Result& result, Figures figures, const Mechanism& mechanis
 // figures carry its name.
 void InUnits(const std::optional<Loads>& units, Design& design, const Mechanism& m, const std::string& comment,
              const SweepDefaults& sweep = {0, 360, 1}) {
-  design.yaml = WriteMechanismYaml(m, comment, sweep, {}, units ? &*units : nullptr);
-  if (!units) return;
-  for (DesignFigure& f : design.figures)
-    if (f.unit == "length") f.unit = units->LengthUnit();
-}
-
-std::optional<Loads> UnitsOf(const std::string& units) {
-  if (units.empty()) return std::nullopt;
-  return UnitOnlyLoads(units, "units");
+  design.yaml = WriteMechanismYaml(m, comment, sweep, {}, UnitsFor(units));
+  LabelLengths(units, design.figures);
 }
 
 }  // namespace
@@ -269,14 +263,15 @@ std::string FunctionComment(const FunctionRequest& r, const FunctionDesign& d, c
 // A function design in the API's units. A design that was made but fails its check keeps its
 // lengths; one that misses a precision point was re-analysed on another assembly branch, so its
 // error (figures and curve) would belong to a different mechanism and is left out.
-Design ShownFunction(const FunctionRequest& r, const FunctionDesign& d, const std::string& by, const std::string& formula) {
+Design ShownFunction(const FunctionRequest& r, const FunctionDesign& d, const std::string& by, const std::string& formula,
+                     const std::optional<Loads>& units) {
   Design design;
   design.status = d.ok() ? DesignStatus::kOk : DesignStatus::kNoDesign;
   design.message = d.ok() ? d.message : d.Brief();
   if (d.status == FunctionStatus::kNoMechanism) return design;
   const bool four_bar = r.type == FunctionGenerator::kFourBar;
   const auto shown = [&](double v) { return four_bar ? RadToDeg(v) : v; };
-  const std::string unit = four_bar ? "deg" : "length";
+  const std::string unit = four_bar ? "deg" : "length";  // relabelled below with --units
   Figures f;
   f.Add("crank", d.crank, "length");
   f.Add("coupler", d.coupler, "length");
@@ -295,16 +290,18 @@ Design ShownFunction(const FunctionRequest& r, const FunctionDesign& d, const st
       design.curve.rows.push_back({e.x, RadToDeg(e.input), shown(e.desired), shown(e.generated), shown(e.error)});
   }
   design.figures = std::move(f.list);
+  LabelLengths(units, design.figures);
   if (!d.ok()) return design;
   design.model = Model::FromMechanism(d.mechanism);
   const double from = RadToDeg(r.input_from), to = RadToDeg(r.input_to);
-  design.yaml = WriteMechanismYaml(d.mechanism, FunctionComment(r, d, by, formula), {from, to, (to - from) / 360});
+  design.yaml = WriteMechanismYaml(d.mechanism, FunctionComment(r, d, by, formula), {from, to, (to - from) / 360}, {}, UnitsFor(units));
   return design;
 }
 
 }  // namespace
 
 Design SynthesiseFunction(const FunctionSpec& spec) {
+  const std::optional<Loads> units = UnitsOf(spec.units);
   Require(spec.type == "four-bar" || spec.type == "slider-crank", "type", "expected four-bar or slider-crank, found '" + spec.type + "'");
   Require(static_cast<bool>(spec.f), "f", "no function given");
   FunctionRequest request;
@@ -327,14 +324,15 @@ Design SynthesiseFunction(const FunctionSpec& spec) {
   Require(request.IsValid(&why), "function request", why);
   const FunctionDesign d = koppel::SynthesiseFunction(request);
   if (d.status == FunctionStatus::kInvalidRequest) BadInput("synthesis request", "function request", d.message);
-  return ShownFunction(request, d, "koppel::SynthesiseFunction", "f(x)");
+  return ShownFunction(request, d, "koppel::SynthesiseFunction", "f(x)", units);
 }
 
-Design SynthesiseFunctionFile(const std::string& path) {
+Design SynthesiseFunctionFile(const std::string& path, const std::string& unit_name) {
+  const std::optional<Loads> units = UnitsOf(unit_name);
   const FunctionSpecFile spec = ReadFunctionSpec(path);
   const FunctionDesign d = koppel::SynthesiseFunction(spec.request);
   if (d.status == FunctionStatus::kInvalidRequest) BadInput(path, "function request", d.message);
-  return ShownFunction(spec.request, d, "koppel synth function " + path, spec.formula);
+  return ShownFunction(spec.request, d, "koppel synth function " + path, spec.formula, units);
 }
 
 Design SynthesiseFit(const FitSpec& spec) {

@@ -56,6 +56,7 @@ PathDesigns SynthesisePathFromAtlas(const PathSpec& spec, const std::string& atl
 
 // The design as a mechanism file named `name` with `comment` at its top, its sweep one turn of
 // the crank from the assembly's angle by 1 deg.
-std::string PathDesignYaml(const PathDesign& design, const std::string& name, const std::string& comment);
+// `units`: the file's length unit, as CrankRockerSpec::units ("": none).
+std::string PathDesignYaml(const PathDesign& design, const std::string& name, const std::string& comment, const std::string& units = "");
 
 }  // namespace koppel

@@ -107,6 +107,7 @@ struct FunctionSpec {
   int points = 3;
   std::vector<double> at;
   double frame = 1;
+  std::string units;  // as CrankRockerSpec::units
 };
 // A design that was made but fails (it does not run through the whole input range, or the
 // solver's mechanism misses a precision point: another branch) is kNoDesign with its lengths as
@@ -117,7 +118,8 @@ Design SynthesiseFunction(const FunctionSpec& spec);
 // The same from a function spec file (koppel synth function SPEC.yaml; README "synth function"):
 // the file's function formula, ranges and points. InputError naming the file and line for a spec
 // that does not read or a request that is malformed.
-Design SynthesiseFunctionFile(const std::string& path);
+// `units`: as CrankRockerSpec::units.
+Design SynthesiseFunctionFile(const std::string& path, const std::string& units = "");
 
 // Least-squares fitting of any mechanism file to targets (koppel synth fit): `problem` is a fit
 // problem file (catalog/include/koppel/catalog/fit_problem.hpp: the mechanism, the free
@@ -152,6 +154,7 @@ struct MotionSpec {
   int grid = 0;              // three poses: also the circle points of an n x n grid (MotionGrid), those without a centre point left out
   bool require_crank = false;  // keep only four-bars whose input turns fully
   int threads = 0;           // 0: one per core
+  std::string units;         // as CrankRockerSpec::units: the four-bars' files and length figures
 };
 // The four-bars by mu_min, largest first. Each Design: figures A0_x, A0_y, A_x, A_y, B_x, B_y,
 // B0_x, B0_y (A0 A driven; A and B in the first pose), mu_min [deg] over the travel from the

@@ -15,6 +15,8 @@
 #include <cctype>
 #include <filesystem>
 #include <limits>
+#include <string>
+#include <utility>
 
 namespace koppel {
 namespace {
@@ -67,11 +69,17 @@ class MechanismReader {
       return;
     }
     if (node.IsDefined() && !node.IsNull()) {
+      std::string previous_value;  // the entry before's value, for the decimal-comma hint
       for (const YamlReader::Entry& e : r_.Entries(node, "parameters")) {
         const std::string path = Child("parameters", e.key);
+        const std::string before = std::exchange(previous_value, e.value.IsScalar() ? e.value.Scalar() : "");
         if (!r_.CheckName(e.key_node, path, "parameter", e.key)) continue;
         if (!ParameterSet::ValidName(e.key)) {
-          r_.Error(e.key_node, path, "'" + e.key + "' cannot be a parameter name (a letter then letters, digits, '_'; not pi or deg)");
+          // {l2: 130,5, e: 15}: the flow map reads "5" as a key of its own after l2: 130
+          const bool digits = !e.key.empty() && e.key.find_first_not_of("0123456789") == std::string::npos;
+          const bool decimal_comma = digits && e.value.IsNull() && !before.empty() && before.find_first_not_of("0123456789+-") == std::string::npos;
+          r_.Error(e.key_node, path, "'" + e.key + "' cannot be a parameter name (a letter then letters, digits, '_'; not pi or deg)" +
+                                         (decimal_comma ? " (a decimal comma? write " + before + "." + e.key + ")" : std::string()));
           continue;
         }
         std::optional<std::string> formula = e.value.IsScalar() ? std::optional<std::string>(e.value.Scalar()) : std::nullopt;

@@ -247,4 +247,13 @@ TEST_CASE("random garbage never crashes the reader", "[reader]") {
   }
 }
 
+// A decimal comma inside a flow map ({l2: 130,5, e: 15}) makes "5" a key of its own: the error
+// on that line says what was meant.
+TEST_CASE("a decimal comma in a flow map of parameters gets the hint", "[reader]") {
+  const std::string text = "koppel: 1\nname: slider\nparameters: {l1: 40, l2: 130,5, e: 15}\n";
+  const std::vector<Diagnostic> d = Bad(text);
+  REQUIRE_FALSE(d.empty());
+  CHECK(d[0].line == 3);
+  CHECK_THAT(d[0].message, Catch::Contains("'5' cannot be a parameter name") && Catch::Contains("a decimal comma? write 130.5"));
+}
 }  // namespace koppel::mechanism_file_test

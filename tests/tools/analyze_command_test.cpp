@@ -325,4 +325,20 @@ TEST_CASE("a slide whose meeting point runs off to infinity ends the walk there,
   }
 }
 
+// --at X: the one row at X, the same as the full sweep's row there (the same walk from the
+// assembly); with --from/--to/--step it is refused.
+TEST_CASE("analyze --at gives the sweep's row at that input", "[cli][analyze]") {
+  const std::string file = test::CatalogEntryPath("slider-crank-offset");
+  const test::RunResult one = test::RunKoppel("analyze " + file + " --at 30");
+  REQUIRE(one.exit_code == 0);
+  const test::RunResult all = test::RunKoppel("analyze " + file + " --step 1");
+  REQUIRE(all.exit_code == 0);
+  const std::string header = all.out.substr(0, all.out.find('\n') + 1);
+  const size_t row = all.out.find("\n30,");
+  REQUIRE(row != std::string::npos);
+  CHECK(one.out == header + all.out.substr(row + 1, all.out.find('\n', row + 1) - row));
+  CHECK(test::RunKoppel("analyze " + file + " --at 30 --from 0").exit_code == 2);
+  CHECK(test::RunKoppel("analyze " + file + " --at 30 --step 2").exit_code == 2);
+  CHECK(test::RunKoppel("analyze " + file + " --at thirty").exit_code == 2);
+}
 }  // namespace koppel::analyze_command_test

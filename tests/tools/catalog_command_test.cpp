@@ -103,6 +103,11 @@ TEST_CASE("catalog find by features, ranges, kind, class, motion and keyword", "
   CHECK(test::RunKoppel("catalog find --links six").exit_code == 2);
   CHECK(test::RunKoppel("catalog find --kind other").exit_code == 2);
   CHECK(test::RunKoppel("catalog find --class crank_rocker").exit_code == 2);
+  // a class word that several classes hold: they are suggested first
+  const test::RunResult straight = test::RunKoppel("catalog find --class straight-line");
+  CHECK(straight.exit_code == 2);
+  CHECK_THAT(straight.err, Catch::Contains("did you mean 'straight-line-approximate' or 'straight-line-exact'?"));
+  CHECK_THAT(test::RunKoppel("catalog find --class quick-retrun").err, Catch::Contains("did you mean 'quick-return'?"));
   CHECK(test::RunKoppel("catalog list --format xml").exit_code == 2);
 }
 

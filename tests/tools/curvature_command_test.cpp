@@ -93,4 +93,10 @@ TEST_CASE("poles --centrode: the coupler's centrodes, the moving one carried to 
   CHECK(at[2].get<double>() == Approx(at[6].get<double>()).margin(1e-9));
 }
 
+// Every length figure says the file's unit (mm here), the curvature its reciprocal.
+TEST_CASE("curvature labels lengths with the file's unit", "[cli][curvature]") {
+  const test::RunResult r = test::RunKoppel("curvature " + test::TestDataPath("slider-crank-loads.yaml") + " --at 30 --point coupler.S2");
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.out, Catch::Contains("\ncoupler.S2_x,77.80") && Catch::Contains(",mm\n") && Catch::Contains(",1/mm\n") && !Catch::Contains("length"));
+}
 }  // namespace koppel::curvature_command_test

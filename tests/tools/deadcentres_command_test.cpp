@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace koppel::deadcentres_command_test {
@@ -55,6 +56,11 @@ TEST_CASE("deadcentres lists the dead centre at input 0 and its summary", "[cli]
   CHECK(v.at("psi_a") == Approx(87.1340160174).margin(kPrinted));  // the issue's truth
   CHECK(v.at("psi_H") == Approx((folded.psi - extended.psi) * kDeg).margin(kPrinted));
   CHECK(v.at("psi_H") == Approx(51.4563618).margin(1e-7));
+  // the time ratio, slow stroke over fast at a constant crank speed: the crank's turns between the
+  // dead centres from the closed form, the larger over the smaller
+  const double forward = (folded.phi - extended.phi) * kDeg, slow = std::max(forward, 360 - forward), fast = std::min(forward, 360 - forward);
+  CHECK(v.at("time_ratio") == Approx(slow / fast).margin(1e-9));
+  CHECK(v.at("time_ratio") >= 1);
 }
 
 // issue 22 item 2: a transmission angle's summary is mu_min, mu_max and where (seed 000: mu_min =

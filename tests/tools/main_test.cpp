@@ -49,6 +49,15 @@ TEST_CASE("koppel NAME adds only NAME: every command of --help answers its own -
   CHECK_THAT(none.err, Catch::Contains("subcommand"));
 }
 
+// --help speaks to users: it points into the documentation (docs/...), not at README sections
+// that are no longer there, and names the source documents by title, not by a seed number.
+TEST_CASE("--help-all cites the documentation, never README sections or seed numbers", "[cli]") {
+  const test::RunResult r = test::RunKoppel("--help-all");
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.out, !Catch::Contains("README") && !Catch::Contains("seed 0") && !Catch::Contains("issue "));
+  CHECK_THAT(r.out, Catch::Contains("docs/mechanism-file.md"));
+}
+
 TEST_CASE("synth fit --quiet leaves stderr clean: no glog lines from starts that fail", "[cli][synth]") {
   const std::string data = KOPPEL_TEST_DATA_DIR;
   const test::RunResult ok = test::RunKoppel("synth fit " + data + "/fit-mzc-precision-points.yaml --quiet");

@@ -183,4 +183,14 @@ TEST_CASE("edit writes one self-contained editor page, or says that this build h
   CHECK(test::RunKoppel("edit no-such-file.yaml -o " + out).exit_code == 2);
 }
 
+// The axes say the file's length unit: the compressor in mm labels s [mm] and s' [mm/rad], never
+// "[length]"; a file without units keeps "[length]".
+TEST_CASE("plot --transfer labels lengths with the file's unit", "[cli][plot]") {
+  test::TempDir dir;
+  const std::string mm = (dir.path() / "mm.svg").string(), plain = (dir.path() / "plain.svg").string();
+  REQUIRE(test::RunKoppel("plot " + test::TestDataPath("slider-crank-loads.yaml") + " --transfer s -o " + mm).exit_code == 0);
+  CHECK_THAT(test::ReadText(mm), Catch::Contains("[mm]") && Catch::Contains("[mm/rad]") && !Catch::Contains("length"));
+  REQUIRE(test::RunKoppel("plot " + test::CatalogEntryPath("slider-crank-offset") + " --transfer s -o " + plain).exit_code == 0);
+  CHECK_THAT(test::ReadText(plain), Catch::Contains("[length]"));
+}
 }  // namespace koppel::plot_command_test

@@ -18,7 +18,7 @@ namespace {
 
 struct AnalyzeArgs {
   std::string file;
-  std::string from, to, step, at_branch_point;
+  std::string from, to, step, at, at_branch_point;
   std::vector<std::string> sets;
   std::string format = "csv";
   std::string out;
@@ -66,8 +66,11 @@ nlohmann::json JsonRow(const SweepTable& t, const double* values) {
 // The range from the flags, the file's sweep for what is not given (Model::Span), checked with
 // the flags' names before anything is allocated.
 SweepSpan SpanOf(const AnalyzeArgs& args, const Model& model) {
-  const SweepSpan span = model.Span(OptionalNumberFlag("--from", args.from), OptionalNumberFlag("--to", args.to),
-                                    OptionalNumberFlag("--step", args.step));
+  // --at X: the one row at X, walked from the assembly as every sweep is (the same branch)
+  const std::optional<double> at = OptionalNumberFlag("--at", args.at);
+  const SweepSpan span = at ? model.Span(at, at, std::nullopt)
+                            : model.Span(OptionalNumberFlag("--from", args.from), OptionalNumberFlag("--to", args.to),
+                                         OptionalNumberFlag("--step", args.step));
   CheckSampleCount(span.from, span.to, span.step, "--from/--to/--step");
   if (args.order < 0 || args.order > kMaxTransferOrder) {
     Complain("--from/--to/--step/--order: the order must lie between 0 and " + std::to_string(kMaxTransferOrder));
@@ -146,7 +149,12 @@ void AddAnalyzeCommand(CLI::App& app) {
   cmd->add_option("file", args->file, "Mechanism YAML file")->required();
   cmd->add_option("--from", args->from, "First input value [deg or length] (default: the file's sweep.from, else 0)");
   cmd->add_option("--to", args->to, "Last input value [deg or length] (default: the file's sweep.to, else 360)");
-  cmd->add_option("--step", args->step, "Input step [deg or length] (default: the file's sweep.step, else 1)");
+  CLI::Option* step = cmd->add_option("--step", args->step, "Input step [deg or length] (default: the file's sweep.step, else 1)");
+  cmd->add_option("--at", args->at, "One row at this input [deg or length], on the branch the sweep follows (instead of\n"
+                                    "--from/--to/--step)")
+      ->excludes("--from")
+      ->excludes("--to")
+      ->excludes(step);
   cmd->add_option("--set", args->sets, "Override a parameter: NAME=VALUE (a formula; repeatable)");
   cmd->add_option("--order", args->order, fmt::format("Highest transfer-function order in the table, 0..{} (default 2)", kMaxTransferOrder));
   AddBranchPointOption(cmd, args->at_branch_point);

@@ -125,7 +125,7 @@ void AddAtlasCommand(CLI::App& app) {
   cmd->require_subcommand(1);
   CLI::App* build = cmd->add_subcommand(
       "build",
-      "Draws N four-bars from the documented space (README, 'Path synthesis': link ratios log-uniform in [1/5, 5],\n"
+      "Draws N four-bars from the documented space (docs/synthesis.md, 'Path generation': link ratios log-uniform in [1/5, 5],\n"
       "coupler points over a box around the coupler, Grashof and non-Grashof alike) and stores each coupler curve's\n"
       "normalised Fourier descriptor with its dimensions. Entry i of seed S is the same whoever draws it: --shard k/n\n"
       "draws the k-th of n equal parts of the N (k from 0), so n machines or jobs build the parts and `atlas merge` joins\n"

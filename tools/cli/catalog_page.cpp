@@ -57,6 +57,7 @@ std::string OutputPlot(const CatalogPage& e, const std::string& name, std::vecto
     options.output = output;
     options.order = 2;
     options.range = CardRange(e, 2);
+    options.length_unit = e.length_unit;
     result = plot::TransferPlot(m, options);
   }
   if (result.status != plot::PlotStatus::kComplete) problems->push_back(name + ": " + result.Brief());

@@ -58,7 +58,7 @@ std::vector<double> ParseNumberListFlag(const std::string& flag, const std::stri
 
 void CheckCount(double count, const std::string& options, const CountLimit& limit) {
   if (count <= limit.value) return;
-  Complain(fmt::format("{} ask for {:.3g}, more than the limit of {:.0f} {} ({}, see README 'Limits'); change {}", options, count,
+  Complain(fmt::format("{} ask for {:.3g}, more than the limit of {:.0f} {} ({}, see docs/limits.md); change {}", options, count,
                        limit.value, limit.what, limit.name, options));
   throw Exit{kExitBadInput};
 }

@@ -46,6 +46,7 @@ Summary SummaryOf(const Model& model, const DeadCentres& d, const Units& u) {
   if (model.input_is_angle()) {
     summary.Add(input + "_H", d.forward_angle, "deg");
     summary.Add("phase_ratio", d.phase_ratio, "1");
+    summary.Add("time_ratio", d.time_ratio, "1");
   }
   return summary;
 }

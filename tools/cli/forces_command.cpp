@@ -104,7 +104,7 @@ void AddForcesCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "forces",
       "Drive torque and joint reactions over a sweep of the drive, from the masses and loads of the file\n"
-      "(README.md, 'Masses and loads'). Without --speed: statics, the torque that holds the loads at rest.\n"
+      "(docs/mechanism-file.md, 'Masses and loads'). Without --speed: statics, the torque that holds the loads at rest.\n"
       "With --speed: kinetostatics, the drive turning at that constant speed, inertia forces included.\n"
       "Columns: the input (degrees, or length for a P drive); torque [N m] (force [N] for a P drive), the\n"
       "torque the drive exerts on its joint's second link, from the joint reactions (Lagrange multipliers);\n"

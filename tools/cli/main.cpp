@@ -49,7 +49,7 @@ std::unique_ptr<CLI::App> MakeApp(int argc, char** argv) {
   auto app = std::make_unique<CLI::App>(
       "koppel - planar linkages (ebene Getriebe): position analysis, transfer functions, dead centres,\n"
       "coupler curves, a catalog of documented mechanisms and synthesis.\n"
-      "Mechanisms are YAML files (see README.md, 'Mechanism files'), or a catalog id where no such file is\n"
+      "Mechanisms are YAML files (see docs/mechanism-file.md), or a catalog id where no such file is\n"
       "(koppel analyze crank-rocker: the catalog's entry; koppel catalog list shows them). Angles are in degrees at the\n"
       "command line, lengths in the file's unit. Exit codes: 0 ok, 1 a check or solve failed, 2 bad input.",
       "koppel");

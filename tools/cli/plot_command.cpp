@@ -176,6 +176,7 @@ void Run(const Args& args) {
     if (options.output < 0) options.output = ResolveScalarOutput(m, args.transfer, "--transfer", args.file);  // exits 2 with the candidates
     options.order = args.order;
     options.range = range;
+    options.length_unit = model.length_unit();
     if (!options.IsValid(m, &why)) {
       Complain(why);
       throw Exit{kExitBadInput};

@@ -120,8 +120,8 @@ void AddSimulateCommand(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
   CLI::App* cmd = app.add_subcommand(
       "simulate",
-      "The motion of a one-DOF mechanism under a drive torque and the file's masses and loads (README.md,\n"
-      "'Masses and loads'): the equation of motion J_red phi'' + 1/2 J_red' phi'^2 = M(phi, phi', t),\n"
+      "The motion of a one-DOF mechanism under a drive torque and the file's masses and loads\n"
+      "(docs/mechanism-file.md, 'Masses and loads'): the equation of motion J_red phi'' + 1/2 J_red' phi'^2 = M(phi, phi', t),\n"
       "integrated by Boost.Odeint's Dormand-Prince 5(4) with error control, positions solved at every step.\n"
       "The drive torque [N m; N for a P drive] acts on the drive joint's second link: --torque FORMULA, a\n"
       "formula of the input (radians), its speed NAME_dot (rad/s), t [s], the outputs and the parameters\n"

@@ -221,7 +221,7 @@ void AddSynthCommand(CLI::App& app) {
 
   CLI::App* dc = cmd->add_subcommand(
       "deadcentre",
-      "Dead-centre synthesis (Totlagensynthese, seed 002); every design is re-analysed by the solver before it is printed.\n"
+      "Dead-centre synthesis (Totlagensynthese, as in 'Totlagensynthese der Kurbelschwinge'); every design is re-analysed by the solver before it is printed.\n"
       "crank-rocker: frame A0 = (0,0), B0 = (--frame, 0), crank A0A = l1, coupler AB = l2, rocker B0B = l3.\n"
       "  In the folded dead centre (innere Totlage, Decklage) the crank points away from B along the coupler; in the\n"
       "  extended one (aeussere Totlage, Strecklage) it points along the coupler towards B. phi0 is the angle the crank\n"
@@ -234,7 +234,7 @@ void AddSynthCommand(CLI::App& app) {
       "  --sense cw writes the mirror image, the document's drawing (\"Drehrichtung mathematisch negativ\").\n"
       "  Exit 1, with the reason, when no crank-rocker exists, when beta lies outside the arc LE, or when mu_min keeps\n"
       "  growing towards a degenerate end of the arc (phi0 = 180 deg: crank and rocker shrink to nothing).\n"
-      "slider-crank: seed 000's conventions (A0 = (0, -e), slide along x). phi0 from the folded to the extended dead centre\n"
+      "slider-crank: the conventions of 'Ebene Schubkurbel' (A0 = (0, -e), slide along x). phi0 from the folded to the extended dead centre\n"
       "  (90 < phi0 < 270 deg; phi0 > 180 puts A0 above the slide line, e < 0), the stroke s0 between them, and the offset\n"
       "  |e| (--offset) or beta (angle between the slide line and A0B_a), each within the range that gives a crank; by\n"
       "  default the offset that maximises mu_min. phi0 = 180 deg (centric) has no best design.\n"

@@ -41,7 +41,7 @@ void AddFunctionSubcommand(CLI::App& synth) {
       "function",
       "Function generation: a four-bar whose rocker angle (or a slider-crank whose slider displacement, `type: slider-crank`)\n"
       "follows y = f(x) while the crank angle follows x, both mapped linearly (SPEC.yaml: function, x, input, output, points\n"
-      "or at, frame; see README). Freudenstein's equation: exact for 3 precision points (Chebyshev spacing unless `at:`),\n"
+      "or at, frame; see docs/synthesis.md). Freudenstein's equation: exact for 3 precision points (Chebyshev spacing unless `at:`),\n"
       "least squares for more, then polished by the Ceres fit on the true output through the mechanism. Prints crank,\n"
       "coupler, rocker, frame (slider-crank: crank, coupler, offset), error_max, the largest structural error over the\n"
       "whole range (deg, or length) by the solver, and mu_min, the least transmission angle over the input range (deg; a\n"

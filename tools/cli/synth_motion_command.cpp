@@ -89,7 +89,7 @@ void Run(const Args& args) {
   const MotionReport report = Checked([&] { return SynthesiseMotionReport(spec, args.poses); });
   if (report.status == DesignStatus::kInvalidRequest)  // the work, estimated before it starts
     BadFlags(fmt::format("{}: {} dyads make {:.3g} four-bars to re-analyse, more than the limit of {:.0f} ({}, about 2.5 ms each; see "
-                         "README 'Limits'): fewer dyads",
+                         "docs/limits.md): fewer dyads",
                          n == 3 ? "--grid/--circle-point" : "--samples", report.dyads, report.four_bars, kMotionFourBars.value, kMotionFourBars.name));
   if (!report.paired) {  // no dyad: the notes say why
     for (const std::string& note : report.notes) Complain(args.poses + ": " + note);

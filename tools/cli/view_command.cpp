@@ -26,6 +26,7 @@ void Run(const Args& args) {
   if (!step && m.InputIsAngle()) step = 1.0;
   const SweepSpan span = model.Span(OptionalNumberFlag("--from", args.from), OptionalNumberFlag("--to", args.to), step);
   plot::ViewOptions options;
+  options.length_unit = model.length_unit();
   options.range.from = in(span.from);
   options.range.to = in(span.to);
   options.range.step = in(span.step);

@@ -415,7 +415,9 @@
       tr.appendChild(document.createElement('td')).appendChild(box);
       range.min = String(p.value - span); range.max = String(p.value + span); range.step = String(span / 200); range.value = String(p.value);
       box.value = String(p.value); box.step = 'any';
-      range.disabled = box.disabled = !formulasTrusted;
+      const unread = doc.parameters.find((q) => q.name === p.name && q.unread);
+      range.disabled = box.disabled = !formulasTrusted || !!unread;
+      if (unread) tr.title = unread.unread;
       range.addEventListener('change', () => api.set(p.name, +range.value));
       // an emptied box is no number (+'' would be 0)
       box.addEventListener('change', () => api.set(p.name, box.value.trim() === '' ? NaN : +box.value));
@@ -660,6 +662,9 @@
       if (!formulasTrusted) return { ok: false, message: message.textContent };
       const base = state || pending;
       if (!base.parameters.some((p) => p.name === name)) return { ok: false, message: "'" + name + "' is not a parameter of this file" };
+      // a parameter no formula reads would change nothing: refused as `--set` refuses it
+      const unread = doc.parameters.find((p) => p.name === name && p.unread);
+      if (unread) { say(unread.unread, true); return { ok: false, message: unread.unread }; }
       let next;
       try { next = evaluated(base, name, +value); } catch (e) { say(name + ' = ' + value + ': ' + e.message, true); return { ok: false, message: e.message }; }
       if (state && solved) hintFromPose(next.mechanism, pointsAt(frame));

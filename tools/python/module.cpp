@@ -209,7 +209,7 @@ void BindDeadCentres(py::module_& m) {
   py::class_<DeadCentres>(m, "DeadCentres",
                           "Dead centres of a scalar output (koppel deadcentres): points [{kind, input, value, d2}], and where "
                           "they pair up the stroke, input_a/input_i (extended/folded), value_a/value_i, forward_angle and "
-                          "phase_ratio; the output's minimum and maximum {at, input, value} (a transmission angle's mu_min "
+                          "phase_ratio, time_ratio (slow stroke over fast, >= 1); the output's minimum and maximum {at, input, value} (a transmission angle's mu_min "
                           "and mu_max; at: stationary, fold or range end), None when not found (extremes_message).")
       .def_property_readonly("status", [](const DeadCentres& d) { return ToString(d.status); })
       .def_readonly("message", &DeadCentres::message)
@@ -233,6 +233,7 @@ void BindDeadCentres(py::module_& m) {
       .def_readonly("value_i", &DeadCentres::value_i)
       .def_readonly("forward_angle", &DeadCentres::forward_angle)
       .def_readonly("phase_ratio", &DeadCentres::phase_ratio)
+      .def_readonly("time_ratio", &DeadCentres::time_ratio)
       .def_readonly("has_extremes", &DeadCentres::has_extremes)
       .def_property_readonly("minimum", [](const DeadCentres& d) { return ExtremeDict(d.has_extremes, d.minimum); })
       .def_property_readonly("maximum", [](const DeadCentres& d) { return ExtremeDict(d.has_extremes, d.maximum); })

@@ -102,6 +102,23 @@ TEST_CASE("editor mechanism: what the page got wrong is refused", "[editor]") {
   SECTION("not JSON") { CHECK_THROWS_AS(ModelFromEditorJson("{links"), InputError); }
 }
 
+// A parameter no formula of the model part reads carries the message that refuses setting it
+// (the page's set() says it, as --set and Model::With do); the others carry none.
+TEST_CASE("editor document: a parameter no formula reads says so", "[editor]") {
+  const Model model = Model::Load(std::string(KOPPEL_CATALOG_DIR) + "/watt-six-bar.yaml");
+  const json doc = json::parse(EditorDocumentJson(model));
+  int unread = 0;
+  for (const json& p : doc["parameters"]) {
+    if (!p.contains("unread")) {
+      CHECK_NOTHROW(model.With(p["name"].get<std::string>(), p["value"].get<double>()));
+      continue;
+    }
+    ++unread;
+    CHECK_THROWS_WITH(model.With(p["name"].get<std::string>(), 1.0), Catch::Contains(p["unread"].get<std::string>()));
+  }
+  CHECK(unread >= 1);
+}
+
 // The page's export: the document hands the page the user's text and the place of each value; a
 // change written at those places (SpliceScalars, as the page's module does) is the file that
 // Model::With's text gives (EditMechanismText, the CLI's --set written in place), for every

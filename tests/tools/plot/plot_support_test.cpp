@@ -27,14 +27,15 @@ double Cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Ve
 
 TEST_CASE("labels say the unit of each order", "[plot_support]") {
   const Mechanism m = FourBar();
-  CHECK(plot::InputLabel(m) == "φ [deg]");
-  CHECK(plot::DerivativeLabel(m, 0, "_x", 0) == "K_x [length]");
-  CHECK(plot::DerivativeLabel(m, 0, "_y", 2) == "K_y'' [length/rad²]");
-  CHECK(plot::DerivativeLabel(m, 1, "", 0) == "ψ [deg]");
-  CHECK(plot::DerivativeLabel(m, 1, "", 1) == "ψ' [rad/rad]");
-  CHECK(plot::DerivativeLabel(m, 1, "", 3) == "ψ''' [rad/rad³]");
-  CHECK(plot::DerivativeLabel(m, 1, "", 4) == "ψ^(4) [rad/rad^4]");
-  CHECK(plot::DerivativeLabel(m, 3, "", 0) == "μ [deg]");
+  CHECK(plot::InputLabel(m, "length") == "φ [deg]");
+  CHECK(plot::DerivativeLabel(m, 0, "_x", 0, "length") == "K_x [length]");
+  CHECK(plot::DerivativeLabel(m, 0, "_y", 2, "length") == "K_y'' [length/rad²]");
+  CHECK(plot::DerivativeLabel(m, 0, "_y", 2, "mm") == "K_y'' [mm/rad²]");  // the file's unit where it names one
+  CHECK(plot::DerivativeLabel(m, 1, "", 0, "length") == "ψ [deg]");
+  CHECK(plot::DerivativeLabel(m, 1, "", 1, "length") == "ψ' [rad/rad]");
+  CHECK(plot::DerivativeLabel(m, 1, "", 3, "length") == "ψ''' [rad/rad³]");
+  CHECK(plot::DerivativeLabel(m, 1, "", 4, "length") == "ψ^(4) [rad/rad^4]");
+  CHECK(plot::DerivativeLabel(m, 3, "", 0, "length") == "μ [deg]");
 }
 
 TEST_CASE("angles at order 0 and R-drive inputs are shown in degrees, nothing else", "[plot_support]") {

@@ -136,6 +136,7 @@ void EntryTexts(const CatalogEntry& e, CatalogPage* page) {
   page->to = c.to;
   page->step = c.step;
   page->mechanism = m;
+  page->length_unit = e.file.loads.LengthUnit();
 }
 
 }  // namespace

@@ -49,9 +49,21 @@ FeatureQuery ToFeatureQuery(const CatalogQuery& q) {
     api_detail::BadInput("catalog query", "kind", "expected transfer or guidance, found '" + q.kind + "'");
   }
   if (!q.klass.empty() && !IsCatalogClass(q.klass)) {
+    // the classes that hold the word (straight-line: straight-line-approximate and -exact), else
+    // the one a few edits away (quick-retrun), before the whole list
     std::string names;
-    for (const CatalogClass& c : CatalogClasses()) names += std::string(names.empty() ? "" : ", ") + c.name;
-    api_detail::BadInput("catalog query", "class", "unknown class '" + q.klass + "' (classes: " + names + ")");
+    std::vector<std::string> all, near;
+    for (const CatalogClass& c : CatalogClasses()) {
+      names += std::string(names.empty() ? "" : ", ") + c.name;
+      all.push_back(c.name);
+      if (std::string(c.name).find(q.klass) != std::string::npos) near.push_back(c.name);
+    }
+    if (near.empty())
+      if (const std::string nearest = NearestCatalogId(q.klass, all); !nearest.empty()) near.push_back(nearest);
+    std::string hint;
+    for (size_t i = 0; i < near.size(); ++i) hint += (i == 0 ? "did you mean '" : i + 1 == near.size() ? "' or '" : "', '") + near[i];
+    if (!hint.empty()) hint += "'?; ";
+    api_detail::BadInput("catalog query", "class", "unknown class '" + q.klass + "' (" + hint + "classes: " + names + ")");
   }
   query.klass = q.klass;
   query.motion = q.motion;

@@ -5,10 +5,12 @@
 #include "model_impl.hpp"
 
 #include "koppel/catalog/document_edit.hpp"
+#include "koppel/catalog/parameter_use.hpp"
 #include "koppel/core/angles.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <optional>
 
 namespace koppel {
@@ -125,10 +127,14 @@ std::string EditorDocumentJson(const Model& model) {
   doc["formulas"] = json::array();
   doc["unfollowed"] = json::array();
   std::vector<std::string> hint_keys;
+  const std::vector<std::string> read = ParametersRead(f);
   for (const auto& [path, formula] : f.formulas) {
     if (StartsWith(path, "parameters.")) {
       const std::string name = path.substr(11);
-      doc["parameters"].push_back({{"name", name}, {"formula", formula}, {"value", f.parameters.Value(name)}});
+      json p = {{"name", name}, {"formula", formula}, {"value", f.parameters.Value(name)}};
+      // setting a parameter no formula reads changes nothing: the page refuses it in the library's words
+      if (std::find(read.begin(), read.end(), name) == read.end()) p["unread"] = UnreadParameterMessage(name, read);
+      doc["parameters"].push_back(std::move(p));
       continue;
     }
     const std::vector<Target> targets = TargetsOf(m, path, &hint_keys);

@@ -38,16 +38,16 @@ std::vector<NamedValue> CurvatureReport::Quantities() const {
     add(prefix + "_y", p ? std::optional<double>(p->y) : std::nullopt, unit);
   };
   add(input_name, input, input_unit);
-  add_point(point, status == AnalysisStatus::kFailed ? std::nullopt : std::optional<Point2>(position), "length");
-  add_point("pole", pole, "length");
+  add_point(point, status == AnalysisStatus::kFailed ? std::nullopt : std::optional<Point2>(position), length_unit);
+  add_point("pole", pole, length_unit);
   add_point("pole_direction", pole_direction, "1");
-  add_point("inflection", inflection_centre, "length");
-  add("inflection_diameter", inflection_diameter, "length");
-  add_point("inflection_pole", inflection_pole, "length");
-  add_point("ball", ball_point, "length");
-  add("curvature", curvature, "1/length");
-  add("rho", rho, "length");
-  add_point("centre", centre, "length");
+  add_point("inflection", inflection_centre, length_unit);
+  add("inflection_diameter", inflection_diameter, length_unit);
+  add_point("inflection_pole", inflection_pole, length_unit);
+  add_point("ball", ball_point, length_unit);
+  add("curvature", curvature, "1/" + length_unit);
+  add("rho", rho, length_unit);
+  add_point("centre", centre, length_unit);
   return q;
 }
 
@@ -68,7 +68,8 @@ CurvatureReport Model::Curvature(const std::string& point, double input) const {
   out.message = r.message;
   out.input = input;
   out.input_name = input_name();
-  out.input_unit = input_is_angle() ? "deg" : "length";
+  out.length_unit = length_unit();
+  out.input_unit = input_is_angle() ? "deg" : out.length_unit;
   out.point = point;
   out.link = m.links[ref->link].name;
   if (r.status == AnalysisStatus::kFailed) return out;

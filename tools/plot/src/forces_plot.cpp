@@ -62,7 +62,7 @@ PlotResult ForcesPlot(const Mechanism& m, const Loads& loads, const ForcesPlotOp
 
   Panel drive;
   const double from = ShownInput(m, options.forces.sweep.from), to = ShownInput(m, options.forces.sweep.to);
-  drive.x = NiceAxis(InputLabel(m), std::min(from, to), std::max(from, to), angle);
+  drive.x = NiceAxis(InputLabel(m, loads.LengthUnit()), std::min(from, to), std::max(from, to), angle);
   drive.title = angle ? "drive torque [N m]" : "drive force [N]";
   Curve torque;
   torque.runs = Runs(result, [&](const ForcesRow& r) { return Eigen::Vector2d(ShownInput(m, r.input), r.drive); });

@@ -13,16 +13,16 @@ double ShownInput(const Mechanism& m, double input) { return m.InputIsAngle() ? 
 
 std::string InputName(const Mechanism& m) { return m.drive.input_name == "phi" ? "φ" : m.drive.input_name; }
 
-std::string InputLabel(const Mechanism& m) { return InputName(m) + (m.InputIsAngle() ? " [deg]" : " [length]"); }
+std::string InputLabel(const Mechanism& m, const std::string& length_unit) { return InputName(m) + " [" + (m.InputIsAngle() ? "deg" : length_unit) + "]"; }
 
-std::string DerivativeLabel(const Mechanism& m, int output, const std::string& component, int k) {
+std::string DerivativeLabel(const Mechanism& m, int output, const std::string& component, int k, const std::string& length_unit) {
   std::string name = m.outputs[output].name + component;
   if (name == "mu") name = "μ";
   if (name == "psi") name = "ψ";
   static const char* kPrimes[] = {"", "'", "''", "'''"};
   name += k <= 3 ? std::string(kPrimes[k]) : "^(" + std::to_string(k) + ")";
-  const std::string in = m.InputIsAngle() ? "rad" : "length";
-  const std::string out = m.OutputIsAngle(output) ? (k == 0 ? "deg" : "rad") : "length";
+  const std::string in = m.InputIsAngle() ? "rad" : length_unit;
+  const std::string out = m.OutputIsAngle(output) ? (k == 0 ? "deg" : "rad") : length_unit;
   if (k == 0) return name + " [" + out + "]";
   const std::string power = k == 1 ? "" : k == 2 ? "²" : k == 3 ? "³" : "^" + std::to_string(k);
   return name + " [" + out + "/" + in + power + "]";

@@ -13,11 +13,11 @@ namespace koppel::plot {
 
 // Input as shown: degrees for an R drive, length for a P drive.
 double ShownInput(const Mechanism& mechanism, double input);
-std::string InputLabel(const Mechanism& mechanism);
+std::string InputLabel(const Mechanism& mechanism, const std::string& length_unit);
 // The input's name as shown: φ for phi, else as the file names it.
 std::string InputName(const Mechanism& mechanism);
 // "s' [length/rad]", "ψ [deg]", "ψ'' [rad/rad²]" for order k.
-std::string DerivativeLabel(const Mechanism& mechanism, int output, const std::string& component, int k);
+std::string DerivativeLabel(const Mechanism& mechanism, int output, const std::string& component, int k, const std::string& length_unit);
 // Output value as shown: degrees for an angle output at order 0.
 double ShownOutput(const Mechanism& mechanism, int output, int k, double value);
 

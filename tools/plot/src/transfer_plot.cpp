@@ -18,9 +18,9 @@ namespace {
 // Samples in a plot: a few thousand at most, more only bloat the file.
 constexpr int kMaxTransferSamples = 20001;
 
-Axis InputAxis(const Mechanism& m, const SweepOptions& range) {
+Axis InputAxis(const Mechanism& m, const SweepOptions& range, const std::string& length_unit) {
   const double a = ShownInput(m, range.from), b = ShownInput(m, range.to);
-  Axis axis = NiceAxis(InputLabel(m), std::min(a, b), std::max(a, b), m.InputIsAngle());
+  Axis axis = NiceAxis(InputLabel(m, length_unit), std::min(a, b), std::max(a, b), m.InputIsAngle());
   return axis;
 }
 
@@ -81,7 +81,7 @@ PlotResult TransferPlot(const Mechanism& m, const TransferPlotOptions& options) 
   }
   for (int k = 0; k <= options.order; ++k) {
     Panel panel;
-    panel.x = InputAxis(m, options.range);
+    panel.x = InputAxis(m, options.range, options.length_unit);
     double low = 0, high = 0;
     for (int c = 0; c < out.Components(); ++c) {
       Curve curve;
@@ -95,7 +95,7 @@ PlotResult TransferPlot(const Mechanism& m, const TransferPlotOptions& options) 
       high = c == 0 ? b : std::max(high, b);
       panel.curves.push_back(std::move(curve));
     }
-    panel.title = DerivativeLabel(m, options.output, scalar ? "" : " (x, y)", k);
+    panel.title = DerivativeLabel(m, options.output, scalar ? "" : " (x, y)", k, options.length_unit);
     panel.y = NiceAxis(panel.title, low, high);
     MarkGaps(m, run, panel, k == 0);
     for (const DeadCentre& d : dead.points) {
@@ -135,13 +135,13 @@ PlotResult MuPlot(const Mechanism& m, const MuPlotOptions& options) {
   // μ_min and where: a stationary point, a fold or an end of the range (extremes.hpp)
   const OutputExtremes extremes = FindOutputExtremes(m, options.output, 0, options.range);
   Panel panel;
-  panel.x = InputAxis(m, options.range);
-  panel.title = "transmission angle " + DerivativeLabel(m, options.output, "", 0);
+  panel.x = InputAxis(m, options.range, options.length_unit);
+  panel.title = "transmission angle " + DerivativeLabel(m, options.output, "", 0, options.length_unit);
   Curve curve;
   curve.runs = InputRuns(m, run, column, options.output, 0);
   double low, high;
   YRange(curve.runs, &low, &high);
-  panel.y = NiceAxis(DerivativeLabel(m, options.output, "", 0), std::min(0.0, low), std::max(90.0, high), true);
+  panel.y = NiceAxis(DerivativeLabel(m, options.output, "", 0, options.length_unit), std::min(0.0, low), std::max(90.0, high), true);
   panel.curves.push_back(std::move(curve));
   MarkGaps(m, run, panel, true);
   if (Usable(extremes.status)) {

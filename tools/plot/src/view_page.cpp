@@ -31,7 +31,8 @@ double Rounded(double v) {
 // Each output's page data: a point's trace in the scheme and its x and y in the readout; any
 // other output's chart of its value and transfer functions (a transmission angle: its value only),
 // also in the readout.
-void AddViewOutputs(const Mechanism& m, const SampledRun& run, SchemeScene* scene, nlohmann::json* charts, nlohmann::json* readout) {
+void AddViewOutputs(const Mechanism& m, const SampledRun& run, const std::string& length_unit, SchemeScene* scene, nlohmann::json* charts,
+                    nlohmann::json* readout) {
   for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
     const Output& out = m.outputs[o];
     if (out.kind == OutputKind::kPoint) {
@@ -54,7 +55,7 @@ void AddViewOutputs(const Mechanism& m, const SampledRun& run, SchemeScene* scen
     for (int k = 0; k < orders; ++k) {
       std::vector<double> v;
       for (int i = 0; i < run.size(); ++i) v.push_back(Rounded(ShownOutput(m, o, k, run.outputs(i, run.Column(m, o, 0, k)))));
-      const std::string label = DerivativeLabel(m, o, "", k);
+      const std::string label = DerivativeLabel(m, o, "", k, length_unit);
       series.push_back({{"label", label}, {"values", v}});
       readout->push_back({{"label", label}, {"values", v}});
     }
@@ -81,7 +82,7 @@ PlotResult ViewPage(const Mechanism& m, const ViewOptions& options) {
   nlohmann::json data;
   data["title"] = options.title.empty() ? m.name : options.title;
   const std::string input = m.drive.input_name == "phi" ? "φ" : m.drive.input_name;
-  data["input_label"] = input + (m.InputIsAngle() ? " [deg]" : "");
+  data["input_label"] = input + " [" + (m.InputIsAngle() ? "deg" : options.length_unit) + "]";
   data["coordinates"] = run.poses.cols();
   std::vector<double> poses, inputs;
   for (int i = 0; i < run.size(); ++i) {
@@ -99,7 +100,7 @@ PlotResult ViewPage(const Mechanism& m, const ViewOptions& options) {
   data["message"] = run.complete ? "" : run.message;
   nlohmann::json charts = nlohmann::json::array(), readout = nlohmann::json::array();
   SchemeScene scene;
-  AddViewOutputs(m, run, &scene, &charts, &readout);
+  AddViewOutputs(m, run, options.length_unit, &scene, &charts, &readout);
   data["charts"] = charts;
   data["readout"] = readout;
   scene.q = run.poses.row(0).transpose();

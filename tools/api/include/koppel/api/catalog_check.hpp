@@ -103,6 +103,7 @@ struct CatalogPage {
   std::vector<CatalogFigure> figures;
   CatalogCheckReport report;
   Mechanism mechanism;  // for the page's pictures
+  std::string length_unit = "length";  // the file's ("mm"), for the pictures' labels
 };
 
 // The entry `id` of the catalog in `directory`, its checks run. InputError as CheckCatalog.

@@ -23,6 +23,7 @@ namespace koppel {
 // The page's document as JSON text: {"title", "file", "input": {"name", "angle", "unit"},
 // "parameters": [{"name", "formula", "value"}], "formulas": [{"path", "formula", "value",
 // "target", "scale"}], "unfollowed": [key paths], "has_loads", "mechanism": EditorMechanismJson,
+// (a parameter no formula reads also has "unread": the message that refuses setting it, as --set),
 // "source": {"text", "file", "places": {key path: [begin, end, quote]}} or null}: the user's text
 // (with the parameters set so far written in) and where each parameter and followed formula is
 // written in it (koppel/catalog/document_splice.hpp), so that the page's export changes those

@@ -29,7 +29,8 @@ struct CurvatureReport {
   AnalysisStatus status = AnalysisStatus::kNotRun;  // complete; partial: some quantities do not exist; failed: no pose
   std::string message;
   double input = 0;       // [deg | length]
-  std::string input_name, input_unit;  // "phi", "deg" or "length"
+  std::string input_name, input_unit;  // "phi", "deg" or the length unit
+  std::string length_unit = "length";  // the file's ("mm"): the unit of every length figure
   std::string point;      // the point as named, e.g. "K"
   std::string link;       // the link that carries it
   Point2 position;        // K_x, K_y

@@ -140,8 +140,10 @@ struct DeadCentres {
   bool has_stroke = false;
   // input_a / input_i: the drive at the extended / folded dead centre; value_a / value_i: the
   // output there; stroke = |value_a - value_i|; forward_angle: the crank's turn from input_a to
-  // input_i (R drive, [deg]); phase_ratio = forward_angle / (360 - forward_angle).
-  double input_a = 0, input_i = 0, value_a = 0, value_i = 0, stroke = 0, forward_angle = 0, phase_ratio = 0;
+  // input_i (R drive, [deg]); phase_ratio = forward_angle / (360 - forward_angle); time_ratio: the
+  // slow stroke's duration over the fast one's at a constant crank speed, max(phase_ratio,
+  // 1 / phase_ratio) >= 1 (R drive; 0 for a P drive, as phase_ratio).
+  double input_a = 0, input_i = 0, value_a = 0, value_i = 0, stroke = 0, forward_angle = 0, phase_ratio = 0, time_ratio = 0;
   // The output's least and largest value over the range, from the same search (a transmission
   // angle's mu_min and mu_max; koppel deadcentres --summary); false when they could not be had
   // (extremes_message says why).

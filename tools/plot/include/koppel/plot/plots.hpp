@@ -34,6 +34,7 @@ struct TransferPlotOptions {
   int output = -1;    // index into mechanism.outputs
   int order = 2;      // panels for the 0th..order-th transfer function (0..kMaxOrder)
   SweepOptions range;  // radians (R drive) or length; its step is the sample spacing
+  std::string length_unit = "length";  // the file's length unit, for the axes' labels ("mm")
   bool IsValid(const Mechanism& mechanism, std::string* why) const;
 };
 // One panel per order, sharing the input axis; dead centres of a scalar output as rules and
@@ -43,6 +44,7 @@ PlotResult TransferPlot(const Mechanism& mechanism, const TransferPlotOptions& o
 struct MuPlotOptions {
   int output = -1;  // a transmission-angle output
   SweepOptions range;
+  std::string length_unit = "length";  // the file's length unit, for the input axis's label
   bool IsValid(const Mechanism& mechanism, std::string* why) const;
 };
 // μ over the input, μ_min marked (the least sample or a refined stationary minimum, whichever

@@ -16,6 +16,7 @@ namespace koppel::plot {
 struct ViewOptions {
   SweepOptions range;  // radians (R drive) or length
   std::string title;
+  std::string length_unit = "length";  // the file's length unit, for the charts' labels ("mm")
   bool IsValid(std::string* why) const;
 };
 

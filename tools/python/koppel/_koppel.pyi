@@ -57,6 +57,7 @@ class DeadCentres:
     value_i: float
     forward_angle: float
     phase_ratio: float
+    time_ratio: float
     has_extremes: bool
     minimum: Optional[Dict[str, Any]]
     maximum: Optional[Dict[str, Any]]

@@ -8,6 +8,8 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 
 namespace koppel {
@@ -46,6 +48,17 @@ class LoadsReader {
         loads_.metres_per_unit = metres;
         loads_.length_unit_given = true;
         loads_.length_unit_name = name;
+        return;
+      }
+    }
+    // a unit's name that is not one of koppel's (inch, feet): say which names there are, rather
+    // than that the word is no formula
+    if (length.IsScalar()) {
+      const std::string& word = length.Scalar();
+      const bool is_word = !word.empty() && std::all_of(word.begin(), word.end(), [](unsigned char c) { return std::isalpha(c) != 0; });
+      if (is_word && !file_.parameters.Has(word)) {
+        r_.Error(length, "units.length",
+                 "unknown length unit '" + word + "': the length unit must be " + NamedLengthUnitList() + " or a positive number of metres");
         return;
       }
     }

@@ -166,8 +166,10 @@ TEST_CASE("bad masses and loads are reported at their line", "[loads]") {
   ExpectError(Replace(good, "    cg: [0, -10]\n", ""), "mass: 1.5", "mass and its centre of gravity (cg) together");
   ExpectError(Replace(good, "    frame: true\n", "    frame: true\n    mass: 3\n    cg: [0, 0]\n"), "mass: 3", "is the frame");
   ExpectError(Replace(good, "    inertia: 0.002\n", "    inertia: 0.002\n    inertiaa: 1\n"), "inertiaa", "did you mean 'inertia'");
-  ExpectError(Replace(good, "units: {length: mm}", "units: {length: furlong}"), "furlong", "unknown name 'furlong'");
+  ExpectError(Replace(good, "units: {length: mm}", "units: {length: furlong}"), "furlong", "unknown length unit 'furlong'");
   ExpectError(Replace(good, "units: {length: mm}", "units: {length: -2}"), "length: -2", "positive number of metres");
+  // a unit word koppel does not know: the names it knows, not "does not parse"
+  ExpectError(Replace(good, "units: {length: mm}", "units: {length: inch}"), "length: inch", "unknown length unit 'inch': the length unit must be m, dm, cm, mm, um, km, in, ft");
   ExpectError(Replace(good, "gravity: [0, -9.81]", "gravity: 9.81"), "gravity: 9.81", "expected a point");
   ExpectError(Replace(good, "magnitude: F0*(1 + s/1000)", "magnitude: F0*(1 + q/1000)"), "piston", "unknown name 'q'");
   ExpectError(Replace(good, "force: slider.B", "force: slider.Q"), "piston", "'slider.Q' is no point");

@@ -539,8 +539,12 @@
         written.add(f.path);
         edit(f.path, hint.values[f.path], "'" + f.path + "'");
       }
-      if (!written.size) text = appendAssembly(text, hint);
-      sameBranch = readsBackAsShown(hintOf(hint));
+      // a file with an assembly block of no points (only its input) pins no loop: its check
+      // assembles from the input alone; a block koppel cannot write into is never doubled
+      const hasBlock = /^assembly\s*:/m.test(text);
+      if (!written.size && !hasBlock) text = appendAssembly(text, hint);
+      const pinned = hint.fromFile || (!written.size && !hasBlock);
+      sameBranch = readsBackAsShown(hintOf(pinned ? hint : { input: hint.input, points: [] }));
       notes.push(sameBranch ? (written.size ? "its 'assembly:' block" : "an 'assembly:' block appended") + ' holds the pose shown, so that koppel reads it on this branch'
                             : "koppel assembles the exported file on another branch than the one shown: add the points that pin it to its 'assembly:' block");
     }
@@ -597,7 +601,7 @@
       values['assembly.points.' + k + '[1]'] = xy[1];
       points.push([k, xy]);
     }
-    return { input: input, points: points, values: values };
+    return { input: input, points: points, values: values, fromFile: fileKeys.length > 0 };
   }
   function appendAssembly(text, hint) {
     const number = (v) => String(+v.toPrecision(15));

@@ -7,6 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
 
 namespace koppel {
 namespace {
@@ -66,12 +70,11 @@ std::size_t ClosingQuote(const std::string& text, std::size_t open) {
   return std::string::npos;
 }
 
-ScalarPlace FindPlace(const std::string& text, const std::string& file_name, const std::string& path, const YAML::Node& root) {
-  const std::optional<YAML::Node> node = Locate(root, path, 0);
-  if (!node || !node->IsScalar()) Refuse(file_name, path, "the file holds no single value at '" + path + "' to change");
-  const std::string& value = node->Scalar();
+// The place of the scalar `node` (read at `path`) in the text.
+ScalarPlace PlaceOf(const std::string& text, const std::string& file_name, const std::string& path, const YAML::Node& node) {
+  const std::string& value = node.Scalar();
   // yaml-cpp's mark is the scalar's first byte; an anchor or tag before it moves it along the line
-  std::size_t begin = node->Mark().pos < 0 ? text.size() : static_cast<std::size_t>(node->Mark().pos);
+  std::size_t begin = node.Mark().pos < 0 ? text.size() : static_cast<std::size_t>(node.Mark().pos);
   const std::size_t line_end = std::min(text.find('\n', std::min(begin, text.size())), text.size());
   for (; begin < line_end; ++begin) {
     if (text[begin] == '"' || text[begin] == '\'') {
@@ -92,6 +95,12 @@ ScalarPlace FindPlace(const std::string& text, const std::string& file_name, con
                               "'): it cannot be changed in place");
 }
 
+ScalarPlace FindPlace(const std::string& text, const std::string& file_name, const std::string& path, const YAML::Node& root) {
+  const std::optional<YAML::Node> node = Locate(root, path, 0);
+  if (!node || !node->IsScalar()) Refuse(file_name, path, "the file holds no single value at '" + path + "' to change");
+  return PlaceOf(text, file_name, path, *node);
+}
+
 }  // namespace
 
 TextSpan ScalarSpan(const std::string& text, const std::string& file_name, const std::string& key_path) {
@@ -100,6 +109,30 @@ TextSpan ScalarSpan(const std::string& text, const std::string& file_name, const
 
 ScalarPlace ScalarPlaceAt(const std::string& text, const std::string& file_name, const std::string& key_path) {
   return FindPlace(text, file_name, key_path, ParseYamlText(text, file_name));
+}
+
+std::unordered_map<std::string, ScalarPlace> ScalarPlaces(const std::string& text, const std::string& file_name) {
+  std::unordered_map<std::string, ScalarPlace> places;
+  // one walk of the tree (a stack, not recursion: a hostile file may nest deeply), each scalar's
+  // key path as MechanismFile::formulas names it
+  std::vector<std::pair<YAML::Node, std::string>> stack{{ParseYamlText(text, file_name), ""}};
+  while (!stack.empty()) {
+    const auto [node, path] = std::move(stack.back());
+    stack.pop_back();
+    if (node.IsScalar()) {
+      try {
+        places.emplace(path, PlaceOf(text, file_name, path, node));
+      } catch (const InputError&) {
+        // written over several lines: no place
+      }
+    } else if (node.IsSequence()) {
+      for (std::size_t i = 0; i < node.size(); ++i) stack.emplace_back(node[i], path + "[" + std::to_string(i) + "]");
+    } else if (node.IsMap()) {
+      for (auto it = node.begin(); it != node.end(); ++it)
+        if (it->first.IsScalar()) stack.emplace_back(it->second, path.empty() ? it->first.Scalar() : path + "." + it->first.Scalar());
+    }
+  }
+  return places;
 }
 
 std::string EditMechanismText(const std::string& text, const std::string& file_name, const DocumentChanges& changes) {

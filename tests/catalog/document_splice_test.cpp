@@ -33,4 +33,26 @@ TEST_CASE("SpliceScalars refuses a place outside the text and two edits of one v
   CHECK_THROWS_WITH(SpliceScalars(text, "t.yaml", {{{{3, 4}, '\0'}, "2", "x"}, {{{3, 4}, '\0'}, "3", "y"}}), Catch::Contains("two changes of the same value: x and y"));
 }
 
+// ScalarPlaces reads the text once and names every scalar on one line by its key path, as
+// ScalarPlaceAt finds it path by path (the reference); a file of 20 000 parameters included (the
+// editor document asks for the place of each).
+TEST_CASE("ScalarPlaces gives every value's place from one reading", "[catalog][document_splice]") {
+  const std::string text = "parameters: {a: 1, b: '2'}  # flow\nlinks:\n  f: {points: {A: [a, \"0\"]}}\nname: |\n  two\n  lines\n";
+  const auto places = ScalarPlaces(text, "t.yaml");
+  for (const std::string path : {"parameters.a", "parameters.b", "links.f.points.A[0]", "links.f.points.A[1]"}) {
+    INFO(path);
+    REQUIRE(places.count(path) == 1);
+    const ScalarPlace one = ScalarPlaceAt(text, "t.yaml", path);
+    CHECK((places.at(path).span.begin == one.span.begin && places.at(path).span.end == one.span.end && places.at(path).quote == one.quote));
+  }
+  CHECK(places.count("name") == 0);  // over several lines: no place
+  std::string many = "parameters:\n";
+  for (int i = 0; i < 20000; ++i) many += "  p" + std::to_string(i) + ": " + std::to_string(i) + "\n";
+  const auto all = ScalarPlaces(many, "many.yaml");
+  REQUIRE(all.count("parameters.p19999") == 1);
+  const TextSpan last = all.at("parameters.p19999").span;
+  CHECK(many.substr(last.begin, last.end - last.begin) == "19999");
+  CHECK(all.size() == 20000);
+}
+
 }  // namespace koppel::document_splice_test

@@ -101,12 +101,10 @@ json SourceOf(const Model& model, const json& doc) {
   const std::string text = model.ToYaml();
   const std::string& file = ModelAccess::File(model).path;
   json places = json::object();
+  const std::unordered_map<std::string, ScalarPlace> all = ScalarPlaces(text, file);
   const auto place = [&](const std::string& path) {
-    try {
-      const ScalarPlace p = ScalarPlaceAt(text, file, path);
-      places[path] = {p.span.begin, p.span.end, p.quote == '\0' ? "" : std::string(1, p.quote)};
-    } catch (const InputError&) {
-    }
+    const auto p = all.find(path);
+    if (p != all.end()) places[path] = {p->second.span.begin, p->second.span.end, p->second.quote == '\0' ? "" : std::string(1, p->second.quote)};
   };
   for (const json& p : doc["parameters"]) place("parameters." + p["name"].get<std::string>());
   for (const json& f : doc["formulas"])

@@ -2,6 +2,7 @@
 
 #include "koppel/catalog/mechanism_file.hpp"  // InputError
 #include "input_file.hpp"
+#include "koppel/core/angles.hpp"
 #include "yaml_reader.hpp"
 
 #include <cmath>
@@ -37,7 +38,7 @@ DesignSpace ParseDesignSpaceText(const std::string& text, const std::string& pat
   YamlReader r(path, nullptr);
   r.set_fallback(YAML::Mark());
   if (!r.ExpectMap(root, "")) throw InputError(r.diagnostics());
-  r.CheckKeys(root, "", {"lengths", "ratio", "pivots", "input"});
+  r.CheckKeys(root, "", {"lengths", "ratio", "pivots", "input", "A0", "frame_angle", "coupler_point"});
   DesignSpace space;
   if (const YAML::Node n = root["lengths"]; n.IsDefined()) {
     space.lengths = Interval(r, n, "lengths");
@@ -60,6 +61,21 @@ DesignSpace ParseDesignSpaceText(const std::string& text, const std::string& pat
     else if (word == "any") space.input = InputTurn::kAny;
     else if (word) r.Error(n, "input", "expected crank or any, found '" + *word + "'");
   }
+  if (const YAML::Node n = root["A0"]; n.IsDefined()) {
+    if (!n.IsSequence() || n.size() != 2) {
+      r.Error(n, "A0", "expected [x, y]");
+    } else if (const auto x = r.Number(n[0], Index("A0", 0)), y = r.Number(n[1], Index("A0", 1)); x && y) {
+      if (!std::isfinite(*x) || !std::isfinite(*y)) r.Error(n, "A0", "expected finite numbers");
+      else space.a0 = Eigen::Vector2d(*x, *y);
+    }
+  }
+  if (const YAML::Node n = root["frame_angle"]; n.IsDefined()) {
+    if (const auto v = r.Number(n, "frame_angle")) {
+      if (!std::isfinite(*v)) r.Error(n, "frame_angle", "expected a finite angle in degrees");
+      else space.frame_angle = DegToRad(*v);
+    }
+  }
+  if (const YAML::Node n = root["coupler_point"]; n.IsDefined()) space.coupler_point = Interval(r, n, "coupler_point");
   if (std::string why; r.diagnostics().empty() && !space.IsValid(&why)) r.Error(root, "", why);
   if (!r.diagnostics().empty()) throw InputError(r.diagnostics());
   return space;

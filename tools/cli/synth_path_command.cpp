@@ -5,6 +5,7 @@
 #include "koppel/api/path_synthesis.hpp"
 #include "koppel/catalog/design_space_file.hpp"
 #include "koppel/catalog/length_units.hpp"
+#include "koppel/core/angles.hpp"
 #include "model_loading.hpp"
 
 #include <fmt/core.h>
@@ -20,12 +21,12 @@ namespace synth_path_command {  // this file's own names, apart from the other c
 namespace {
 
 struct Args {
-  std::string points, atlas, top = "10", candidates, dir, out, threads, format = "csv", design, units;
+  std::string points, atlas, top = "10", candidates, dir, out, threads, format = "csv", design, units, timing_step, starts, seed;
   bool open = false;
 };
 
 // POINTS.csv (koppel/api/path_synthesis.hpp); every bad line reported.
-std::vector<Eigen::Vector2d> ReadPoints(const std::string& path) {
+TimedPathPoints ReadPoints(const std::string& path) {
   try {
     return ReadPathPointsFile(path);
   } catch (const InputError& e) {
@@ -37,10 +38,17 @@ std::vector<Eigen::Vector2d> ReadPoints(const std::string& path) {
 // A design as a mechanism file in --dir, its comment saying where it came from.
 void WriteDesign(const Args& args, const PathDesign& l, size_t i) {
   const std::string name = fmt::format("path-{}", i + 1);
+  const std::string origin = args.atlas.empty()
+                                 ? fmt::format("{}", l.fit.substr(0, 200))
+                                 : fmt::format("atlas curve {} of seed {}, polished by the fit through this mechanism: {}", l.atlas_index,
+                                               l.atlas_seed, l.fit.substr(0, 200));
+  const std::string command = args.atlas.empty() ? args.points + (args.timing_step.empty() ? "" : " --timing-step " + args.timing_step)
+                                                 : args.points + " --atlas " + args.atlas;
   const std::string comment = fmt::format(
-      "Linkage {} of koppel synth path {} --atlas {}: its coupler point P passes the points with an RMS distance of {:.6g}\n"
-      "(atlas curve {} of seed {}, polished by the fit through this mechanism: {}). Grashof type {}.{}",
-      i + 1, args.points, args.atlas, l.error, l.atlas_index, l.atlas_seed, l.fit.substr(0, 200), l.grashof,
+      "Linkage {} of koppel synth path {}: its coupler point P passes the points with an RMS distance of {:.6g}\n"
+      "(sum of squared distances {:.6g}; the crank at {:.6g} deg from the frame line A0 -> B0 at the first point;\n"
+      "{}). Grashof type {}.{}",
+      i + 1, command, l.error, l.sse, RadToDeg(l.phi_1), origin, l.grashof,
       l.cognate_of >= 0 ? fmt::format("\nA Roberts cognate of linkage {}: the same coupler curve from another four-bar.", l.cognate_of + 1) : "");
   WriteOutput((std::filesystem::path(args.dir) / (name + ".yaml")).string(), PathDesignYaml(l, name, comment, args.units));
 }
@@ -49,7 +57,30 @@ void Run(const Args& args) {
   CheckFormat(args.format);
   if (!args.units.empty()) Checked([&] { return UnitOnlyLoads(args.units, "units"); });  // before the search: exit 2
   PathSpec request;
-  request.points = ReadPoints(args.points);
+  const TimedPathPoints read = ReadPoints(args.points);
+  request.points = read.points;
+  request.timing = read.phi;
+  if (!args.timing_step.empty()) request.timing_step = DegToRad(ParseNumberFlag("--timing-step", args.timing_step));
+  if (!args.starts.empty()) request.starts = ParseCountFlag("--starts", args.starts, 1, 1'000'000);
+  if (!args.seed.empty()) request.seed = static_cast<std::uint64_t>(ParseCountFlag("--seed", args.seed, 0, 2'000'000'000));
+  const bool timed = !request.timing.empty() || request.timing_step;
+  if (timed && !args.atlas.empty()) {
+    Complain("--atlas: not read when the timing is prescribed (" + std::string(request.timing.empty() ? "--timing-step" : "the phi column of " + args.points) +
+             "): the timed search is global; leave --atlas out");
+    throw Exit{kExitBadInput};
+  }
+  if (!timed && args.atlas.empty()) {
+    Complain(args.points + ": the timing is free (no phi column, no --timing-step): --atlas FILE is needed (koppel atlas build)");
+    throw Exit{kExitBadInput};
+  }
+  if (timed && !args.candidates.empty()) {
+    Complain("--candidates: atlas curves are not searched when the timing is prescribed; --starts sets the timed search's work");
+    throw Exit{kExitBadInput};
+  }
+  if (!timed && (!args.starts.empty() || !args.seed.empty())) {
+    Complain(std::string(args.starts.empty() ? "--seed" : "--starts") + ": only the timed search (a phi column or --timing-step) draws random starts");
+    throw Exit{kExitBadInput};
+  }
   request.open = args.open;
   request.top = ParseCountFlag("--top", args.top, 1, 1000);
   if (!args.candidates.empty()) request.candidates = ParseCountFlag("--candidates", args.candidates, 1, 10000);
@@ -65,19 +96,26 @@ void Run(const Args& args) {
     throw Exit{result.invalid_request ? kExitBadInput : kExitFailed};
   }
   MixedTable t;
-  t.columns = {"rank", "error", "A0_x", "A0_y", "B0_x", "B0_y", "crank", "coupler", "rocker", "frame", "K_along", "K_left", "grashof", "cognate_of"};
+  t.columns = {"rank", "error", "A0_x", "A0_y", "B0_x", "B0_y", "crank", "coupler", "rocker", "frame", "K_along", "K_left", "grashof", "cognate_of",
+               "sse", "phi_1"};
   if (!args.dir.empty()) MakeOutputDirectory(args.dir);
   for (size_t i = 0; i < result.designs.size(); ++i) {
     const PathDesign& l = result.designs[i];
     // a Roberts cognate of a better row: that row's rank; else empty (null in JSON)
     const MixedTable::Cell cognate_of = l.cognate_of >= 0 ? MixedTable::Cell(static_cast<double>(l.cognate_of + 1)) : MixedTable::Cell();
     t.rows.push_back({static_cast<double>(i + 1), l.error, l.a0.x(), l.a0.y(), l.b0.x(), l.b0.y(), l.crank, l.coupler, l.rocker, l.frame,
-                      l.coupler_point.x(), l.coupler_point.y(), l.grashof, cognate_of});
+                      l.coupler_point.x(), l.coupler_point.y(), l.grashof, cognate_of, l.sse, RadToDeg(l.phi_1)});
     if (!args.dir.empty()) WriteDesign(args, l, i);
   }
   WriteOutput(args.out, t.Text(args.format));
-  std::cerr << fmt::format("koppel synth path: {} points, {} atlas curves; best RMS distance {:.3g}; {} repeats of a better design dropped\n",
-                           request.points.size(), result.atlas_curves, result.designs.front().error, result.duplicates);
+  if (timed)
+    std::cerr << fmt::format("koppel synth path: {} points, timing prescribed; {} random starts, {} inside the design space; best sse {:.6g} "
+                             "(RMS distance {:.3g}); {} designs dropped by the re-analysis, {} repeats of a better design\n",
+                             request.points.size(), result.starts, result.admitted_starts, result.designs.front().sse, result.designs.front().error,
+                             result.failed_reanalysis, result.duplicates);
+  else
+    std::cerr << fmt::format("koppel synth path: {} points, {} atlas curves; best RMS distance {:.3g}; {} repeats of a better design dropped\n",
+                             request.points.size(), result.atlas_curves, result.designs.front().error, result.duplicates);
 }
 
 }  // namespace
@@ -95,17 +133,24 @@ void AddPathSubcommand(CLI::App& synth) {
       "with each point's crank angle free. One CSV row per linkage, best first: rank, error (the RMS distance of the\n"
       "points from the polished coupler curve, in the points' unit), the pivots, crank A0A, coupler AB, rocker B0B,\n"
       "frame A0B0, the coupler point K in the coupler's frame (along A -> B, and left of it), the Grashof type, and\n"
-      "cognate_of: the rank of the better row whose Roberts cognate this is (the same curve from another four-bar).\n"
+      "cognate_of: the rank of the better row whose Roberts cognate this is (the same curve from another four-bar),\n"
+      "sse (the sum of the squared distances) and phi_1 (the crank's angle in deg from the frame line A0 -> B0 at the first point).\n"
       "Each row is a distinct design: one found again from another atlas curve (the same joints where K passes the\n"
       "first point, to 1e-4 of the points' size, either pivot as the crank's) is dropped and the next candidate polished.\n"
       "--open matches an open stretch against the arcs of rocker-driven four-bars. -o DIR writes each as a mechanism file.\n"
       "--design FILE.yaml states the design space (every key optional): lengths: [min, max] (every link, the frame too),\n"
       "ratio: max (longest / shortest link), pivots: {x: [a, b], y: [c, d]} (both frame pivots), input: crank (the input\n"
-      "turns fully). No linkage outside it is returned; when none is left, exit 1 names the constraint the best one broke.\n"
+      "turns fully), and with a prescribed timing A0: [x, y], frame_angle: deg (fixed) and coupler_point: [min, max] (K).\n"
+      "No linkage outside it is returned; when none is left, exit 1 names the constraint the best one broke.\n"
+      "Prescribed timing: a third column phi in POINTS.csv (header x,y,phi: each point's crank angle in deg from the frame\n"
+      "line A0 -> B0, rising or falling) or --timing-step DEG (equal increments, the first angle free). No atlas is read:\n"
+      "a global search polishes --starts random four-bars inside the design space in closed form, and re-analyses the best\n"
+      "by driving the mechanism through the angles in order (a branch or order defect drops the design).\n"
       "Examples: koppel atlas build --count 100000 -o atlas.bin\n"
-      "          koppel synth path tests/data/path-points.csv --atlas atlas.bin --top 5 -o linkages");
+      "          koppel synth path tests/data/path-points.csv --atlas atlas.bin --top 5 -o linkages\n"
+      "          koppel synth path tests/data/benchmarks/cabrera-18-points.csv --timing-step 20 --design tests/data/benchmarks/cabrera-18-points.yaml --top 3");
   cmd->add_option("points", args->points, "POINTS.csv (header x,y)")->required();
-  cmd->add_option("--atlas", args->atlas, "The atlas file")->required();
+  cmd->add_option("--atlas", args->atlas, "The atlas file (the timing free)");
   cmd->add_option("--top", args->top, "Linkages to return (default 10)");
   cmd->add_option("--candidates", args->candidates, "Atlas curves pre-polished (default max(100, 10 top))");
   cmd->add_flag("--open", args->open, "The points are an open stretch, not a closed path");
@@ -115,7 +160,10 @@ void AddPathSubcommand(CLI::App& synth) {
   cmd->add_option("--threads", args->threads, "Threads (default: one per core; at most 256, kMaxThreads)");
   cmd->add_option("--units", args->units, "The length unit of the mechanism files -o writes: each says `units: {length: UNIT}`\n"
                                            "(m, dm, cm, mm, um, km, in, ft; default: none). The points are in that unit.");
-  cmd->add_option("--design", args->design, "The design space: a YAML file (lengths, ratio, pivots, input)");
+  cmd->add_option("--design", args->design, "The design space: a YAML file (lengths, ratio, pivots, input, A0, frame_angle, coupler_point)");
+  cmd->add_option("--timing-step", args->timing_step, "Prescribed timing: the crank turns by DEG from point to point (the first angle free)");
+  cmd->add_option("--starts", args->starts, "The timed search's random starts (default 4000)");
+  cmd->add_option("--seed", args->seed, "The timed search's seed (default 1): the same seed, the same designs");
   cmd->callback([args] { Run(*args); });
 }
 

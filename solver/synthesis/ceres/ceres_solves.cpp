@@ -90,7 +90,47 @@ double SolvePrePolish(const std::vector<Eigen::Vector2d>& points, int branch, st
   return std::sqrt(2 * summary.final_cost / points.size());
 }
 
-const CeresSolvesTable kTable{{KOPPEL_MODULE_VERSION}, &SolveFit, &SolvePrePolish, &QuietSolverLog};
+// ceres_solves.hpp's timed_path: every point's coupler point at its prescribed crank angle,
+// automatic derivatives, fixed unknowns (lower == upper) held constant.
+double SolveTimedPath(const TimedPathProblem& p, double* u) {
+  ceres::Problem problem;
+  for (size_t i = 0; i < p.points.size(); ++i) {
+    auto* cost = new ceres::AutoDiffCostFunction<TimedPointResidual, 2, kTimedUnknowns>(
+        new TimedPointResidual{p.points[i], p.offsets[i], p.branch, &p.limits});
+    double r[2];
+    const double* blocks[] = {u};
+    if (!cost->Evaluate(blocks, r, nullptr)) {
+      delete cost;
+      return std::numeric_limits<double>::infinity();
+    }
+    problem.AddResidualBlock(cost, nullptr, u);
+  }
+  std::vector<int> fixed;
+  for (int j = 0; j < kTimedUnknowns; ++j) {
+    if (p.lower[j] == p.upper[j]) {
+      fixed.push_back(j);
+      continue;
+    }
+    if (Finite(p.lower[j])) problem.SetParameterLowerBound(u, j, p.lower[j]);
+    if (Finite(p.upper[j])) problem.SetParameterUpperBound(u, j, p.upper[j]);
+  }
+  if (!fixed.empty()) problem.SetManifold(u, new ceres::SubsetManifold(kTimedUnknowns, fixed));
+  ceres::Solver::Options options;
+  options.max_num_iterations = p.max_iterations;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.function_tolerance = 1e-14;
+  options.gradient_tolerance = 1e-16;
+  options.parameter_tolerance = 1e-14;
+  options.num_threads = 1;  // the starts are the parallel work
+  options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  QuietSolverLog();
+  ceres::Solve(options, &problem, &summary);
+  if (!summary.IsSolutionUsable()) return std::numeric_limits<double>::infinity();
+  return 2 * summary.final_cost;
+}
+
+const CeresSolvesTable kTable{{KOPPEL_MODULE_VERSION}, &SolveFit, &SolvePrePolish, &SolveTimedPath, &QuietSolverLog};
 
 }  // namespace
 }  // namespace koppel

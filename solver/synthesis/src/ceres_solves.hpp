@@ -5,6 +5,7 @@
 #pragma once
 
 #include "koppel/core/module.hpp"
+#include "path_residual.hpp"
 
 #include <Eigen/Core>
 
@@ -32,12 +33,27 @@ struct LeastSquaresOutcome {
   std::string brief;  // Ceres' BriefReport
 };
 
+// Path synthesis with prescribed timing in closed form (path_residual.hpp's TimedPointResidual):
+// the unknowns u (kTimedUnknowns) fitted to the points, each at phi_1 + its offset.
+inline constexpr int kTimedUnknowns = 10;
+struct TimedPathProblem {
+  std::vector<Eigen::Vector2d> points;
+  std::vector<double> offsets;       // per point: its crank angle minus phi_1
+  int branch = 1;
+  TimedLimits limits;
+  std::vector<double> lower, upper;  // per unknown (lower == upper: fixed); beyond +-1e299: unbounded
+  int max_iterations = 200;
+};
+
 struct CeresSolvesTable : ModuleTable {
   // x: the start, in; the solution, out
   LeastSquaresOutcome (*fit)(const BoundedLeastSquares& problem, double* x);
   // path_prepolish.hpp's PrePolish
   double (*prepolish)(const std::vector<Eigen::Vector2d>& points, int branch, std::vector<double>* unknowns,
                       std::vector<double>* inputs, const std::vector<std::pair<double, double>>* bounds);
+  // the sum of squared distances at the end (u: the start, in; the solution, out); infinity
+  // when the start cannot be evaluated or the solve fails
+  double (*timed_path)(const TimedPathProblem& problem, double* u);
   // glog, which Ceres logs through, lets only fatal messages through (quiet_solver_log.hpp)
   void (*quiet_solver_log)();
 };

@@ -1,5 +1,7 @@
 #include "koppel/synthesis/design_space.hpp"
 
+#include "koppel/core/angles.hpp"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -21,6 +23,11 @@ bool DesignSpace::IsValid(std::string* why) const {
   else if (lengths && lengths->second <= 0) problem = "lengths: the largest length must be positive";
   else if (ratio && !(std::isfinite(*ratio) && *ratio >= 1)) problem = "ratio: the longest link over the shortest is at least 1";
   else if (!FiniteInterval(pivots_x) || !FiniteInterval(pivots_y)) problem = "pivots: each of x and y must be [min, max], finite, min <= max";
+  else if (a0 && !a0->allFinite()) problem = "A0: [x, y] must be finite";
+  else if (frame_angle && !std::isfinite(*frame_angle)) problem = "frame_angle must be finite";
+  else if (!FiniteInterval(coupler_point)) problem = "coupler_point: [min, max] must be finite with min <= max";
+  else if (a0 && pivots_x && (a0->x() < pivots_x->first || a0->x() > pivots_x->second)) problem = "A0 lies outside pivots.x";
+  else if (a0 && pivots_y && (a0->y() < pivots_y->first || a0->y() > pivots_y->second)) problem = "A0 lies outside pivots.y";
   if (why) *why = problem;
   return problem.empty();
 }
@@ -44,6 +51,20 @@ std::string DesignSpace::Violation(const FourBarSizes& s) const {
     if (pivots_y && (p.y() < pivots_y->first || p.y() > pivots_y->second))
       return fmt::format("pivots: {} at y = {:.6g}, outside [{:.6g}, {:.6g}]", name, p.y(), pivots_y->first, pivots_y->second);
   }
+  const double size = std::max(longest->second, 1e-300);
+  if (a0 && (s.a0 - *a0).norm() > kFixedTolerance * size)
+    return fmt::format("A0: at ({:.6g}, {:.6g}), not at the fixed ({:.6g}, {:.6g})", s.a0.x(), s.a0.y(), a0->x(), a0->y());
+  if (frame_angle) {
+    const Eigen::Vector2d along = s.b0 - s.a0;
+    const double off = std::abs(std::remainder(std::atan2(along.y(), along.x()) - *frame_angle, 2 * kPi));
+    if (off * frame > kFixedTolerance * size)
+      return fmt::format("frame_angle: the frame line A0 -> B0 is at {:.6g} deg, not at the fixed {:.6g} deg", RadToDeg(std::atan2(along.y(), along.x())),
+                         RadToDeg(*frame_angle));
+  }
+  if (coupler_point && s.coupler_point)
+    for (const auto& [name, v] : {std::pair<const char*, double>{"along A -> B", s.coupler_point->x()}, {"left of A -> B", s.coupler_point->y()}})
+      if (v < coupler_point->first || v > coupler_point->second)
+        return fmt::format("coupler_point: K lies {:.6g} {}, outside [{:.6g}, {:.6g}]", v, name, coupler_point->first, coupler_point->second);
   if (input == InputTurn::kCrank) {
     // Grashof: shortest + longest <= the other two; the input turns fully when the crank or the
     // frame is the shortest (crank-rocker, double crank)

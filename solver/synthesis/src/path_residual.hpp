@@ -30,3 +30,49 @@ struct PointResidual {
 };
 
 }  // namespace koppel
+
+namespace koppel {
+
+// The design space's constraints that are not bounds on the timed search's unknowns (the pivot
+// B0's box, the ratio of the links, the crank turning fully): a start or a step outside them
+// cannot be evaluated, so the least-squares solver rejects that step and shortens the next.
+struct TimedLimits {
+  bool crank = false;                                  // Grashof, the crank or the frame shortest
+  double ratio = 0;                                    // longest / shortest at most this (0: any)
+  double b0_x[2] = {-1e300, 1e300}, b0_y[2] = {-1e300, 1e300};  // B0's box
+  template <class T> bool Admit(const T* u, const T& b0x, const T& b0y) const {
+    if (b0x < T(b0_x[0]) || b0x > T(b0_x[1]) || b0y < T(b0_y[0]) || b0y > T(b0_y[1])) return false;
+    if (!crank && ratio <= 0) return true;
+    const T links[4] = {u[2], u[4], u[5], u[6]};  // frame, crank, coupler, rocker
+    int shortest = 0, longest = 0;
+    for (int i = 1; i < 4; ++i) {
+      if (links[i] < links[shortest]) shortest = i;
+      if (links[i] > links[longest]) longest = i;
+    }
+    if (ratio > 0 && links[longest] > T(ratio) * links[shortest]) return false;
+    const T sum = links[0] + links[1] + links[2] + links[3];
+    const bool grashof = T(2) * (links[shortest] + links[longest]) <= sum;
+    return !crank || (grashof && (shortest == 0 || shortest == 1));
+  }
+};
+
+// Path synthesis with prescribed timing: the coupler point at crank angle phi_1 + offset (the
+// crank's angle from the frame line A0 -> B0) minus its target. Unknowns u: A0x, A0y, the frame
+// |A0B0|, the frame line's angle against +x, crank, coupler, rocker, K along A -> B, K left of it,
+// phi_1. False where the loop does not close or the limits are broken.
+struct TimedPointResidual {
+  Eigen::Vector2d target;
+  double offset;
+  int branch;
+  const TimedLimits* limits;
+  template <class T> bool operator()(const T* const u, T* residual) const {
+    using std::cos, std::sin;
+    const T b0x = u[0] + u[2] * cos(u[3]), b0y = u[1] + u[2] * sin(u[3]);
+    if (!limits->Admit(u, b0x, b0y)) return false;
+    const T v[9] = {u[0], u[1], b0x, b0y, u[4], u[5], u[6], u[7], u[8]};
+    const T phi = u[3] + u[9] + T(offset);
+    return PointResidual{target, branch}(v, &phi, residual);
+  }
+};
+
+}  // namespace koppel

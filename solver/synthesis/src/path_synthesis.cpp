@@ -142,6 +142,7 @@ std::vector<std::pair<double, double>> UnknownBounds(const DesignSpace& space) {
   for (int j : {0, 2}) if (space.pivots_x) b[j] = *space.pivots_x;
   for (int j : {1, 3}) if (space.pivots_y) b[j] = *space.pivots_y;
   for (int j : {4, 5, 6}) if (space.lengths) b[j] = *space.lengths;
+  for (int j : {7, 8}) if (space.coupler_point) b[j] = *space.coupler_point;
   return b;
 }
 
@@ -202,7 +203,7 @@ std::string SpaceViolation(const AtlasIndex& atlas, const Candidate& c, const De
   if (!laid) return "no curve";
   const AtlasEntry& e = atlas.entries()[c.entry];
   const double k = laid->scale();
-  return space.Violation({(*laid)({0, 0}), (*laid)({1, 0}), k * e.crank, k * e.coupler, k * e.rocker});
+  return space.Violation({(*laid)({0, 0}), (*laid)({1, 0}), k * e.crank, k * e.coupler, k * e.rocker, std::nullopt});
 }
 
 std::optional<Placed> Place(const AtlasIndex& atlas, const Candidate& c, const PathRequest& request) {
@@ -234,7 +235,7 @@ std::optional<Placed> Place(const AtlasIndex& atlas, const Candidate& c, const P
   // a candidate laid outside the design space is not pre-polished: its start breaks the bounds
   const std::vector<std::pair<double, double>> bounds = UnknownBounds(request.space);
   if (!request.space.Violation({{out.unknowns[0], out.unknowns[1]}, {out.unknowns[2], out.unknowns[3]}, out.unknowns[4], out.unknowns[5],
-                                out.unknowns[6]}).empty())
+                                out.unknowns[6], Eigen::Vector2d(out.unknowns[7], out.unknowns[8])}).empty())
     return std::nullopt;
   out.error = PrePolish(request.points, out.placement.branch, &out.unknowns, &out.inputs, bounds.empty() ? nullptr : &bounds);
   if (!std::isfinite(out.error)) return std::nullopt;
@@ -299,6 +300,8 @@ std::optional<PathLinkage> Polish(const Placed& placed, const Candidate& c, cons
   double sum = 0;
   for (const FitTargetResult& t : fit.targets) sum += t.residual * t.residual;
   l.error = std::sqrt(sum / fit.targets.size());
+  l.sse = sum;
+  l.phi_1 = AngleDifference(at_first.phi, Direction(g->b0 - g->a0));
   l.descriptor_distance = std::sqrt(c.distance);
   l.source = entry;
   l.polished = true;
@@ -378,6 +381,39 @@ const char* ToString(PathStatus status) {
   return "?";
 }
 
+namespace {
+
+// Empty when the request's timing can be run; else why not.
+std::string TimingProblem(const PathRequest& r) {
+  if (!r.timing.empty() && r.timing_step) return "the timing is prescribed twice: a phi column and a timing step";
+  if (r.Timed() && r.open) return "open stretches are matched by the atlas only: the timing free";
+  if (!r.Timed() && (r.space.a0 || r.space.frame_angle))
+    return "design space: A0 and frame_angle are kept by the timed search (a phi column or a timing step); without a timing the atlas "
+           "lays its curves where they fit best";
+  if (r.starts < 0 || r.starts > kMaxTimedStarts) return fmt::format("starts must be 0 (the default, {}) to {}", kTimedStarts, kMaxTimedStarts);
+  if (!r.timing.empty()) {
+    if (r.timing.size() != r.points.size()) return fmt::format("{} crank angles for {} points", r.timing.size(), r.points.size());
+    for (size_t i = 0; i < r.timing.size(); ++i)
+      if (!std::isfinite(r.timing[i])) return fmt::format("the crank angle of point {} is not a finite number", i + 1);
+    const double sense = r.timing[1] > r.timing[0] ? 1 : -1;
+    for (size_t i = 1; i < r.timing.size(); ++i)
+      if (!(sense * (r.timing[i] - r.timing[i - 1]) > 0))
+        return fmt::format("the crank angles must rise (or fall) from point to point: point {} at {:.6g} deg after {:.6g} deg", i + 1,
+                           RadToDeg(r.timing[i]), RadToDeg(r.timing[i - 1]));
+    if (std::abs(r.timing.back() - r.timing.front()) >= 2 * kPi)
+      return fmt::format("the crank angles span {:.6g} deg: less than a turn, each point's angle reached once", RadToDeg(std::abs(r.timing.back() - r.timing.front())));
+  }
+  if (r.timing_step) {
+    if (!std::isfinite(*r.timing_step) || *r.timing_step == 0) return "the timing step must be a finite, non-zero angle";
+    if (std::abs(*r.timing_step) * (r.points.size() - 1) >= 2 * kPi)
+      return fmt::format("a timing step of {:.6g} deg over {} points spans a turn or more: each point's angle is reached once",
+                         RadToDeg(*r.timing_step), r.points.size());
+  }
+  return "";
+}
+
+}  // namespace
+
 bool PathRequest::IsValid(std::string* why) const {
   std::string problem;
   if (points.size() < 4) problem = "at least four points";
@@ -394,6 +430,7 @@ bool PathRequest::IsValid(std::string* why) const {
     problem = "threads must be 0 (one per core) to " + std::to_string(kMaxThreads) + " (kMaxThreads)";
   for (const Eigen::Vector2d& p : points)
     if (problem.empty() && !p.allFinite()) problem = "every point must be finite";
+  if (problem.empty()) problem = TimingProblem(*this);
   if (why) *why = problem;
   return problem.empty();
 }
@@ -466,7 +503,7 @@ std::vector<size_t> PolishOrder(const std::vector<std::optional<Placed>>& placed
   for (size_t i = 0; i < placed.size(); ++i) {
     if (!placed[i]) continue;
     const std::vector<double>& v = placed[i]->unknowns;
-    const std::string violation = space.Violation({{v[0], v[1]}, {v[2], v[3]}, v[4], v[5], v[6]});
+    const std::string violation = space.Violation({{v[0], v[1]}, {v[2], v[3]}, v[4], v[5], v[6], Eigen::Vector2d(v[7], v[8])});
     if (violation.empty()) {
       order.push_back(i);
     } else if (broke->empty() || placed[i]->error < best_broken) {
@@ -482,7 +519,7 @@ std::vector<size_t> PolishOrder(const std::vector<std::optional<Placed>>& placed
 // The polish may carry a linkage out of the design space: dropped, never returned.
 void DropOutsideSpace(const DesignSpace& space, std::vector<PathLinkage>* polished, std::string* broke) {
   polished->erase(std::remove_if(polished->begin(), polished->end(), [&](const PathLinkage& l) {
-                    const std::string violation = space.Violation({l.geometry.a0, l.geometry.b0, l.crank, l.coupler, l.rocker});
+                    const std::string violation = space.Violation({l.geometry.a0, l.geometry.b0, l.crank, l.coupler, l.rocker, l.coupler_point});
                     if (!violation.empty() && broke->empty()) *broke = violation + " (after the polish)";
                     return !violation.empty();
                   }),
@@ -494,6 +531,10 @@ void DropOutsideSpace(const DesignSpace& space, std::vector<PathLinkage>* polish
 PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
   PathResult result;
   if (!request.IsValid(&result.message)) return result;
+  if (request.Timed()) {
+    result.message = "a prescribed timing is searched without an atlas (SynthesiseTimedPath)";
+    return result;
+  }
   const double scale = Scale(request.points);
   if (!(scale > 0)) {
     result.message = "the points coincide";

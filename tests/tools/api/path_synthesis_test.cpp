@@ -43,7 +43,7 @@ TEST_CASE("SynthesisePathFromAtlas: the best design's mechanism file passes ever
   atlas.seed = 9;
   const std::string atlas_path = dir.Write("atlas.bin", BuildAtlasImage(atlas).bytes);
   PathSpec spec;
-  spec.points = ReadPathPointsFile(KOPPEL_TEST_DATA_DIR "/path-points.csv");
+  spec.points = ReadPathPointsFile(KOPPEL_TEST_DATA_DIR "/path-points.csv").points;
   spec.top = 2;
   REQUIRE(PathSpecProblem(spec).empty());
   const PathDesigns found = SynthesisePathFromAtlas(spec, atlas_path);

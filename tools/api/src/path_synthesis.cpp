@@ -8,6 +8,8 @@
 #include "koppel/synthesis/atlas_file.hpp"
 #include "koppel/synthesis/path_synthesis.hpp"
 
+#include <memory>
+
 namespace koppel {
 
 namespace {
@@ -20,12 +22,18 @@ PathRequest PathRequestOf(const PathSpec& spec) {
   request.candidates = spec.candidates;
   request.threads = spec.threads;
   request.space = spec.space;
+  request.timing = spec.timing;
+  request.timing_step = spec.timing_step;
+  request.starts = spec.starts;
+  request.seed = spec.seed;
   return request;
 }
 
 PathDesign PathDesignOf(const PathLinkage& l) {
   PathDesign d;
   d.error = l.error;
+  d.sse = l.sse;
+  d.phi_1 = l.phi_1;
   d.a0 = l.geometry.a0;
   d.b0 = l.geometry.b0;
   d.crank = l.crank;
@@ -44,7 +52,7 @@ PathDesign PathDesignOf(const PathLinkage& l) {
 
 }  // namespace
 
-std::vector<Eigen::Vector2d> ReadPathPointsFile(const std::string& path) { return ReadPathPoints(path); }
+TimedPathPoints ReadPathPointsFile(const std::string& path) { return ReadTimedPathPoints(path); }
 
 std::string PathSpecProblem(const PathSpec& spec) {
   std::string why;
@@ -52,14 +60,29 @@ std::string PathSpecProblem(const PathSpec& spec) {
 }
 
 PathDesigns SynthesisePathFromAtlas(const PathSpec& spec, const std::string& atlas_path) {
-  const AtlasIndex atlas(ReadAtlasFile(atlas_path));
-  const PathResult result = SynthesisePath(atlas, PathRequestOf(spec));
   PathDesigns out;
+  const PathRequest request = PathRequestOf(spec);
+  if (request.Timed() && !atlas_path.empty()) {
+    out.invalid_request = true;
+    out.message = "an atlas is not read when the timing is prescribed (a phi column or a timing step): the search is global; leave the atlas out";
+    return out;
+  }
+  if (!request.Timed() && atlas_path.empty()) {
+    out.invalid_request = true;
+    out.message = "an atlas is needed when the timing is free (koppel atlas build); or prescribe the timing: a phi column or a timing step";
+    return out;
+  }
+  std::unique_ptr<AtlasIndex> atlas;
+  if (!request.Timed()) atlas = std::make_unique<AtlasIndex>(ReadAtlasFile(atlas_path));
+  const PathResult result = atlas ? SynthesisePath(*atlas, request) : SynthesiseTimedPath(request);
+  out.starts = result.starts;
+  out.admitted_starts = result.admitted_starts;
+  out.failed_reanalysis = result.failed_reanalysis;
   out.ok = result.ok();
   out.invalid_request = result.status == PathStatus::kInvalidRequest;
   out.message = result.message;
   out.duplicates = result.duplicates;
-  out.atlas_curves = atlas.entries().size();
+  out.atlas_curves = atlas ? atlas->entries().size() : 0;
   for (const PathLinkage& l : result.linkages) out.designs.push_back(PathDesignOf(l));
   return out;
 }

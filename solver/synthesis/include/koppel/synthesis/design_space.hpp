@@ -2,7 +2,7 @@
 // far apart their lengths, where the frame pivots may stand, and whether the input must turn
 // fully. A design outside it cannot be built where it is wanted and is never returned.
 // (Read from a design file by koppel/catalog/design_space_file.hpp.) Lengths and places in the
-// points' unit.
+// points' unit, angles in radians (the file says degrees).
 #pragma once
 
 #include <Eigen/Core>
@@ -16,6 +16,8 @@ namespace koppel {
 struct FourBarSizes {
   Eigen::Vector2d a0 = Eigen::Vector2d::Zero(), b0 = Eigen::Vector2d::Zero();  // frame pivots
   double crank = 0, coupler = 0, rocker = 0;                                    // A0A, AB, B0B (the frame is |A0B0|)
+  // K in the coupler's frame (along A -> B, left of it); unknown (not checked) when absent
+  std::optional<Eigen::Vector2d> coupler_point;
 };
 
 enum class InputTurn { kAny, kCrank };  // kCrank: the input at A0 turns fully (Grashof, crank or frame shortest)
@@ -25,8 +27,19 @@ struct DesignSpace {
   std::optional<double> ratio;                       // longest / shortest link at most this (>= 1)
   std::optional<std::pair<double, double>> pivots_x, pivots_y;  // both frame pivots inside the box
   InputTurn input = InputTurn::kAny;
+  std::optional<Eigen::Vector2d> a0;  // the crank's pivot A0 fixed here
+  // the frame line A0 -> B0 fixed at this angle against +x (counter-clockwise positive)
+  std::optional<double> frame_angle;
+  // both coordinates of K in the coupler's frame (along A -> B, left of it) inside [min, max]
+  std::optional<std::pair<double, double>> coupler_point;
 
-  bool Empty() const { return !lengths && !ratio && !pivots_x && !pivots_y && input == InputTurn::kAny; }
+  // A fixed A0 or frame angle holds to this, relative to the design's largest link (roundoff of
+  // the polish, which keeps them constant, and of the joints' positions computed from them).
+  static constexpr double kFixedTolerance = 1e-9;
+
+  bool Empty() const {
+    return !lengths && !ratio && !pivots_x && !pivots_y && input == InputTurn::kAny && !a0 && !frame_angle && !coupler_point;
+  }
   // Empty *why and true when the space can hold a design (no empty interval, ratio >= 1, finite).
   bool IsValid(std::string* why) const;
   // The first constraint `sizes` breaks, in words with its figures ("lengths: the coupler is

@@ -30,7 +30,9 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,11 +64,26 @@ struct PathRequest {
   // Candidates and polished linkages outside it are dropped (never returned); when none is left,
   // the message names the constraint the best one broke.
   DesignSpace space;
+  // Prescribed timing (timed_path_synthesis.cpp; no atlas): each point's crank angle from the
+  // frame line A0 -> B0 (radians, counter-clockwise positive, strictly monotonic, spanning less
+  // than a turn), or equal increments from a free first angle. Neither: the timing is free.
+  std::vector<double> timing;
+  std::optional<double> timing_step;
+  int starts = 0;          // the timed search's random starts (0: kTimedStarts)
+  std::uint64_t seed = 1;  // of the timed search's starts: the same seed, the same designs
+  bool Timed() const { return !timing.empty() || timing_step.has_value(); }
   bool IsValid(std::string* why) const;
 };
 
+// The timed search's starts by default: measured on the literature's 18-point closed curve with
+// 20 deg steps (tests/data/benchmarks), see timed_path_synthesis.cpp.
+inline constexpr int kTimedStarts = 4000;
+inline constexpr int kMaxTimedStarts = 1'000'000;
+
 struct PathLinkage {
   double error = 0;               // RMS distance of the points from the polished curve
+  double sse = 0;                 // the sum of the squared distances (the literature's objective)
+  double phi_1 = 0;               // the crank's angle from the frame line A0 -> B0 where K is nearest the first point
   double descriptor_distance = 0; // of the atlas candidate from the points' descriptor
   AtlasEntry source;              // the atlas curve it came from
   bool polished = false;          // the fit ran (else the candidate as the similarity put it)
@@ -101,9 +118,21 @@ struct PathResult {
   std::string message;
   std::vector<PathLinkage> linkages;  // distinct designs, by error, smallest first
   int duplicates = 0;                 // polished linkages dropped as repeats of a better one
+  // the timed search: its starts, those that found an admissible four-bar, and polished designs
+  // dropped by the re-analysis through the mechanism (a branch or order defect)
+  int starts = 0, admitted_starts = 0, failed_reanalysis = 0;
   bool ok() const { return status == PathStatus::kOk; }
 };
 
+// Untimed requests (the timing free).
 PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request);
+
+// Timed requests: a global search without an atlas. Random four-bars inside the design space,
+// each laid onto the points by the similarity its bounds leave free and polished in closed form
+// within the space's bounds (Ceres), both assembly branches; the best distinct designs are
+// re-analysed by driving the real mechanism through the prescribed angles in order (a walk that
+// stops short, or a coupler point away from the closed form's, is a branch or order defect:
+// dropped). sse and error are the re-analysis's.
+PathResult SynthesiseTimedPath(const PathRequest& request);
 
 }  // namespace koppel

@@ -4,20 +4,23 @@
 // mechanism, repeats dropped, Roberts cognates named). Lengths in the points' unit.
 #pragma once
 
+#include "koppel/catalog/path_points.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/synthesis/design_space.hpp"
 
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace koppel {
 
-// POINTS.csv: the header `x,y`, then one point a line in order along the path. InputError with
-// every bad line (file:line:column).
-std::vector<Eigen::Vector2d> ReadPathPointsFile(const std::string& path);
+// POINTS.csv: the header `x,y` (or `x,y,phi`: each point's crank angle in degrees from the frame
+// line A0 -> B0, rising or falling), then one point a line in order along the path. InputError
+// with every bad line (file:line:column). phi in radians.
+TimedPathPoints ReadPathPointsFile(const std::string& path);
 
 struct PathSpec {
   std::vector<Eigen::Vector2d> points;  // in order along the path
@@ -26,12 +29,20 @@ struct PathSpec {
   int candidates = 0;                   // atlas curves pre-polished (0: max(100, 10 top))
   int threads = 0;                      // 0: one per core
   DesignSpace space;                    // no linkage outside it is returned (design_space.hpp)
+  // Prescribed timing (no atlas then): each point's crank angle from the frame line (radians), or
+  // equal increments from a free first angle. Neither: the timing free, the atlas searched.
+  std::vector<double> timing;
+  std::optional<double> timing_step;
+  int starts = 0;          // the timed search's random starts (0: 4000)
+  std::uint64_t seed = 1;  // the timed search's: the same seed, the same designs
 };
 // Empty when the spec can be run; else why not (too few points, ...).
 std::string PathSpecProblem(const PathSpec& spec);
 
 struct PathDesign {
   double error = 0;  // RMS distance of the points from the polished coupler curve
+  double sse = 0;    // the sum of the squared distances (the literature's objective)
+  double phi_1 = 0;  // the crank's angle from the frame line where K passes (nearest) the first point
   Eigen::Vector2d a0 = Eigen::Vector2d::Zero(), b0 = Eigen::Vector2d::Zero();  // the pivots
   double crank = 0, coupler = 0, rocker = 0, frame = 0;                         // A0A, AB, B0B, A0B0
   Eigen::Vector2d coupler_point = Eigen::Vector2d::Zero();  // K along A -> B, and left of it
@@ -48,10 +59,14 @@ struct PathDesigns {
   std::string message;
   std::vector<PathDesign> designs;  // distinct, by error, smallest first
   int duplicates = 0;               // polished repeats of a better design, dropped
-  std::uint64_t atlas_curves = 0;   // curves in the atlas searched
+  std::uint64_t atlas_curves = 0;   // curves in the atlas searched (0: a timed search)
+  // a timed search: random starts, those that found a four-bar inside the design space, and
+  // polished designs the re-analysis dropped (a branch or order defect)
+  int starts = 0, admitted_starts = 0, failed_reanalysis = 0;
 };
 
-// Reads the atlas file (io::FileError when it cannot) and searches it.
+// Reads the atlas file (io::FileError when it cannot) and searches it; a timed spec is searched
+// without one (atlas_path must then be empty: an atlas it would not read is a bad request).
 PathDesigns SynthesisePathFromAtlas(const PathSpec& spec, const std::string& atlas_path);
 
 // The design as a mechanism file named `name` with `comment` at its top, its sweep one turn of

@@ -7,6 +7,8 @@
 #include "support/text.hpp"
 
 #include <catch2/catch.hpp>
+#include <Eigen/Core>
+#include <fmt/core.h>
 
 #include <algorithm>
 #include <cmath>
@@ -169,5 +171,144 @@ TEST_CASE("synth path --units writes the unit into every linkage's file", "[cli]
   const test::RunResult bad = test::RunKoppel("synth path " + test::TestDataPath("path-points.csv") + " --atlas " + CiAtlas() + " --units furlong");
   CHECK(bad.exit_code == 2);
   CHECK_THAT(bad.err, Catch::Contains("furlong"));
+}
+
+namespace {
+
+// The rows of a synth path table, split at commas.
+std::vector<std::vector<std::string>> Rows(const std::string& out) {
+  std::istringstream in(out);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(in, line)) {
+    rows.emplace_back();
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) rows.back().push_back(cell);
+    if (!line.empty() && line.back() == ',') rows.back().emplace_back();
+  }
+  return rows;
+}
+
+// The sum of the squared distances of the points from the written mechanism's P, read from
+// `koppel analyze FILE --at phi` for each prescribed angle: the file's own re-analysis.
+double SseOfFile(const std::string& file, const std::vector<Eigen::Vector2d>& points, const std::vector<double>& phi_deg) {
+  double sse = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const test::RunResult r = test::RunKoppel("analyze " + file + " --at " + fmt::format("{:.17g}", phi_deg[i]) + " --order 0");
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::vector<std::vector<std::string>> rows = Rows(r.out);
+    REQUIRE(rows.size() == 1);
+    sse += (Eigen::Vector2d(std::stod(rows[0][1]), std::stod(rows[0][2])) - points[i]).squaredNorm();  // phi,P_x,P_y,...
+  }
+  return sse;
+}
+
+}  // namespace
+
+// The five timed points of Kunjur and Krishnamurty (tests/data/benchmarks): A0 at the origin, the
+// frame along +x, crank angles 30..90 deg. The points are given to three decimals, so a design
+// through the exact curve they were rounded from has an sse of at most 5 * 2 * (5e-4)^2 = 2.5e-6.
+TEST_CASE("synth path with a phi column: the five timed points within the data's rounding", "[cli][path][timed]") {
+  test::TempDir dir;
+  const std::string points = test::TestDataPath("benchmarks/kunjur-5-points.csv");
+  const test::RunResult r = test::RunKoppel("synth path " + points + " --design " + test::TestDataPath("benchmarks/kunjur-5-points.yaml") +
+                                            " --top 1 -o " + dir.path().string());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.err, Catch::Contains("timing prescribed") && Catch::Contains("random starts"));
+  const auto rows = Rows(r.out);
+  REQUIRE(rows.size() == 1);
+  const auto& row = rows[0];
+  CHECK(std::stod(row[2]) == 0);  // A0_x
+  CHECK(std::stod(row[3]) == 0);  // A0_y
+  CHECK(std::abs(std::stod(row[5])) <= 1e-12);  // B0_y: the frame along +x
+  CHECK(std::stod(row[4]) > 0);
+  for (int c = 6; c <= 9; ++c) CHECK(std::stod(row[c]) <= 50);
+  CHECK(row[12] == "crank-rocker");
+  const double sse = std::stod(row[14]);
+  CHECK(sse <= 2.5e-6);
+  CHECK(std::stod(row[15]) == 30);  // phi_1: the first prescribed angle
+  const std::vector<Eigen::Vector2d> p = {{3, 3}, {2.759, 3.363}, {2.372, 3.663}, {1.890, 3.862}, {1.355, 3.943}};
+  CHECK(SseOfFile((dir.path() / "path-1.yaml").string(), p, {30, 45, 60, 75, 90}) == Approx(sse).epsilon(1e-6));
+}
+
+// The 18-point closed curve with 20 deg steps (tests/data/benchmarks): every design inside the
+// papers' space (lengths <= 50, a crank), its sse recomputed from the written file.
+TEST_CASE("synth path --timing-step: the 18-point closed curve inside its design space", "[cli][path][timed]") {
+  test::TempDir dir;
+  const std::string points = test::TestDataPath("benchmarks/cabrera-18-points.csv");
+  const test::RunResult r = test::RunKoppel("synth path " + points + " --timing-step 20 --design " +
+                                            test::TestDataPath("benchmarks/cabrera-18-points.yaml") + " --top 2 -o " + dir.path().string());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto rows = Rows(r.out);
+  REQUIRE(!rows.empty());
+  const std::vector<Eigen::Vector2d> p = {{0.5, 1.1}, {0.4, 1.1}, {0.3, 1.1}, {0.2, 1.0}, {0.1, 0.9}, {0.005, 0.75}, {0.02, 0.6}, {0, 0.5}, {0, 0.4},
+                                          {0.03, 0.3}, {0.1, 0.25}, {0.15, 0.2}, {0.2, 0.3}, {0.3, 0.4}, {0.4, 0.5}, {0.5, 0.7}, {0.6, 0.9}, {0.6, 1.0}};
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const auto& row = rows[i];
+    for (int c = 2; c <= 5; ++c) CHECK(std::abs(std::stod(row[c])) <= 50);
+    for (int c = 6; c <= 9; ++c) CHECK(std::stod(row[c]) <= 50);
+    CHECK((row[12] == "crank-rocker" || row[12] == "double-crank"));
+    const double sse = std::stod(row[14]), phi_1 = std::stod(row[15]);
+    // a fit, not a bystander: the RMS distance below 5 % of the curve's width (about 0.6)
+    CHECK(std::stod(row[1]) < 0.03);
+    std::vector<double> phi;
+    for (int k = 0; k < 18; ++k) phi.push_back(phi_1 + 20 * k);
+    CHECK(SseOfFile((dir.path() / fmt::format("path-{}.yaml", i + 1)).string(), p, phi) == Approx(sse).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("synth path refuses bad timings and a misplaced atlas with their place", "[cli][path][timed]") {
+  test::TempDir dir;
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {"x,y,phi\n0,0,10\n1,0,20\n1,1,20\n0,1,40\n", "points.csv:4:5: phi: 20 deg repeats the angle of line 3"},
+      {"x,y,phi\n0,0,10\n1,0,30\n1,1,20\n0,1,40\n", "points.csv:4:5: phi: 20 deg turns back from the angle of line 3"},
+      {"x,y,phi\n0,0,10\n1,0,nan\n1,1,20\n0,1,40\n", "points.csv:3:5: expected a finite number, found 'nan'"},
+      {"x,y,phi\n0,0,10\n1,0\n1,1,20\n0,1,40\n", "points.csv:3:1: expected three finite numbers x,y,phi"},
+      {"x,y,phi\n0,0,0\n1,0,100\n1,1,200\n0,1,360\n", "span 360 deg"},
+  };
+  for (const auto& [text, phrase] : files) {
+    const std::string file = dir.Write("points.csv", text);
+    const test::RunResult r = test::RunKoppel("synth path " + file);
+    INFO(text << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains(phrase));
+  }
+  const std::string timed = dir.Write("timed.csv", "x,y,phi\n0,0,10\n1,0,20\n1,1,30\n0,1,40\n");
+  const std::string plain = dir.Write("plain.csv", "x,y\n0,0\n1,0\n1,1\n0,1\n");
+  const std::vector<std::pair<std::string, std::string>> commands = {
+      {timed + " --atlas atlas.bin", "--atlas: not read when the timing is prescribed"},
+      {plain + " --timing-step 20 --atlas atlas.bin", "--atlas: not read when the timing is prescribed"},
+      {plain, "--atlas FILE is needed"},
+      {timed + " --timing-step 20", "prescribed twice"},
+      {plain + " --timing-step 0", "non-zero"},
+      {plain + " --timing-step 120", "spans a turn or more"},
+      {plain + " --timing-step 20 --open", "open stretches are matched by the atlas only"},
+      {timed + " --candidates 100", "--candidates: atlas curves are not searched"},
+      {plain + " --atlas atlas.bin --starts 10", "--starts: only the timed search"},
+  };
+  for (const auto& [args, phrase] : commands) {
+    const test::RunResult r = test::RunKoppel("synth path " + args);
+    INFO(args << "\n" << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains(phrase));
+  }
+  // the design file's keys of a timed search
+  const std::vector<std::pair<std::string, std::string>> designs = {
+      {"A0: [1]\n", "design.yaml:1:5: expected [x, y] (A0)"},
+      {"frame_angle: east\n", "design.yaml:1:"},
+      {"coupler_point: [1, -1]\n", "an empty interval"},
+      {"A0: [5, 0]\npivots: {x: [-1, 1]}\n", "A0 lies outside pivots.x"},
+  };
+  for (const auto& [text, phrase] : designs) {
+    const std::string file = dir.Write("design.yaml", text);
+    const test::RunResult r = test::RunKoppel("synth path " + timed + " --design " + file);
+    INFO(text << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains(phrase));
+  }
 }
 }  // namespace koppel::synth_path_command_test

@@ -282,13 +282,12 @@ TEST_CASE("synth path refuses bad timings and a misplaced atlas with their place
   const std::vector<std::pair<std::string, std::string>> commands = {
       {timed + " --atlas atlas.bin", "--atlas: not read when the timing is prescribed"},
       {plain + " --timing-step 20 --atlas atlas.bin", "--atlas: not read when the timing is prescribed"},
-      {plain, "--atlas FILE is needed"},
       {timed + " --timing-step 20", "prescribed twice"},
       {plain + " --timing-step 0", "non-zero"},
       {plain + " --timing-step 120", "spans a turn or more"},
-      {plain + " --timing-step 20 --open", "open stretches are matched by the atlas only"},
-      {timed + " --candidates 100", "--candidates: atlas curves are not searched"},
-      {plain + " --atlas atlas.bin --starts 10", "--starts: only the timed search"},
+      {plain + " --timing-step 20 --open", "open or closed changes nothing"},
+      {plain + " --atlas atlas.bin --starts 10", "--starts: only the global search"},
+      {plain + " --candidates 10", "--candidates: atlas curves are searched with --atlas only"},
   };
   for (const auto& [args, phrase] : commands) {
     const test::RunResult r = test::RunKoppel("synth path " + args);
@@ -309,6 +308,46 @@ TEST_CASE("synth path refuses bad timings and a misplaced atlas with their place
     INFO(text << r.err);
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.err, Catch::Contains(phrase));
+  }
+}
+
+// The literature's problems without timing (tests/data/benchmarks), searched globally: six points
+// on a line (an open stretch) have exact solutions inside lengths [5, 60]; the ten points of the
+// ellipse (the last repeating the first a turn later) fit within lengths [5, 80]. Every design
+// inside its space, its sse recomputed from the written file at the crank angles it reports
+// (the first from phi_1; the file's sweep passes the rest in order).
+TEST_CASE("synth path without an atlas: the literature's untimed problems inside their spaces", "[cli][path][global]") {
+  struct Problem {
+    std::string name, flags;
+    double lengths;
+  };
+  for (const Problem& problem : {Problem{"cabrera-6-points", " --open", 60}, Problem{"lin-ellipse-10-points", "", 80}}) {
+    test::TempDir dir;
+    const test::RunResult r = test::RunKoppel("synth path " + test::TestDataPath("benchmarks/" + problem.name + ".csv") + problem.flags +
+                                              " --design " + test::TestDataPath("benchmarks/" + problem.name + ".yaml") + " --top 2 -o " +
+                                              dir.path().string());
+    INFO(problem.name << "\n" << r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.err, Catch::Contains("timing free"));
+    const auto rows = Rows(r.out);
+    REQUIRE(!rows.empty());
+    for (const auto& row : rows) {
+      for (int c = 2; c <= 5; ++c) CHECK(std::abs(std::stod(row[c])) <= problem.lengths);
+      for (int c = 6; c <= 9; ++c) {
+        CHECK(std::stod(row[c]) <= problem.lengths);
+        CHECK(std::stod(row[c]) >= 5);
+      }
+      CHECK((row[12] == "crank-rocker" || row[12] == "double-crank"));
+      // a fit, not a bystander: the RMS distance below 0.1 % of the points' extent (25, 20)
+      CHECK(std::stod(row[1]) < 0.02);
+    }
+    // the first design's P at phi_1 is the first point, within its share of the sse
+    const double sse = std::stod(rows[0][14]), phi_1 = std::stod(rows[0][15]);
+    const test::RunResult at = test::RunKoppel("analyze " + (dir.path() / "path-1.yaml").string() + " --at " + fmt::format("{:.17g}", phi_1) + " --order 0");
+    REQUIRE(at.exit_code == 0);
+    const auto p = Rows(at.out);
+    const Eigen::Vector2d first = problem.name == "cabrera-6-points" ? Eigen::Vector2d(20, 20) : Eigen::Vector2d(20, 10);
+    CHECK((Eigen::Vector2d(std::stod(p[0][1]), std::stod(p[0][2])) - first).squaredNorm() <= sse * (1 + 1e-6) + 1e-20);
   }
 }
 }  // namespace koppel::synth_path_command_test

@@ -134,7 +134,7 @@ PathRequest CabreraEighteenPoints() {
 
 void TimeTimedPath(benchmark::State& state, const PathRequest& request) {
   for (auto _ : state) {
-    const PathResult result = SynthesiseTimedPath(request);
+    const PathResult result = SynthesisePathGlobally(request);
     if (!result.ok()) {
       state.SkipWithError(result.message.c_str());
       return;

@@ -69,16 +69,13 @@ void Run(const Args& args) {
              "): the timed search is global; leave --atlas out");
     throw Exit{kExitBadInput};
   }
-  if (!timed && args.atlas.empty()) {
-    Complain(args.points + ": the timing is free (no phi column, no --timing-step): --atlas FILE is needed (koppel atlas build)");
+  const bool global = args.atlas.empty();
+  if (global && !args.candidates.empty()) {
+    Complain("--candidates: atlas curves are searched with --atlas only; --starts sets the global search's work");
     throw Exit{kExitBadInput};
   }
-  if (timed && !args.candidates.empty()) {
-    Complain("--candidates: atlas curves are not searched when the timing is prescribed; --starts sets the timed search's work");
-    throw Exit{kExitBadInput};
-  }
-  if (!timed && (!args.starts.empty() || !args.seed.empty())) {
-    Complain(std::string(args.starts.empty() ? "--seed" : "--starts") + ": only the timed search (a phi column or --timing-step) draws random starts");
+  if (!global && (!args.starts.empty() || !args.seed.empty())) {
+    Complain(std::string(args.starts.empty() ? "--seed" : "--starts") + ": only the global search (without --atlas) draws random starts");
     throw Exit{kExitBadInput};
   }
   request.open = args.open;
@@ -108,10 +105,10 @@ void Run(const Args& args) {
     if (!args.dir.empty()) WriteDesign(args, l, i);
   }
   WriteOutput(args.out, t.Text(args.format));
-  if (timed)
-    std::cerr << fmt::format("koppel synth path: {} points, timing prescribed; {} random starts, {} inside the design space; best sse {:.6g} "
+  if (global)
+    std::cerr << fmt::format("koppel synth path: {} points, timing {}; {} random starts, {} inside the design space; best sse {:.6g} "
                              "(RMS distance {:.3g}); {} designs dropped by the re-analysis, {} repeats of a better design\n",
-                             request.points.size(), result.starts, result.admitted_starts, result.designs.front().sse, result.designs.front().error,
+                             request.points.size(), timed ? "prescribed" : "free", result.starts, result.admitted_starts, result.designs.front().sse, result.designs.front().error,
                              result.failed_reanalysis, result.duplicates);
   else
     std::cerr << fmt::format("koppel synth path: {} points, {} atlas curves; best RMS distance {:.3g}; {} repeats of a better design dropped\n",
@@ -140,17 +137,18 @@ void AddPathSubcommand(CLI::App& synth) {
       "--open matches an open stretch against the arcs of rocker-driven four-bars. -o DIR writes each as a mechanism file.\n"
       "--design FILE.yaml states the design space (every key optional): lengths: [min, max] (every link, the frame too),\n"
       "ratio: max (longest / shortest link), pivots: {x: [a, b], y: [c, d]} (both frame pivots), input: crank (the input\n"
-      "turns fully), and with a prescribed timing A0: [x, y], frame_angle: deg (fixed) and coupler_point: [min, max] (K).\n"
+      "turns fully), coupler_point: [min, max] (K's coordinates), and in the global search A0: [x, y], frame_angle: deg (fixed).\n"
       "No linkage outside it is returned; when none is left, exit 1 names the constraint the best one broke.\n"
-      "Prescribed timing: a third column phi in POINTS.csv (header x,y,phi: each point's crank angle in deg from the frame\n"
-      "line A0 -> B0, rising or falling) or --timing-step DEG (equal increments, the first angle free). No atlas is read:\n"
-      "a global search polishes --starts random four-bars inside the design space in closed form, and re-analyses the best\n"
-      "by driving the mechanism through the angles in order (a branch or order defect drops the design).\n"
+      "Without --atlas the search is global: --starts random four-bars inside the design space, polished in closed form\n"
+      "with each point's crank angle free (or prescribed), the best re-analysed by driving the mechanism through the points\n"
+      "in order (a branch or order defect drops the design). A closed path's last point may repeat its first.\n"
+      "Prescribed timing (global search only): a third column phi in POINTS.csv (header x,y,phi: each point's crank angle\n"
+      "in deg from the frame line A0 -> B0, rising or falling) or --timing-step DEG (equal steps, the first angle free).\n"
       "Examples: koppel atlas build --count 100000 -o atlas.bin\n"
       "          koppel synth path tests/data/path-points.csv --atlas atlas.bin --top 5 -o linkages\n"
       "          koppel synth path tests/data/benchmarks/cabrera-18-points.csv --timing-step 20 --design tests/data/benchmarks/cabrera-18-points.yaml --top 3");
   cmd->add_option("points", args->points, "POINTS.csv (header x,y)")->required();
-  cmd->add_option("--atlas", args->atlas, "The atlas file (the timing free)");
+  cmd->add_option("--atlas", args->atlas, "The atlas file (the timing free); without it the search is global");
   cmd->add_option("--top", args->top, "Linkages to return (default 10)");
   cmd->add_option("--candidates", args->candidates, "Atlas curves pre-polished (default max(100, 10 top))");
   cmd->add_flag("--open", args->open, "The points are an open stretch, not a closed path");
@@ -162,8 +160,8 @@ void AddPathSubcommand(CLI::App& synth) {
                                            "(m, dm, cm, mm, um, km, in, ft; default: none). The points are in that unit.");
   cmd->add_option("--design", args->design, "The design space: a YAML file (lengths, ratio, pivots, input, A0, frame_angle, coupler_point)");
   cmd->add_option("--timing-step", args->timing_step, "Prescribed timing: the crank turns by DEG from point to point (the first angle free)");
-  cmd->add_option("--starts", args->starts, "The timed search's random starts (default 4000)");
-  cmd->add_option("--seed", args->seed, "The timed search's seed (default 1): the same seed, the same designs");
+  cmd->add_option("--starts", args->starts, "The global search's random starts (default 4000)");
+  cmd->add_option("--seed", args->seed, "The global search's seed (default 1): the same seed, the same designs");
   cmd->callback([args] { Run(*args); });
 }
 

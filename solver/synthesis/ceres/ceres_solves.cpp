@@ -92,22 +92,35 @@ double SolvePrePolish(const std::vector<Eigen::Vector2d>& points, int branch, st
 
 // ceres_solves.hpp's timed_path: every point's coupler point at its prescribed crank angle,
 // automatic derivatives, fixed unknowns (lower == upper) held constant.
+// Adds one residual block after evaluating it at the start; false (and nothing added) where the
+// start cannot be evaluated.
+bool AddEvaluable(ceres::Problem* problem, ceres::CostFunction* cost, std::vector<double*> blocks) {
+  double r[2];
+  if (!cost->Evaluate(blocks.data(), r, nullptr)) {
+    delete cost;
+    return false;
+  }
+  problem->AddResidualBlock(cost, nullptr, blocks);
+  return true;
+}
+
 double SolveTimedPath(const TimedPathProblem& p, double* u) {
   ceres::Problem problem;
+  const bool free = p.phases != nullptr;
   for (size_t i = 0; i < p.points.size(); ++i) {
-    auto* cost = new ceres::AutoDiffCostFunction<TimedPointResidual, 2, kTimedUnknowns>(
-        new TimedPointResidual{p.points[i], p.offsets[i], p.branch, &p.limits});
-    double r[2];
-    const double* blocks[] = {u};
-    if (!cost->Evaluate(blocks, r, nullptr)) {
-      delete cost;
-      return std::numeric_limits<double>::infinity();
-    }
-    problem.AddResidualBlock(cost, nullptr, u);
+    const bool added =
+        free ? AddEvaluable(&problem,
+                            new ceres::AutoDiffCostFunction<FreePointResidual, 2, kTimedUnknowns, 1>(new FreePointResidual{p.points[i], p.branch, &p.limits}),
+                            {u, &(*p.phases)[p.same_phase[i] >= 0 ? p.same_phase[i] : i]})
+             : AddEvaluable(&problem,
+                            new ceres::AutoDiffCostFunction<TimedPointResidual, 2, kTimedUnknowns>(
+                                new TimedPointResidual{p.points[i], p.offsets[i], p.branch, &p.limits}),
+                            {u});
+    if (!added) return std::numeric_limits<double>::infinity();
   }
   std::vector<int> fixed;
   for (int j = 0; j < kTimedUnknowns; ++j) {
-    if (p.lower[j] == p.upper[j]) {
+    if (p.lower[j] == p.upper[j] || (free && j == 9)) {
       fixed.push_back(j);
       continue;
     }
@@ -117,7 +130,8 @@ double SolveTimedPath(const TimedPathProblem& p, double* u) {
   if (!fixed.empty()) problem.SetManifold(u, new ceres::SubsetManifold(kTimedUnknowns, fixed));
   ceres::Solver::Options options;
   options.max_num_iterations = p.max_iterations;
-  options.linear_solver_type = ceres::DENSE_QR;
+  // the timing free: the crank angles are the eliminated block
+  options.linear_solver_type = free ? ceres::DENSE_SCHUR : ceres::DENSE_QR;
   options.function_tolerance = 1e-14;
   options.gradient_tolerance = 1e-16;
   options.parameter_tolerance = 1e-14;

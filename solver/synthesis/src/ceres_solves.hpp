@@ -39,6 +39,11 @@ inline constexpr int kTimedUnknowns = 10;
 struct TimedPathProblem {
   std::vector<Eigen::Vector2d> points;
   std::vector<double> offsets;       // per point: its crank angle minus phi_1
+  // The timing free: each point's crank angle from the frame line its own unknown, in phases
+  // (in: the start, out: the solution; u[9] is then held fixed). A point whose `same_phase` is
+  // not -1 shares that point's angle (a closed path's last point repeating its first).
+  std::vector<double>* phases = nullptr;
+  std::vector<int> same_phase;
   int branch = 1;
   TimedLimits limits;
   std::vector<double> lower, upper;  // per unknown (lower == upper: fixed); beyond +-1e299: unbounded

@@ -76,3 +76,21 @@ struct TimedPointResidual {
 };
 
 }  // namespace koppel
+
+namespace koppel {
+
+// Path synthesis with the timing free, the global search's form: TimedPointResidual's unknowns u
+// (u[9], phi_1, unused) and the point's own crank angle from the frame line, t.
+struct FreePointResidual {
+  Eigen::Vector2d target;
+  int branch;
+  const TimedLimits* limits;
+  template <class T> bool operator()(const T* const u, const T* const t, T* residual) const {
+    T w[10];
+    for (int j = 0; j < 9; ++j) w[j] = u[j];
+    w[9] = t[0];
+    return TimedPointResidual{target, 0.0, branch, limits}(w, residual);
+  }
+};
+
+}  // namespace koppel

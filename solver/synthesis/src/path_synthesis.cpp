@@ -386,10 +386,7 @@ namespace {
 // Empty when the request's timing can be run; else why not.
 std::string TimingProblem(const PathRequest& r) {
   if (!r.timing.empty() && r.timing_step) return "the timing is prescribed twice: a phi column and a timing step";
-  if (r.Timed() && r.open) return "open stretches are matched by the atlas only: the timing free";
-  if (!r.Timed() && (r.space.a0 || r.space.frame_angle))
-    return "design space: A0 and frame_angle are kept by the timed search (a phi column or a timing step); without a timing the atlas "
-           "lays its curves where they fit best";
+  if (r.Timed() && r.open) return "open: a prescribed timing says where each point is reached; open or closed changes nothing";
   if (r.starts < 0 || r.starts > kMaxTimedStarts) return fmt::format("starts must be 0 (the default, {}) to {}", kTimedStarts, kMaxTimedStarts);
   if (!r.timing.empty()) {
     if (r.timing.size() != r.points.size()) return fmt::format("{} crank angles for {} points", r.timing.size(), r.points.size());
@@ -532,7 +529,11 @@ PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
   PathResult result;
   if (!request.IsValid(&result.message)) return result;
   if (request.Timed()) {
-    result.message = "a prescribed timing is searched without an atlas (SynthesiseTimedPath)";
+    result.message = "a prescribed timing is searched without an atlas (SynthesisePathGlobally)";
+    return result;
+  }
+  if (request.space.a0 || request.space.frame_angle) {
+    result.message = "design space: A0 and frame_angle are kept by the global search (no atlas); the atlas lays its curves where they fit best";
     return result;
   }
   const double scale = Scale(request.points);

@@ -34,6 +34,7 @@ PathDesign PathDesignOf(const PathLinkage& l) {
   d.error = l.error;
   d.sse = l.sse;
   d.phi_1 = l.phi_1;
+  d.inputs = l.inputs;
   d.a0 = l.geometry.a0;
   d.b0 = l.geometry.b0;
   d.crank = l.crank;
@@ -67,14 +68,9 @@ PathDesigns SynthesisePathFromAtlas(const PathSpec& spec, const std::string& atl
     out.message = "an atlas is not read when the timing is prescribed (a phi column or a timing step): the search is global; leave the atlas out";
     return out;
   }
-  if (!request.Timed() && atlas_path.empty()) {
-    out.invalid_request = true;
-    out.message = "an atlas is needed when the timing is free (koppel atlas build); or prescribe the timing: a phi column or a timing step";
-    return out;
-  }
   std::unique_ptr<AtlasIndex> atlas;
-  if (!request.Timed()) atlas = std::make_unique<AtlasIndex>(ReadAtlasFile(atlas_path));
-  const PathResult result = atlas ? SynthesisePath(*atlas, request) : SynthesiseTimedPath(request);
+  if (!atlas_path.empty()) atlas = std::make_unique<AtlasIndex>(ReadAtlasFile(atlas_path));
+  const PathResult result = atlas ? SynthesisePath(*atlas, request) : SynthesisePathGlobally(request);
   out.starts = result.starts;
   out.admitted_starts = result.admitted_starts;
   out.failed_reanalysis = result.failed_reanalysis;
@@ -91,7 +87,9 @@ std::string PathDesignYaml(const PathDesign& design, const std::string& name, co
   Mechanism m = design.mechanism;
   m.name = name;
   const double from = RadToDeg(m.hint.input);
-  return WriteMechanismYaml(m, comment, {from, from + 360, 1}, {}, UnitsFor(UnitsOf(units)));
+  const bool turns = design.grashof == ToString(GrashofType::kCrankRocker) || design.grashof == ToString(GrashofType::kDoubleCrank);
+  const double to = design.inputs.empty() || turns ? from + 360 : RadToDeg(design.inputs.back());
+  return WriteMechanismYaml(m, comment, {from, to, 1}, {}, UnitsFor(UnitsOf(units)));
 }
 
 }  // namespace koppel

@@ -64,19 +64,19 @@ struct PathRequest {
   // Candidates and polished linkages outside it are dropped (never returned); when none is left,
   // the message names the constraint the best one broke.
   DesignSpace space;
-  // Prescribed timing (timed_path_synthesis.cpp; no atlas): each point's crank angle from the
+  // Prescribed timing (global_path_synthesis.cpp; no atlas): each point's crank angle from the
   // frame line A0 -> B0 (radians, counter-clockwise positive, strictly monotonic, spanning less
   // than a turn), or equal increments from a free first angle. Neither: the timing is free.
   std::vector<double> timing;
   std::optional<double> timing_step;
-  int starts = 0;          // the timed search's random starts (0: kTimedStarts)
-  std::uint64_t seed = 1;  // of the timed search's starts: the same seed, the same designs
+  int starts = 0;          // the global search's random starts (0: kTimedStarts)
+  std::uint64_t seed = 1;  // of the global search's starts: the same seed, the same designs
   bool Timed() const { return !timing.empty() || timing_step.has_value(); }
   bool IsValid(std::string* why) const;
 };
 
-// The timed search's starts by default: measured on the literature's 18-point closed curve with
-// 20 deg steps (tests/data/benchmarks), see timed_path_synthesis.cpp.
+// The global search's starts by default (about 7 s on two cores for the literature's 18-point
+// closed curve with 20 deg steps, tests/data/benchmarks).
 inline constexpr int kTimedStarts = 4000;
 inline constexpr int kMaxTimedStarts = 1'000'000;
 
@@ -84,6 +84,7 @@ struct PathLinkage {
   double error = 0;               // RMS distance of the points from the polished curve
   double sse = 0;                 // the sum of the squared distances (the literature's objective)
   double phi_1 = 0;               // the crank's angle from the frame line A0 -> B0 where K is nearest the first point
+  std::vector<double> inputs;     // the global search's: each point's crank angle from the frame line, in the order driven
   double descriptor_distance = 0; // of the atlas candidate from the points' descriptor
   AtlasEntry source;              // the atlas curve it came from
   bool polished = false;          // the fit ran (else the candidate as the similarity put it)
@@ -127,12 +128,15 @@ struct PathResult {
 // Untimed requests (the timing free).
 PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request);
 
-// Timed requests: a global search without an atlas. Random four-bars inside the design space,
-// each laid onto the points by the similarity its bounds leave free and polished in closed form
-// within the space's bounds (Ceres), both assembly branches; the best distinct designs are
-// re-analysed by driving the real mechanism through the prescribed angles in order (a walk that
-// stops short, or a coupler point away from the closed form's, is a branch or order defect:
-// dropped). sse and error are the re-analysis's.
-PathResult SynthesiseTimedPath(const PathRequest& request);
+// A global search without an atlas, the timing prescribed or free. Random four-bars inside the
+// design space, each laid onto the points by the similarity its bounds leave free (with the
+// timing free: at guessed angles spread over a turn, closed, or part of one, open) and polished in
+// closed form within the space's bounds (Ceres), both assembly branches; with the timing free
+// every point's crank angle is an unknown, and a polish that passes the points out of order (an
+// order defect) is dropped. A closed path whose last point repeats its first reaches it a whole
+// turn later. The best distinct designs are re-analysed by driving the real mechanism through
+// the angles in order (a walk that stops short, or a coupler point away from the closed form's,
+// is a branch defect: dropped). sse and error are the re-analysis's.
+PathResult SynthesisePathGlobally(const PathRequest& request);
 
 }  // namespace koppel

@@ -33,8 +33,8 @@ struct PathSpec {
   // equal increments from a free first angle. Neither: the timing free, the atlas searched.
   std::vector<double> timing;
   std::optional<double> timing_step;
-  int starts = 0;          // the timed search's random starts (0: 4000)
-  std::uint64_t seed = 1;  // the timed search's: the same seed, the same designs
+  int starts = 0;          // the global search's random starts (0: 4000)
+  std::uint64_t seed = 1;  // the global search's: the same seed, the same designs
 };
 // Empty when the spec can be run; else why not (too few points, ...).
 std::string PathSpecProblem(const PathSpec& spec);
@@ -43,6 +43,7 @@ struct PathDesign {
   double error = 0;  // RMS distance of the points from the polished coupler curve
   double sse = 0;    // the sum of the squared distances (the literature's objective)
   double phi_1 = 0;  // the crank's angle from the frame line where K passes (nearest) the first point
+  std::vector<double> inputs;  // the global search's: each point's crank angle from the frame line, in order (radians)
   Eigen::Vector2d a0 = Eigen::Vector2d::Zero(), b0 = Eigen::Vector2d::Zero();  // the pivots
   double crank = 0, coupler = 0, rocker = 0, frame = 0;                         // A0A, AB, B0B, A0B0
   Eigen::Vector2d coupler_point = Eigen::Vector2d::Zero();  // K along A -> B, and left of it
@@ -59,18 +60,20 @@ struct PathDesigns {
   std::string message;
   std::vector<PathDesign> designs;  // distinct, by error, smallest first
   int duplicates = 0;               // polished repeats of a better design, dropped
-  std::uint64_t atlas_curves = 0;   // curves in the atlas searched (0: a timed search)
-  // a timed search: random starts, those that found a four-bar inside the design space, and
-  // polished designs the re-analysis dropped (a branch or order defect)
+  std::uint64_t atlas_curves = 0;   // curves in the atlas searched (0: the global search)
+  // the global search: random starts, those that found a four-bar inside the design space, and
+  // polished designs the re-analysis dropped (a branch defect)
   int starts = 0, admitted_starts = 0, failed_reanalysis = 0;
 };
 
-// Reads the atlas file (io::FileError when it cannot) and searches it; a timed spec is searched
-// without one (atlas_path must then be empty: an atlas it would not read is a bad request).
+// Reads the atlas file (io::FileError when it cannot) and searches it; with atlas_path empty, the
+// global search (path_synthesis.hpp's SynthesisePathGlobally). A timed spec is searched globally
+// only: an atlas it would not read is a bad request.
 PathDesigns SynthesisePathFromAtlas(const PathSpec& spec, const std::string& atlas_path);
 
 // The design as a mechanism file named `name` with `comment` at its top, its sweep one turn of
-// the crank from the assembly's angle by 1 deg.
+// the crank from the assembly's angle by 1 deg; where the input does not turn fully (a global
+// search's design outside `input: crank`), from the first point's crank angle to the last's.
 // `units`: the file's length unit, as CrankRockerSpec::units ("": none).
 std::string PathDesignYaml(const PathDesign& design, const std::string& name, const std::string& comment, const std::string& units = "");
 

@@ -1,5 +1,6 @@
-// Path synthesis with prescribed timing (path_synthesis.hpp's SynthesiseTimedPath): a global
-// search by random starts, each polished in closed form within the design space's bounds.
+// Path synthesis without an atlas (path_synthesis.hpp's SynthesisePathGlobally): a global search by
+// random starts, each polished in closed form within the design space's bounds, with the timing
+// prescribed or free (then every point's crank angle an unknown, ordered along the path).
 //
 // Why random starts and a bounded least-squares polish, not an evolutionary method: the closed
 // form of the coupler point makes one polish from a start a millisecond or two (Ceres, 10
@@ -52,6 +53,7 @@ double Scale(const std::vector<Eigen::Vector2d>& points, Eigen::Vector2d* centre
   return s;
 }
 
+// The prescribed timing's offsets from the first point's angle.
 std::vector<double> Offsets(const PathRequest& r) {
   std::vector<double> offsets(r.points.size());
   for (size_t i = 0; i < offsets.size(); ++i) offsets[i] = r.timing.empty() ? i * *r.timing_step : r.timing[i] - r.timing[0];
@@ -95,15 +97,19 @@ struct Problem {
   Eigen::Vector2d centre;
   std::vector<double> offsets, lower, upper;
   TimedLimits limits;
+  bool free = false;            // the timing free: offsets are each start's guess
+  bool repeats_first = false;   // a closed path whose last point repeats its first (one turn later)
+  std::vector<int> same_phase;  // per point: -1, or the point whose crank angle it shares
 };
 
 // The coupler points of u at every offset on `branch`; false where the loop does not close.
 // `limits` default to the problem's.
-bool CouplerPoints(const Problem& p, const double* u, int branch, std::vector<Complex>* out, const TimedLimits* limits = nullptr) {
-  out->resize(p.offsets.size());
-  for (size_t i = 0; i < p.offsets.size(); ++i) {
+bool CouplerPoints(const Problem& p, const double* u, int branch, const std::vector<double>& offsets, std::vector<Complex>* out,
+                   const TimedLimits* limits = nullptr) {
+  out->resize(offsets.size());
+  for (size_t i = 0; i < offsets.size(); ++i) {
     double r[2];
-    if (!TimedPointResidual{Eigen::Vector2d::Zero(), p.offsets[i], branch, limits ? limits : &p.limits}(u, r)) return false;
+    if (!TimedPointResidual{Eigen::Vector2d::Zero(), offsets[i], branch, limits ? limits : &p.limits}(u, r)) return false;
     (*out)[i] = Complex(r[0], r[1]);
   }
   return true;
@@ -111,13 +117,13 @@ bool CouplerPoints(const Problem& p, const double* u, int branch, std::vector<Co
 
 // Lays the shape u (A0 at the origin, frame along +x) onto the points by the similarity the
 // space leaves free; false when it cannot (a scale <= 0, outside a bound).
-bool LayOnPoints(const Problem& p, int branch, double* u) {
+bool LayOnPoints(const Problem& p, int branch, const std::vector<double>& offsets, double* u) {
   // the shape's limits: its crank and ratio are those of the design; B0's box is not yet its
   TimedLimits shape = p.limits;
   shape.b0_x[0] = shape.b0_y[0] = -1e300;
   shape.b0_x[1] = shape.b0_y[1] = 1e300;
   std::vector<Complex> c;
-  if (!CouplerPoints(p, u, branch, &c, &shape)) return false;
+  if (!CouplerPoints(p, u, branch, offsets, &c, &shape)) return false;
   const bool a0_fixed = p.lower[0] == p.upper[0] && p.lower[1] == p.upper[1];
   const bool angle_fixed = p.lower[3] == p.upper[3];
   std::vector<Complex> target(c.size());
@@ -151,7 +157,7 @@ bool LayOnPoints(const Problem& p, int branch, double* u) {
   for (int j = 0; j < kTimedUnknowns; ++j)
     if (!(u[j] >= p.lower[j] && u[j] <= p.upper[j])) return false;
   const double b0x = u[0] + u[2] * std::cos(u[3]), b0y = u[1] + u[2] * std::sin(u[3]);
-  return p.limits.Admit(u, b0x, b0y) && CouplerPoints(p, u, branch, &c);
+  return p.limits.Admit(u, b0x, b0y) && CouplerPoints(p, u, branch, offsets, &c);
 }
 
 // Start `index` of the search: drawn from its own generator (the same designs on any number of
@@ -161,7 +167,40 @@ struct Polished {
   std::array<double, kTimedUnknowns> u{};
   int branch = 1;
   int index = 0;
+  std::vector<double> inputs;  // each point's crank angle from the frame line, in the order driven
 };
+
+// The guessed offsets of a start with the timing free: the points spread over a turn (closed) or
+// a random part of one (open), in a random sense.
+std::vector<double> GuessedOffsets(const Problem& p, std::mt19937_64& random) {
+  std::uniform_real_distribution<double> unit(0, 1);
+  const size_t n = p.request->points.size(), distinct = p.repeats_first ? n - 1 : n;
+  const double sense = unit(random) < 0.5 ? 1 : -1;
+  const double span = p.request->open ? (0.15 + 0.85 * unit(random)) * 2 * kPi * (distinct - 1) / distinct : 2 * kPi * (distinct - 1) / distinct;
+  std::vector<double> offsets(n, 0.0);
+  for (size_t i = 0; i < distinct; ++i) offsets[i] = sense * span * i / (distinct - 1);
+  return offsets;
+}
+
+// The polished crank angles (from the frame line) as the mechanism is driven through them: each
+// point reached once, in order, within a turn (a repeated first point a whole turn after it);
+// empty when the order breaks (an order defect).
+std::vector<double> OrderedInputs(const Problem& p, const std::vector<double>& phases) {
+  const size_t n = phases.size(), distinct = p.repeats_first ? n - 1 : n;
+  const double step = AngleDifference(phases[1], phases[0]);
+  const double sense = step >= 0 ? 1 : -1;
+  std::vector<double> inputs = {phases[0]};
+  double previous = 0;
+  for (size_t i = 1; i < distinct; ++i) {
+    double d = std::fmod(sense * (phases[i] - phases[0]), 2 * kPi);
+    if (d < 0) d += 2 * kPi;
+    if (!(d > previous)) return {};
+    previous = d;
+    inputs.push_back(phases[0] + sense * d);
+  }
+  if (p.repeats_first) inputs.push_back(phases[0] + sense * 2 * kPi);
+  return inputs;
+}
 
 Polished PolishStart(const Problem& p, int index) {
   std::mt19937_64 random(p.request->seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(index));
@@ -176,10 +215,32 @@ Polished PolishStart(const Problem& p, int index) {
     u[7] = 4 * unit(random) - 2, u[8] = 4 * unit(random) - 2;
     u[9] = p.lower[9] == p.upper[9] ? p.lower[9] : 2 * kPi * unit(random);
     const int branch = unit(random) < 0.5 ? 1 : -1;
-    if (!LayOnPoints(p, branch, u.data())) continue;
-    TimedPathProblem problem{p.request->points, p.offsets, branch, p.limits, p.lower, p.upper};
+    const std::vector<double> offsets = p.free ? GuessedOffsets(p, random) : p.offsets;
+    if (!LayOnPoints(p, branch, offsets, u.data())) continue;
+    TimedPathProblem problem;
+    problem.points = p.request->points;
+    problem.offsets = offsets;
+    problem.branch = branch;
+    problem.limits = p.limits;
+    problem.lower = p.lower;
+    problem.upper = p.upper;
+    std::vector<double> phases(offsets.size());
+    if (p.free) {
+      for (size_t i = 0; i < offsets.size(); ++i) phases[i] = u[9] + offsets[i];
+      problem.phases = &phases;
+      problem.same_phase = p.same_phase;
+    }
     const double sse = CeresSolves().timed_path(problem, u.data());
-    if (std::isfinite(sse)) best = {sse, u, branch, index};
+    if (!std::isfinite(sse)) return best;
+    std::vector<double> inputs(offsets.size());
+    if (p.free) {
+      inputs = OrderedInputs(p, phases);
+      if (inputs.empty()) return best;  // an order defect: the points are not passed in order
+      u[9] = inputs.front();
+    } else {
+      for (size_t i = 0; i < offsets.size(); ++i) inputs[i] = u[9] + offsets[i];
+    }
+    best = {sse, u, branch, index, inputs};
     return best;
   }
   return best;
@@ -210,16 +271,18 @@ std::optional<double> Reanalyse(const Problem& p, const Mechanism& m, const Poli
     *why = "the mechanism does not assemble at the first point";
     return std::nullopt;
   }
+  std::vector<double> offsets;
+  for (double input : s.inputs) offsets.push_back(input - s.u[9]);
   std::vector<Complex> closed;
-  CouplerPoints(p, s.u.data(), s.branch, &closed);
+  CouplerPoints(p, s.u.data(), s.branch, offsets, &closed);
   Continuation walk(solver);
   if (!walk.Start(m.hint.input, q).ok()) {
     *why = "the walk cannot start at the first point";
     return std::nullopt;
   }
   double sse = 0;
-  for (size_t i = 0; i < p.offsets.size(); ++i) {
-    const WalkReport report = walk.AdvanceTo(s.u[9] + p.offsets[i], 0.05);
+  for (size_t i = 0; i < s.inputs.size(); ++i) {
+    const WalkReport report = walk.AdvanceTo(s.inputs[i], 0.05);
     if (!report.ok()) {
       *why = fmt::format("the crank cannot be driven to point {}: {}", i + 1, report.message);
       return std::nullopt;
@@ -246,8 +309,9 @@ std::optional<PathLinkage> LinkageOf(const Problem& p, const Polished& s, std::s
   const std::optional<double> sse = Reanalyse(p, l.mechanism, s, why);
   if (!sse) return std::nullopt;
   l.sse = *sse;
-  l.error = std::sqrt(*sse / p.offsets.size());
+  l.error = std::sqrt(*sse / s.inputs.size());
   l.phi_1 = p.request->timing.empty() ? std::fmod(std::fmod(s.u[9], 2 * kPi) + 2 * kPi, 2 * kPi) : s.u[9];
+  l.inputs = s.inputs;
   l.polished = true;
   l.fit = fmt::format("closed-form polish from random start {} (sse {:.6g}), re-analysed through the mechanism", s.index, s.sse);
   l.crank = s.u[4], l.coupler = s.u[5], l.rocker = s.u[6], l.frame = s.u[2];
@@ -258,21 +322,22 @@ std::optional<PathLinkage> LinkageOf(const Problem& p, const Polished& s, std::s
 
 }  // namespace
 
-PathResult SynthesiseTimedPath(const PathRequest& request) {
+PathResult SynthesisePathGlobally(const PathRequest& request) {
   PathResult result;
   if (!request.IsValid(&result.message)) return result;
-  if (!request.Timed()) {
-    result.message = "no timing prescribed: the atlas's search (SynthesisePath)";
-    return result;
-  }
   Problem p;
+  p.free = !request.Timed();
+  const size_t n = request.points.size();
+  p.repeats_first = p.free && !request.open && request.points.back() == request.points.front();
+  p.same_phase.assign(n, -1);
+  if (p.repeats_first) p.same_phase.back() = 0;
   p.request = &request;
   p.scale = Scale(request.points, &p.centre);
   if (!(p.scale > 0)) {
     result.message = "the points coincide";
     return result;
   }
-  p.offsets = Offsets(request);
+  if (!p.free) p.offsets = Offsets(request);
   Bounds(request, p.scale, &p.lower, &p.upper);
   p.limits = Limits(request.space);
   const int starts = request.starts > 0 ? request.starts : kTimedStarts;
@@ -285,9 +350,9 @@ PathResult SynthesiseTimedPath(const PathRequest& request) {
   const int admitted = static_cast<int>(std::count_if(polished.begin(), polished.end(), [](const Polished& s) { return std::isfinite(s.sse); }));
   if (admitted == 0) {
     result.status = PathStatus::kNoCandidate;
-    result.message = fmt::format("none of {} random starts ({} draws each) gives a four-bar inside the design space that closes at every "
-                                 "prescribed crank angle",
-                                 starts, kDrawsPerStart);
+    result.message = fmt::format("none of {} random starts ({} draws each) gives a four-bar inside the design space that {}", starts,
+                                 kDrawsPerStart,
+                                 p.free ? "passes the points in order" : "closes at every prescribed crank angle");
     return result;
   }
   // the best distinct designs, re-analysed; the first failure's reason kept for the message

@@ -105,8 +105,8 @@ void TimeFit(benchmark::State& state) {
   }
 }
 
-// The literature's timed path-synthesis problems as `koppel synth path` runs them with the
-// design files of tests/data/benchmarks (the papers' bounds, a crank), against the 30 s a problem
+// The literature's path-synthesis problems as `koppel synth path` runs them with the design files
+// of tests/data/benchmarks (the papers' bounds, a crank), against the 30 s a problem
 // the synthesis is given: the five points of Kunjur and Krishnamurty (A0 at the origin, frame
 // along +x, crank angles 30..90 deg) and the 18-point closed curve of Cabrera et al. (20 deg steps).
 PathRequest KunjurFivePoints() {
@@ -142,7 +142,28 @@ void TimeTimedPath(benchmark::State& state, const PathRequest& request) {
     state.counters["sse"] = result.linkages.front().sse;
   }
 }
+// The untimed two: six points on a line (an open stretch, lengths 5..60) and the ellipse's ten
+// points (the last repeating the first, lengths 5..80), both with a crank, pivots and K within the
+// lengths' bound either way.
+PathRequest UntimedProblem(std::vector<Eigen::Vector2d> points, bool open, double shortest, double longest) {
+  PathRequest r;
+  r.points = std::move(points);
+  r.open = open;
+  r.space.lengths = std::make_pair(shortest, longest);
+  r.space.pivots_x = r.space.pivots_y = r.space.coupler_point = std::make_pair(-longest, longest);
+  r.space.input = InputTurn::kCrank;
+  return r;
+}
+
 void TimeKunjur(benchmark::State& state) { TimeTimedPath(state, KunjurFivePoints()); }
+void TimeSixCollinear(benchmark::State& state) {
+  TimeTimedPath(state, UntimedProblem({{20, 20}, {20, 25}, {20, 30}, {20, 35}, {20, 40}, {20, 45}}, true, 5, 60));
+}
+void TimeEllipse(benchmark::State& state) {
+  TimeTimedPath(state, UntimedProblem({{20, 10}, {17.66, 15.142}, {11.736, 17.878}, {5, 16.928}, {0.60307, 12.736}, {0.60307, 7.2638},
+                                       {5, 3.0718}, {11.736, 2.1215}, {17.66, 4.8577}, {20, 10}},
+                                      false, 5, 80));
+}
 void TimeCabrera(benchmark::State& state) { TimeTimedPath(state, CabreraEighteenPoints()); }
 
 Case RunCase(std::string name, double budget_ms, void (*run)(benchmark::State&), bool threaded) {
@@ -162,7 +183,8 @@ std::vector<Case> SynthesisCases() {
   using namespace synthesis_bench;
   return {RunCase("deadcentre-synthesis", 5, TimeDeadCentre, false), RunCase("chart-30x30", 2000, TimeChart, true),
           RunCase("fit-32-starts", 1000, TimeFit, true), RunCase("path-timed-5-points", 30'000, TimeKunjur, true),
-          RunCase("path-timed-18-points", 30'000, TimeCabrera, true)};
+          RunCase("path-timed-18-points", 30'000, TimeCabrera, true), RunCase("path-free-6-points", 30'000, TimeSixCollinear, true),
+          RunCase("path-free-ellipse", 30'000, TimeEllipse, true)};
 }
 
 }  // namespace koppel::bench

@@ -61,7 +61,7 @@ void Run(const Args& args) {
   request.points = read.points;
   request.timing = read.phi;
   if (!args.timing_step.empty()) request.timing_step = DegToRad(ParseNumberFlag("--timing-step", args.timing_step));
-  if (!args.starts.empty()) request.starts = ParseCountFlag("--starts", args.starts, 1, 1'000'000);
+  if (!args.starts.empty()) request.starts = ParseCountFlag("--starts", args.starts, 1, kMaxTimedStarts);
   if (!args.seed.empty()) request.seed = static_cast<std::uint64_t>(ParseCountFlag("--seed", args.seed, 0, 2'000'000'000));
   const bool timed = !request.timing.empty() || request.timing_step;
   if (timed && !args.atlas.empty()) {

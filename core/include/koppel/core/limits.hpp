@@ -14,6 +14,10 @@ inline constexpr std::size_t kMaxReportedProblems = 20;
 // full turn; every sample keeps its pose and outputs, so more is gigabytes nobody reads.
 inline constexpr long kMaxSweepSamples = 1'000'000;
 
+// The random starts of synth path's global search (--starts): one or two milliseconds each, so
+// the limit is half an hour on two cores; more is a typing error.
+inline constexpr int kMaxTimedStarts = 1'000'000;
+
 // Samples of the straight-line search (curve --straight): the search tries every pair of end
 // points, so its work grows with the square; 40 000 is 0.009 deg over +-180 deg, about a second.
 inline constexpr long kMaxStraightSearchSamples = 40'000;

@@ -23,6 +23,7 @@
 #include "koppel/synthesis/design_space.hpp"
 
 #include "koppel/analysis/classification.hpp"
+#include "koppel/core/limits.hpp"  // kMaxTimedStarts
 #include "koppel/core/mechanism.hpp"
 #include "koppel/synthesis/atlas.hpp"
 #include "koppel/synthesis/cognates.hpp"
@@ -78,7 +79,6 @@ struct PathRequest {
 // The global search's starts by default (about 7 s on two cores for the literature's 18-point
 // closed curve with 20 deg steps, tests/data/benchmarks).
 inline constexpr int kTimedStarts = 4000;
-inline constexpr int kMaxTimedStarts = 1'000'000;
 
 struct PathLinkage {
   double error = 0;               // RMS distance of the points from the polished curve

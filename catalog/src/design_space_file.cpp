@@ -38,7 +38,7 @@ DesignSpace ParseDesignSpaceText(const std::string& text, const std::string& pat
   YamlReader r(path, nullptr);
   r.set_fallback(YAML::Mark());
   if (!r.ExpectMap(root, "")) throw InputError(r.diagnostics());
-  r.CheckKeys(root, "", {"lengths", "ratio", "pivots", "input", "A0", "frame_angle", "coupler_point"});
+  r.CheckKeys(root, "", {"lengths", "ratio", "pivots", "input", "A0", "frame_angle", "coupler_point", "mu_min"});
   DesignSpace space;
   if (const YAML::Node n = root["lengths"]; n.IsDefined()) {
     space.lengths = Interval(r, n, "lengths");
@@ -76,6 +76,12 @@ DesignSpace ParseDesignSpaceText(const std::string& text, const std::string& pat
     }
   }
   if (const YAML::Node n = root["coupler_point"]; n.IsDefined()) space.coupler_point = Interval(r, n, "coupler_point");
+  if (const YAML::Node n = root["mu_min"]; n.IsDefined()) {
+    if (const auto v = r.Number(n, "mu_min")) {
+      if (!(*v >= 0 && *v < 90)) r.Error(n, "mu_min", "expected a transmission angle from 0 to below 90 deg");
+      else space.mu_min = DegToRad(*v);
+    }
+  }
   if (std::string why; r.diagnostics().empty() && !space.IsValid(&why)) r.Error(root, "", why);
   if (!r.diagnostics().empty()) throw InputError(r.diagnostics());
   return space;

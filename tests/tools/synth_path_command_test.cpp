@@ -40,7 +40,7 @@ TEST_CASE("synth path matches a crank-rocker's curve from the CI atlas", "[cli][
   std::istringstream in(r.out);
   std::string line;
   std::getline(in, line);
-  CHECK(line == "rank,error,A0_x,A0_y,B0_x,B0_y,crank,coupler,rocker,frame,K_along,K_left,grashof,cognate_of,sse,phi_1");
+  CHECK(line == "rank,error,A0_x,A0_y,B0_x,B0_y,crank,coupler,rocker,frame,K_along,K_left,grashof,cognate_of,sse,phi_1,mu_min");
   std::vector<std::vector<std::string>> rows;
   while (std::getline(in, line)) {
     rows.emplace_back();
@@ -114,7 +114,7 @@ TEST_CASE("synth path --design: no linkage outside the design space", "[cli][pat
   std::istringstream in(r.out);
   std::string line;
   std::getline(in, line);
-  REQUIRE(line == "rank,error,A0_x,A0_y,B0_x,B0_y,crank,coupler,rocker,frame,K_along,K_left,grashof,cognate_of,sse,phi_1");
+  REQUIRE(line == "rank,error,A0_x,A0_y,B0_x,B0_y,crank,coupler,rocker,frame,K_along,K_left,grashof,cognate_of,sse,phi_1,mu_min");
   int rows = 0;
   while (std::getline(in, line)) {
     ++rows;

@@ -94,22 +94,23 @@ void Run(const Args& args) {
   }
   MixedTable t;
   t.columns = {"rank", "error", "A0_x", "A0_y", "B0_x", "B0_y", "crank", "coupler", "rocker", "frame", "K_along", "K_left", "grashof", "cognate_of",
-               "sse", "phi_1"};
+               "sse", "phi_1", "mu_min"};
   if (!args.dir.empty()) MakeOutputDirectory(args.dir);
   for (size_t i = 0; i < result.designs.size(); ++i) {
     const PathDesign& l = result.designs[i];
     // a Roberts cognate of a better row: that row's rank; else empty (null in JSON)
     const MixedTable::Cell cognate_of = l.cognate_of >= 0 ? MixedTable::Cell(static_cast<double>(l.cognate_of + 1)) : MixedTable::Cell();
     t.rows.push_back({static_cast<double>(i + 1), l.error, l.a0.x(), l.a0.y(), l.b0.x(), l.b0.y(), l.crank, l.coupler, l.rocker, l.frame,
-                      l.coupler_point.x(), l.coupler_point.y(), l.grashof, cognate_of, l.sse, RadToDeg(l.phi_1)});
+                      l.coupler_point.x(), l.coupler_point.y(), l.grashof, cognate_of, l.sse, RadToDeg(l.phi_1),
+                      l.mu_min ? MixedTable::Cell(RadToDeg(*l.mu_min)) : MixedTable::Cell()});
     if (!args.dir.empty()) WriteDesign(args, l, i);
   }
   WriteOutput(args.out, t.Text(args.format));
   if (global)
     std::cerr << fmt::format("koppel synth path: {} points, timing {}; {} random starts, {} inside the design space; best sse {:.6g} "
-                             "(RMS distance {:.3g}); {} designs dropped by the re-analysis, {} repeats of a better design\n",
+                             "(RMS distance {:.3g}); {} designs dropped by the re-analysis, {} outside the design space, {} repeats of a better design\n",
                              request.points.size(), timed ? "prescribed" : "free", result.starts, result.admitted_starts, result.designs.front().sse, result.designs.front().error,
-                             result.failed_reanalysis, result.duplicates);
+                             result.failed_reanalysis, result.outside_space, result.duplicates);
   else
     std::cerr << fmt::format("koppel synth path: {} points, {} atlas curves; best RMS distance {:.3g}; {} repeats of a better design dropped\n",
                              request.points.size(), result.atlas_curves, result.designs.front().error, result.duplicates);
@@ -131,13 +132,15 @@ void AddPathSubcommand(CLI::App& synth) {
       "points from the polished coupler curve, in the points' unit), the pivots, crank A0A, coupler AB, rocker B0B,\n"
       "frame A0B0, the coupler point K in the coupler's frame (along A -> B, and left of it), the Grashof type, and\n"
       "cognate_of: the rank of the better row whose Roberts cognate this is (the same curve from another four-bar),\n"
-      "sse (the sum of the squared distances) and phi_1 (the crank's angle in deg from the frame line A0 -> B0 at the first point).\n"
+      "sse (the sum of the squared distances), phi_1 (the crank's angle in deg from the frame line A0 -> B0 at the first point)\n"
+      "and mu_min (the smallest transmission angle in deg over a full turn for a crank, else over the points' stretch).\n"
       "Each row is a distinct design: one found again from another atlas curve (the same joints where K passes the\n"
       "first point, to 1e-4 of the points' size, either pivot as the crank's) is dropped and the next candidate polished.\n"
       "--open matches an open stretch against the arcs of rocker-driven four-bars. -o DIR writes each as a mechanism file.\n"
       "--design FILE.yaml states the design space (every key optional): lengths: [min, max] (every link, the frame too),\n"
       "ratio: max (longest / shortest link), pivots: {x: [a, b], y: [c, d]} (both frame pivots), input: crank (the input\n"
-      "turns fully), coupler_point: [min, max] (K's coordinates), and in the global search A0: [x, y], frame_angle: deg (fixed).\n"
+      "turns fully), coupler_point: [min, max] (K's coordinates), mu_min: deg (the least transmission angle), and in the\n"
+      "global search A0: [x, y], frame_angle: deg (fixed).\n"
       "No linkage outside it is returned; when none is left, exit 1 names the constraint the best one broke.\n"
       "Without --atlas the search is global: --starts random four-bars inside the design space, polished in closed form\n"
       "with each point's crank angle free (or prescribed), the best re-analysed by driving the mechanism through the points\n"
@@ -158,7 +161,7 @@ void AddPathSubcommand(CLI::App& synth) {
   cmd->add_option("--threads", args->threads, "Threads (default: one per core; at most 256, kMaxThreads)");
   cmd->add_option("--units", args->units, "The length unit of the mechanism files -o writes: each says `units: {length: UNIT}`\n"
                                            "(m, dm, cm, mm, um, km, in, ft; default: none). The points are in that unit.");
-  cmd->add_option("--design", args->design, "The design space: a YAML file (lengths, ratio, pivots, input, A0, frame_angle, coupler_point)");
+  cmd->add_option("--design", args->design, "The design space: a YAML file (lengths, ratio, pivots, input, coupler_point, mu_min, A0, frame_angle)");
   cmd->add_option("--timing-step", args->timing_step, "Prescribed timing: the crank turns by DEG from point to point (the first angle free)");
   cmd->add_option("--starts", args->starts, "The global search's random starts (default 4000)");
   cmd->add_option("--seed", args->seed, "The global search's seed (default 1): the same seed, the same designs");

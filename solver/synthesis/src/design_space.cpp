@@ -26,6 +26,7 @@ bool DesignSpace::IsValid(std::string* why) const {
   else if (a0 && !a0->allFinite()) problem = "A0: [x, y] must be finite";
   else if (frame_angle && !std::isfinite(*frame_angle)) problem = "frame_angle must be finite";
   else if (!FiniteInterval(coupler_point)) problem = "coupler_point: [min, max] must be finite with min <= max";
+  else if (mu_min && !(*mu_min >= 0 && *mu_min < kPi / 2)) problem = "mu_min: a transmission angle from 0 to below 90 deg";
   else if (a0 && pivots_x && (a0->x() < pivots_x->first || a0->x() > pivots_x->second)) problem = "A0 lies outside pivots.x";
   else if (a0 && pivots_y && (a0->y() < pivots_y->first || a0->y() > pivots_y->second)) problem = "A0 lies outside pivots.y";
   if (why) *why = problem;
@@ -65,6 +66,9 @@ std::string DesignSpace::Violation(const FourBarSizes& s) const {
     for (const auto& [name, v] : {std::pair<const char*, double>{"along A -> B", s.coupler_point->x()}, {"left of A -> B", s.coupler_point->y()}})
       if (v < coupler_point->first || v > coupler_point->second)
         return fmt::format("coupler_point: K lies {:.6g} {}, outside [{:.6g}, {:.6g}]", v, name, coupler_point->first, coupler_point->second);
+  // the solver's least transmission angle of a design the search held at the bound: its roundoff
+  if (mu_min && s.mu_min && *s.mu_min < *mu_min - kFixedTolerance)
+    return fmt::format("mu_min: the smallest transmission angle is {:.4g} deg, below {:.4g} deg", RadToDeg(*s.mu_min), RadToDeg(*mu_min));
   if (input == InputTurn::kCrank) {
     // Grashof: shortest + longest <= the other two; the input turns fully when the crank or the
     // frame is the shortest (crank-rocker, double crank)

@@ -1,5 +1,7 @@
 #include "koppel/synthesis/four_bar_design.hpp"
 
+#include "koppel/analysis/extremes.hpp"
+#include "koppel/core/angles.hpp"
 #include "koppel/core/build.hpp"
 #include "koppel/core/plane.hpp"
 
@@ -22,6 +24,16 @@ void AddBar(Mechanism& m, const std::string& name, const std::string& from_name,
 }
 
 }  // namespace
+
+std::optional<double> TransmissionMinimum(const Mechanism& designed, double from, double to) {
+  SweepOptions stretch;
+  stretch.from = from;
+  stretch.to = to;
+  stretch.step = DegToRad(1);
+  const OutputExtremes mu = FindOutputExtremes(designed, 3, 0, stretch);  // outputs P, theta, psi, mu
+  if (!mu.sweep.complete() || !Usable(mu.status)) return std::nullopt;
+  return mu.minimum.value;
+}
 
 Mechanism DesignedFourBar(const FourBarGeometry& g, const std::string& name) {
   Mechanism m;

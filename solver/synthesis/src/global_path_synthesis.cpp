@@ -88,6 +88,7 @@ TimedLimits Limits(const DesignSpace& s) {
   limits.ratio = s.ratio.value_or(0);
   if (s.pivots_x) limits.b0_x[0] = s.pivots_x->first, limits.b0_x[1] = s.pivots_x->second;
   if (s.pivots_y) limits.b0_y[0] = s.pivots_y->first, limits.b0_y[1] = s.pivots_y->second;
+  if (s.mu_min && limits.crank) limits.cos_mu = std::cos(*s.mu_min);  // over the turn; checked again by the solver
   return limits;
 }
 
@@ -317,6 +318,8 @@ std::optional<PathLinkage> LinkageOf(const Problem& p, const Polished& s, std::s
   l.crank = s.u[4], l.coupler = s.u[5], l.rocker = s.u[6], l.frame = s.u[2];
   l.coupler_point = {s.u[7], s.u[8]};
   l.grashof = ClassifyChain(l.mechanism).grashof;
+  const bool turns = l.grashof == GrashofType::kCrankRocker || l.grashof == GrashofType::kDoubleCrank;
+  l.mu_min = TransmissionMinimum(l.mechanism, s.inputs.front(), turns ? s.inputs.front() + 2 * kPi : s.inputs.back());
   return l;
 }
 
@@ -357,15 +360,21 @@ PathResult SynthesisePathGlobally(const PathRequest& request) {
   }
   // the best distinct designs, re-analysed; the first failure's reason kept for the message
   std::vector<PathLinkage> kept;
-  std::string failure;
-  int failed = 0;
+  std::string failure, outside_reason;
+  int failed = 0, outside = 0;
   const size_t wanted = static_cast<size_t>(request.top) * kReanalysedPerDesign;
   for (int i = 0; i < admitted && kept.size() < wanted; ++i) {
     std::string why;
     std::optional<PathLinkage> l = LinkageOf(p, polished[i], &why);
-    if (l && !request.space.Violation({l->geometry.a0, l->geometry.b0, l->crank, l->coupler, l->rocker, l->coupler_point}).empty()) {
-      why = "outside the design space: " + request.space.Violation({l->geometry.a0, l->geometry.b0, l->crank, l->coupler, l->rocker, l->coupler_point});
-      l.reset();
+    if (l) {
+      const std::string v = request.space.mu_min && !l->mu_min
+                                ? "mu_min: the solver cannot drive it through the worked stretch"
+                                : request.space.Violation({l->geometry.a0, l->geometry.b0, l->crank, l->coupler, l->rocker, l->coupler_point, l->mu_min});
+      if (!v.empty()) {
+        ++outside;
+        if (outside_reason.empty()) outside_reason = v;
+        continue;
+      }
     }
     if (!l) {
       ++failed;
@@ -380,11 +389,13 @@ PathResult SynthesisePathGlobally(const PathRequest& request) {
   result.linkages = DistinctLinkages(kept, kSameDesign * p.scale, &result.duplicates);
   if (result.linkages.size() > static_cast<size_t>(request.top)) result.linkages.resize(request.top);
   result.failed_reanalysis = failed;
+  result.outside_space = outside;
   result.starts = starts;
   result.admitted_starts = admitted;
   if (result.linkages.empty()) {
     result.status = PathStatus::kNoCandidate;
-    result.message = fmt::format("{} polished designs failed the re-analysis through the mechanism; the best: {}", failed, failure);
+    result.message = failed > 0 ? fmt::format("{} polished designs failed the re-analysis through the mechanism; the best: {}", failed, failure)
+                                : fmt::format("{} polished designs lie outside the design space; the best broke {}", outside, outside_reason);
     return result;
   }
   result.status = PathStatus::kOk;

@@ -40,6 +40,10 @@ struct TimedLimits {
   bool crank = false;                                  // Grashof, the crank or the frame shortest
   double ratio = 0;                                    // longest / shortest at most this (0: any)
   double b0_x[2] = {-1e300, 1e300}, b0_y[2] = {-1e300, 1e300};  // B0's box
+  // with `crank`: cos of the least transmission angle over the turn (above 1: any). A crank's
+  // transmission angle is extreme with the crank along the frame line (A0 A over A0 B0 and
+  // opposite it), where A B0 is |frame -+ crank|: both must keep |cos mu| <= cos_mu.
+  double cos_mu = 2;
   template <class T> bool Admit(const T* u, const T& b0x, const T& b0y) const {
     if (b0x < T(b0_x[0]) || b0x > T(b0_x[1]) || b0y < T(b0_y[0]) || b0y > T(b0_y[1])) return false;
     if (!crank && ratio <= 0) return true;
@@ -52,7 +56,14 @@ struct TimedLimits {
     if (ratio > 0 && links[longest] > T(ratio) * links[shortest]) return false;
     const T sum = links[0] + links[1] + links[2] + links[3];
     const bool grashof = T(2) * (links[shortest] + links[longest]) <= sum;
-    return !crank || (grashof && (shortest == 0 || shortest == 1));
+    if (!crank) return true;
+    if (!grashof || !(shortest == 0 || shortest == 1)) return false;
+    if (cos_mu > 1) return true;
+    for (const T f : {u[2] - u[4], u[2] + u[4]}) {
+      const T cos_gamma = (u[5] * u[5] + u[6] * u[6] - f * f) / (T(2) * u[5] * u[6]);
+      if (cos_gamma > T(cos_mu) || cos_gamma < T(-cos_mu)) return false;
+    }
+    return true;
   }
 };
 

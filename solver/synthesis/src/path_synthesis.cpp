@@ -314,6 +314,11 @@ std::optional<PathLinkage> Polish(const Placed& placed, const Candidate& c, cons
   l.frame = (g->b0 - g->a0).norm();
   l.coupler_point = {fit.values[7], fit.values[8]};
   l.grashof = ClassifyChain(l.mechanism).grashof;
+  // the worked stretch: a full turn for a crank, else the fit's crank angles from least to most
+  const bool turns = l.grashof == GrashofType::kCrankRocker || l.grashof == GrashofType::kDoubleCrank;
+  double low = at_first.phi, high = at_first.phi;
+  for (const FitTargetResult& t : fit.targets) low = std::min(low, t.input), high = std::max(high, t.input);
+  l.mu_min = turns ? TransmissionMinimum(l.mechanism, at_first.phi, at_first.phi + 2 * kPi) : TransmissionMinimum(l.mechanism, low, high);
   return l;
 }
 
@@ -516,7 +521,9 @@ std::vector<size_t> PolishOrder(const std::vector<std::optional<Placed>>& placed
 // The polish may carry a linkage out of the design space: dropped, never returned.
 void DropOutsideSpace(const DesignSpace& space, std::vector<PathLinkage>* polished, std::string* broke) {
   polished->erase(std::remove_if(polished->begin(), polished->end(), [&](const PathLinkage& l) {
-                    const std::string violation = space.Violation({l.geometry.a0, l.geometry.b0, l.crank, l.coupler, l.rocker, l.coupler_point});
+                    const std::string violation =
+                        space.mu_min && !l.mu_min ? "mu_min: the solver cannot drive it through the worked stretch"
+                                                  : space.Violation({l.geometry.a0, l.geometry.b0, l.crank, l.coupler, l.rocker, l.coupler_point, l.mu_min});
                     if (!violation.empty() && broke->empty()) *broke = violation + " (after the polish)";
                     return !violation.empty();
                   }),

@@ -196,9 +196,31 @@ TEST_CASE("timed path synthesis returns no design outside the design space", "[s
     const std::vector<Eigen::Vector2d> swept = SweptPoints(l.mechanism, l.mechanism.hint.input, DegToRad(20), 18);
     CHECK(SumOfSquares(swept, points) == Approx(l.sse).epsilon(1e-9));
   }
+  // a least transmission angle over the turn: the search keeps it in closed form, the solver's
+  // re-analysis (TransmissionMinimum) confirms it
+  request.space.mu_min = DegToRad(40);
+  const PathResult mu = SynthesisePathGlobally(request);
+  INFO(mu.message);
+  REQUIRE(mu.ok());
+  for (const PathLinkage& l : mu.linkages) {
+    REQUIRE(l.mu_min);
+    CHECK(*l.mu_min >= DegToRad(40) - 1e-9);
+    // the reference: the transmission angle sampled by the sweep over the whole turn
+    SweepOptions turn;
+    turn.from = l.mechanism.hint.input;
+    turn.to = turn.from + 2 * kPi;
+    turn.step = DegToRad(0.5);
+    turn.order = 0;
+    const SweepResult sweep = Sweep(l.mechanism, turn);
+    REQUIRE(sweep.complete());
+    double least = kPi;
+    for (Eigen::Index i = 0; i < sweep.outputs.rows(); ++i) least = std::min(least, sweep.outputs(i, 4));  // P_x P_y theta psi mu
+    CHECK(least >= *l.mu_min - 1e-12);
+    CHECK(least <= *l.mu_min + DegToRad(0.1));
+  }
   // a space whose links cannot reach the points' size: no start is admitted, and it says so
   request.space = DesignSpace();
-  request.space.lengths = std::make_pair(0.0, 1e-4);
+  request.space.lengths = std::make_pair(0.0, 1e-4);  // and no mu_min
   request.starts = 50;
   const PathResult none = SynthesisePathGlobally(request);
   CHECK(none.status == PathStatus::kNoCandidate);

@@ -35,6 +35,7 @@ PathDesign PathDesignOf(const PathLinkage& l) {
   d.sse = l.sse;
   d.phi_1 = l.phi_1;
   d.inputs = l.inputs;
+  d.mu_min = l.mu_min;
   d.a0 = l.geometry.a0;
   d.b0 = l.geometry.b0;
   d.crank = l.crank;
@@ -74,6 +75,7 @@ PathDesigns SynthesisePathFromAtlas(const PathSpec& spec, const std::string& atl
   out.starts = result.starts;
   out.admitted_starts = result.admitted_starts;
   out.failed_reanalysis = result.failed_reanalysis;
+  out.outside_space = result.outside_space;
   out.ok = result.ok();
   out.invalid_request = result.status == PathStatus::kInvalidRequest;
   out.message = result.message;

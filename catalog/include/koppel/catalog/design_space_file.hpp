@@ -7,6 +7,7 @@
 //   A0: [x, y]                 the crank's pivot fixed there
 //   frame_angle: deg           the frame line A0 -> B0 fixed at this angle against +x
 //   coupler_point: [min, max]  both coordinates of K in the coupler's frame
+//   mu_min: deg                the smallest transmission angle over the worked stretch
 // Numbers may be formulas. Unknown keys, a contradiction (an empty interval, a ratio below 1) and
 // non-finite numbers are errors with file:line:column (InputError, as mechanism_file.hpp).
 #pragma once

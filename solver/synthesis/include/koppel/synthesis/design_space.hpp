@@ -18,6 +18,8 @@ struct FourBarSizes {
   double crank = 0, coupler = 0, rocker = 0;                                    // A0A, AB, B0B (the frame is |A0B0|)
   // K in the coupler's frame (along A -> B, left of it); unknown (not checked) when absent
   std::optional<Eigen::Vector2d> coupler_point;
+  // the smallest transmission angle over the worked stretch [rad]; unknown (not checked) when absent
+  std::optional<double> mu_min;
 };
 
 enum class InputTurn { kAny, kCrank };  // kCrank: the input at A0 turns fully (Grashof, crank or frame shortest)
@@ -32,13 +34,15 @@ struct DesignSpace {
   std::optional<double> frame_angle;
   // both coordinates of K in the coupler's frame (along A -> B, left of it) inside [min, max]
   std::optional<std::pair<double, double>> coupler_point;
+  // the smallest transmission angle over the worked stretch at least this [rad]
+  std::optional<double> mu_min;
 
   // A fixed A0 or frame angle holds to this, relative to the design's largest link (roundoff of
   // the polish, which keeps them constant, and of the joints' positions computed from them).
   static constexpr double kFixedTolerance = 1e-9;
 
   bool Empty() const {
-    return !lengths && !ratio && !pivots_x && !pivots_y && input == InputTurn::kAny && !a0 && !frame_angle && !coupler_point;
+    return !lengths && !ratio && !pivots_x && !pivots_y && input == InputTurn::kAny && !a0 && !frame_angle && !coupler_point && !mu_min;
   }
   // Empty *why and true when the space can hold a design (no empty interval, ratio >= 1, finite).
   bool IsValid(std::string* why) const;

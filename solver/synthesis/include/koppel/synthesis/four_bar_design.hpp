@@ -31,6 +31,11 @@ struct FourBarGeometry {
 // Precondition: no link of zero length (A0 != A, A != B, B != B0, A0 != B0).
 Mechanism DesignedFourBar(const FourBarGeometry& geometry, const std::string& name);
 
+// The smallest transmission angle (output "mu") of a DesignedFourBar while its input is driven
+// from `from` to `to` [rad] on the assembly's branch, found by the solver (extremes.hpp, 1 deg
+// search, refined); nullopt where that stretch cannot be driven through.
+std::optional<double> TransmissionMinimum(const Mechanism& designed, double from, double to);
+
 // Where B sits for crank angle `phi` (A = A0 + a (cos phi, sin phi)) on the assembly branch
 // `branch` (+1: B left of the line A -> B0, -1: right), rocker c about B0, coupler b. nullopt
 // where the links do not close.

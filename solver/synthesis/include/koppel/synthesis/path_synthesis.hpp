@@ -85,6 +85,9 @@ struct PathLinkage {
   double sse = 0;                 // the sum of the squared distances (the literature's objective)
   double phi_1 = 0;               // the crank's angle from the frame line A0 -> B0 where K is nearest the first point
   std::vector<double> inputs;     // the global search's: each point's crank angle from the frame line, in the order driven
+  // the smallest transmission angle over the worked stretch: a full turn for a crank, else from
+  // the first point to the last [rad]; nullopt where the solver cannot drive through it
+  std::optional<double> mu_min;
   double descriptor_distance = 0; // of the atlas candidate from the points' descriptor
   AtlasEntry source;              // the atlas curve it came from
   bool polished = false;          // the fit ran (else the candidate as the similarity put it)
@@ -122,6 +125,7 @@ struct PathResult {
   // the timed search: its starts, those that found an admissible four-bar, and polished designs
   // dropped by the re-analysis through the mechanism (a branch or order defect)
   int starts = 0, admitted_starts = 0, failed_reanalysis = 0;
+  int outside_space = 0;  // polished designs outside the space its bounds could not keep (mu_min over the stretch)
   bool ok() const { return status == PathStatus::kOk; }
 };
 

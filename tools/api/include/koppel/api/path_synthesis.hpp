@@ -44,6 +44,9 @@ struct PathDesign {
   double sse = 0;    // the sum of the squared distances (the literature's objective)
   double phi_1 = 0;  // the crank's angle from the frame line where K passes (nearest) the first point
   std::vector<double> inputs;  // the global search's: each point's crank angle from the frame line, in order (radians)
+  // the smallest transmission angle over the worked stretch (a full turn for a crank, else the
+  // points' stretch) [rad]; nullopt where the solver cannot drive through it
+  std::optional<double> mu_min;
   Eigen::Vector2d a0 = Eigen::Vector2d::Zero(), b0 = Eigen::Vector2d::Zero();  // the pivots
   double crank = 0, coupler = 0, rocker = 0, frame = 0;                         // A0A, AB, B0B, A0B0
   Eigen::Vector2d coupler_point = Eigen::Vector2d::Zero();  // K along A -> B, and left of it
@@ -64,6 +67,7 @@ struct PathDesigns {
   // the global search: random starts, those that found a four-bar inside the design space, and
   // polished designs the re-analysis dropped (a branch defect)
   int starts = 0, admitted_starts = 0, failed_reanalysis = 0;
+  int outside_space = 0;  // polished designs dropped outside the space (the transmission angle over the stretch)
 };
 
 // Reads the atlas file (io::FileError when it cannot) and searches it; with atlas_path empty, the

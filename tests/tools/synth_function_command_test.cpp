@@ -129,4 +129,22 @@ TEST_CASE("synth function --units writes the unit into the file and labels the l
   CHECK_THAT(bad.err, Catch::Contains("furlong") && Catch::Contains("m, dm, cm, mm, um, km, in, ft"));
   CHECK_FALSE(std::filesystem::exists(never));
 }
+
+// --design: the log10 generator's transmission angle (1.5 deg, printed as mu_min) is below a
+// space's 10 deg: exit 1 naming the constraint, its figures still shown, no file written; within
+// a space it meets, the design as without one.
+TEST_CASE("synth function --design: a generator outside the space exits 1", "[cli][function]") {
+  test::TempDir dir;
+  const std::string space = dir.Write("space.yaml", "mu_min: 10\n");
+  const std::string out = (dir.path() / "g.yaml").string();
+  const test::RunResult r = test::RunKoppel("synth function " + test::TestDataPath("function-log10.yaml") + " --design " + space + " -o " + out);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.err, Catch::Contains("outside the design space: mu_min: the smallest transmission angle is 1.545 deg, below 10 deg"));
+  CHECK_THAT(r.out, Catch::Contains("mu_min,1.545"));
+  CHECK_FALSE(std::filesystem::exists(out));
+  const std::string wide = dir.Write("wide.yaml", "lengths: [0.5, 10]\nmu_min: 1\n");
+  const test::RunResult ok = test::RunKoppel("synth function " + test::TestDataPath("function-log10.yaml") + " --design " + wide);
+  CHECK(ok.exit_code == 0);
+  CHECK(ok.out == test::RunKoppel("synth function " + test::TestDataPath("function-log10.yaml")).out);
+}
 }  // namespace koppel::synth_function_command_test

@@ -6,6 +6,7 @@
 #include "support/temp_file.hpp"
 
 #include <catch2/catch.hpp>
+#include <Eigen/Core>
 
 #include <cmath>
 #include <filesystem>
@@ -173,5 +174,42 @@ TEST_CASE("synth motion --units writes the unit into every four-bar's file", "[c
   CHECK(bad.exit_code == 2);
   CHECK_THAT(bad.err, Catch::Contains("furlong"));
   CHECK(std::filesystem::is_empty(none.path()));
+}
+
+// --design: the three poses of the user's report with a 10 x 10 grid of circle points, within a
+// design space of links at most 3 long and a transmission angle of at least 60 deg: every listed
+// four-bar meets it, read from the printed pivots and circle points (the lengths) and mu_min;
+// stderr counts those left out. A space nothing meets exits 1 naming the constraint.
+TEST_CASE("synth motion --design: every listed four-bar inside the space", "[cli][motion]") {
+  test::TempDir dir;
+  const std::string space = dir.Write("space.yaml", "mu_min: 60\nlengths: [0, 3]\n");
+  const test::RunResult r = test::RunKoppel("synth motion " + test::TestDataPath("motion-three-poses.yaml") + " --grid 10 --design " + space);
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.err, Catch::Contains("four-bars outside the design space left out"));
+  std::istringstream in(r.out);
+  std::string line;
+  std::getline(in, line);
+  int rows = 0;
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(cell.empty() || std::isalpha(static_cast<unsigned char>(cell[0])) ? 0 : std::stod(cell));
+    REQUIRE(v.size() == 12);
+    INFO(line);
+    const Eigen::Vector2d a0(v[0], v[1]), a(v[2], v[3]), b(v[4], v[5]), b0(v[6], v[7]);
+    for (double length : {(a - a0).norm(), (b - a).norm(), (b0 - b).norm(), (b0 - a0).norm()}) CHECK(length <= 3 + 1e-9);
+    CHECK(v[11] >= 60 - 1e-6);
+    ++rows;
+  }
+  CHECK(rows > 0);
+  const std::string tight = dir.Write("tight.yaml", "lengths: [0, 0.01]\n");
+  const test::RunResult none = test::RunKoppel("synth motion " + test::TestDataPath("motion-three-poses.yaml") + " --grid 10 --design " + tight);
+  CHECK(none.exit_code == 1);
+  CHECK_THAT(none.err, Catch::Contains("inside the design space") && Catch::Contains("lengths: the"));
+  const std::string bad = dir.Write("bad.yaml", "mu_min: 95\n");
+  const test::RunResult refused = test::RunKoppel("synth motion " + test::TestDataPath("motion-three-poses.yaml") + " --grid 10 --design " + bad);
+  CHECK(refused.exit_code == 2);
+  CHECK_THAT(refused.err, Catch::Contains("bad.yaml:1:") && Catch::Contains("below 90 deg"));
 }
 }  // namespace koppel::synth_motion_command_test

@@ -4,18 +4,20 @@
 #include "model_loading.hpp"
 
 #include "koppel/api/synthesis.hpp"
+#include "koppel/catalog/design_space_file.hpp"
 
 namespace koppel::cli {
 namespace synth_function_command {  // this file's own names, apart from the other commands' in a unity build
 namespace {
 
 struct Args {
-  std::string spec, yaml, out, error_curve, format = "csv", units;
+  std::string spec, yaml, out, error_curve, format = "csv", units, design;
 };
 
 void Run(const Args& args) {
   CheckFormat(args.format);
-  const Design d = Checked([&] { return SynthesiseFunctionFile(args.spec, args.units); });  // bad input: its diagnostics, exit 2
+  const DesignSpace space = args.design.empty() ? DesignSpace() : Checked([&] { return ReadDesignSpace(args.design); });  // file:line, exit 2
+  const Design d = Checked([&] { return SynthesiseFunctionFile(args.spec, args.units, space); });  // bad input: its diagnostics, exit 2
   if (!d.figures.empty()) {  // a design that fails its check still shows its lengths
     Summary s;
     // error_at_precision: in the mechanism file's comment, not among the printed rows
@@ -52,6 +54,8 @@ void AddFunctionSubcommand(CLI::App& synth) {
   OutputFile(cmd->add_option("--error-curve", args->error_curve, "Write the structural error over the range to this CSV file"));
   OutputFile(cmd->add_option("--output-file", args->out, "Write the table to this file instead of stdout"));
   cmd->add_option("--format", args->format, "csv (default) or json");
+  cmd->add_option("--design", args->design, "The design space: a YAML file (lengths, ratio, pivots, input, mu_min; A0 is at the\n"
+                                             "origin, B0 at (frame, 0)): a generator outside it exits 1 naming the constraint");
   cmd->add_option("--units", args->units, "The length unit of the mechanism file -o writes: it says `units: {length: UNIT}`, the\n"
                                            "table labels lengths with it (m, dm, cm, mm, um, km, in, ft; default: none)");
   cmd->callback([args] { Run(*args); });

@@ -4,6 +4,7 @@
 #include "model_loading.hpp"
 
 #include "koppel/api/motion_synthesis.hpp"
+#include "koppel/catalog/design_space_file.hpp"
 
 #include <fmt/core.h>
 
@@ -16,7 +17,7 @@ namespace synth_motion_command {  // this file's own names, apart from the other
 namespace {
 
 struct Args {
-  std::string poses, dir, out, curves, require, crank_turn = "90", grid, samples = "18", top, threads, format = "csv", units;
+  std::string poses, dir, out, curves, require, crank_turn = "90", grid, samples = "18", top, threads, format = "csv", units, design;
   std::vector<std::string> circle_points;
 };
 
@@ -46,6 +47,7 @@ MotionSpec Spec(const Args& args, std::vector<MotionPose> poses) {
   if (n == 2) spec.crank_turn = ParseNumberFlag("--crank-turn", args.crank_turn);
   if (!args.require.empty() && args.require != "crank") BadFlags("--require: only 'crank' (the input turns fully)");
   spec.require_crank = args.require == "crank";
+  if (!args.design.empty()) spec.space = Checked([&] { return ReadDesignSpace(args.design); });  // file:line, exit 2
   if (!args.threads.empty()) spec.threads = ParseCountFlag("--threads", args.threads, 0, kMaxThreads);
   spec.units = args.units;
   return spec;
@@ -99,7 +101,8 @@ void Run(const Args& args) {
   std::cerr << fmt::format("koppel synth motion: {} poses, {} dyads, {:.0f} candidate four-bars: {} without a defect, {} with a branch or "
                            "order defect, {} failed their re-analysis{}\n",
                            n, report.dyads, report.four_bars, report.defect_free, report.designs.size() - report.defect_free, report.failed,
-                           spec.require_crank ? fmt::format(", {} without a crank left out", report.rejected) : "");
+                           spec.require_crank ? fmt::format(", {} without a crank left out", report.rejected) : "") +
+                   (args.design.empty() ? "" : fmt::format("koppel synth motion: {} four-bars outside the design space left out\n", report.outside_space));
   WriteDesigns(args, report, top > 0 ? std::min<size_t>(top, report.designs.size()) : report.designs.size());
   for (const std::string& note : report.notes) Complain(args.poses + ": " + note);
   if (report.status != DesignStatus::kOk) {
@@ -133,6 +136,8 @@ void AddMotionSubcommand(CLI::App& synth) {
       "first pose to the last. --require crank keeps the four-bars whose input turns fully; -o DIR writes each as a\n"
       "mechanism file (four-bar-1.yaml, ...; the comment gives the drivable range). stderr counts the candidates, those with\n"
       "a defect and those that failed their re-analysis (not listed). Exit 1 when no four-bar without a defect results.\n"
+      "--design FILE.yaml leaves out the four-bars outside a design space (see synth path: lengths, ratio, pivots, input,\n"
+      "coupler_point: the plane's reference point in the coupler's frame, mu_min: over the travel).\n"
       "Example: koppel synth motion tests/data/motion-three-poses.yaml --circle-point 1,0.2 --circle-point 3.1,2.4 -o designs");
   cmd->add_option("poses", args->poses, "POSES.yaml")->required();
   cmd->add_option("--circle-point", args->circle_points, "A circle point X,Y (first pose, global); repeat for more");
@@ -141,6 +146,7 @@ void AddMotionSubcommand(CLI::App& synth) {
   OutputFile(cmd->add_option("--curves", args->curves, "Four poses: write the Burmester curves to this CSV file"));
   cmd->add_option("--crank-turn", args->crank_turn, "Two poses: the crank's turn between them [deg] (default 90)");
   cmd->add_option("--require", args->require, "crank: keep only four-bars whose input turns fully");
+  cmd->add_option("--design", args->design, "The design space: a YAML file (lengths, ratio, pivots, input, coupler_point, mu_min)");
   cmd->add_option("--units", args->units, "The length unit of the poses and of the mechanism files -o writes: each says\n"
                                            "`units: {length: UNIT}`, the table labels lengths with it (m, dm, cm, mm, um, km, in, ft; default: none)");
   cmd->add_option("--top", args->top, "Print (and write) only the best N");

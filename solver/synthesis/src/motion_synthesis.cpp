@@ -222,6 +222,13 @@ std::uint64_t MotionFourBarCount(std::size_t dyads, const MotionOptions& options
   return options.both_drives ? pairs : pairs / 2;
 }
 
+FourBarSizes MotionFourBarSizes(const std::vector<Pose>& poses, const MotionFourBar& f) {
+  const Eigen::Vector2d a = f.crank.circle, b = f.rocker.circle, along = (b - a).normalized(), left(-along.y(), along.x());
+  const Eigen::Vector2d k = poses.front().point - a;
+  return {f.crank.centre, f.rocker.centre, (a - f.crank.centre).norm(), (b - a).norm(), (b - f.rocker.centre).norm(),
+          Eigen::Vector2d(k.dot(along), k.dot(left)), f.mu_min};
+}
+
 MotionResult FourBarsFromDyads(const std::vector<Pose>& poses, const std::vector<Dyad>& dyads, const MotionOptions& options) {
   std::vector<std::pair<int, int>> pairs;
   for (int i = 0; i < static_cast<int>(dyads.size()); ++i) {
@@ -245,6 +252,8 @@ MotionResult FourBarsFromDyads(const std::vector<Pose>& poses, const std::vector
       result.failures.push_back(f.message);
     } else if (options.require_crank && !f.crank_turns_fully) {
       ++result.rejected;
+    } else if (const std::string v = options.space.Violation(MotionFourBarSizes(poses, f)); !v.empty()) {
+      if (result.outside_space++ == 0) result.outside_reason = v;
     } else {
       result.four_bars.push_back(std::move(f));
     }

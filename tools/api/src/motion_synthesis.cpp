@@ -98,6 +98,7 @@ void Paired(const std::vector<Pose>& poses, const std::vector<Dyad>& dyads, cons
   const MotionResult result = FourBarsFromDyads(poses, dyads, options);
   out.paired = true;
   out.rejected = result.rejected;
+  out.outside_space = result.outside_space;
   out.failed = result.failed;
   out.failures = result.failures;
   for (size_t i = 0; i < result.four_bars.size(); ++i) out.designs.push_back(MotionDesign(result.four_bars[i], static_cast<int>(i + 1), source, units));
@@ -112,6 +113,11 @@ void Paired(const std::vector<Pose>& poses, const std::vector<Dyad>& dyads, cons
     out.status = DesignStatus::kNoDesign;
     out.message = fmt::format("none of the {} four-bars carries the plane through the poses without a branch or order defect "
                               "(listed with their defects){}", out.designs.size(), failures.empty() ? "" : "; " + failures);
+  } else if (result.outside_space > 0) {  // the space left nothing: say so, and what else failed
+    out.status = DesignStatus::kNoDesign;
+    out.message = fmt::format("none of the four-bars lies inside the design space ({} outside); the first broke {}", result.outside_space,
+                              result.outside_reason);
+    if (!failures.empty()) out.notes.push_back(failures);
   } else if (result.failed > 0) {
     out.status = DesignStatus::kReanalysisFailed;
     out.message = failures;
@@ -177,6 +183,7 @@ MotionReport SynthesiseMotionReport(const MotionSpec& spec, const std::string& s
   }
   MotionOptions options;
   options.require_crank = spec.require_crank;
+  options.space = spec.space;
   options.threads = spec.threads;
   // every ordered pair is a four-bar to re-analyse: the bound on the work, before it starts
   out.four_bars = static_cast<double>(MotionFourBarCount(dyads.dyads.size(), options));

@@ -264,7 +264,7 @@ std::string FunctionComment(const FunctionRequest& r, const FunctionDesign& d, c
 // lengths; one that misses a precision point was re-analysed on another assembly branch, so its
 // error (figures and curve) would belong to a different mechanism and is left out.
 Design ShownFunction(const FunctionRequest& r, const FunctionDesign& d, const std::string& by, const std::string& formula,
-                     const std::optional<Loads>& units) {
+                     const std::optional<Loads>& units, const DesignSpace& space) {
   Design design;
   design.status = d.ok() ? DesignStatus::kOk : DesignStatus::kNoDesign;
   design.message = d.ok() ? d.message : d.Brief();
@@ -292,6 +292,18 @@ Design ShownFunction(const FunctionRequest& r, const FunctionDesign& d, const st
   design.figures = std::move(f.list);
   LabelLengths(units, design.figures);
   if (!d.ok()) return design;
+  // the design space: a four-bar's pivots A0 (0, 0) and B0 (frame, 0), its links and mu_min
+  if (!space.Empty()) {
+    std::string violation = "the design space is for four-bars; a slider-crank generator is not checked against it";
+    if (four_bar)
+      violation = space.Violation({Eigen::Vector2d(0, 0), Eigen::Vector2d(d.frame, 0), d.crank, d.coupler, d.rocker, std::nullopt,
+                                   d.mu_known ? std::optional<double>(d.mu_min) : std::nullopt});
+    if (!violation.empty()) {
+      design.status = DesignStatus::kNoDesign;
+      design.message = "outside the design space: " + violation;
+      return design;
+    }
+  }
   design.model = Model::FromMechanism(d.mechanism);
   const double from = RadToDeg(r.input_from), to = RadToDeg(r.input_to);
   design.yaml = WriteMechanismYaml(d.mechanism, FunctionComment(r, d, by, formula), {from, to, (to - from) / 360}, {}, UnitsFor(units));
@@ -324,15 +336,15 @@ Design SynthesiseFunction(const FunctionSpec& spec) {
   Require(request.IsValid(&why), "function request", why);
   const FunctionDesign d = koppel::SynthesiseFunction(request);
   if (d.status == FunctionStatus::kInvalidRequest) BadInput("synthesis request", "function request", d.message);
-  return ShownFunction(request, d, "koppel::SynthesiseFunction", "f(x)", units);
+  return ShownFunction(request, d, "koppel::SynthesiseFunction", "f(x)", units, spec.space);
 }
 
-Design SynthesiseFunctionFile(const std::string& path, const std::string& unit_name) {
+Design SynthesiseFunctionFile(const std::string& path, const std::string& unit_name, const DesignSpace& space) {
   const std::optional<Loads> units = UnitsOf(unit_name);
   const FunctionSpecFile spec = ReadFunctionSpec(path);
   const FunctionDesign d = koppel::SynthesiseFunction(spec.request);
   if (d.status == FunctionStatus::kInvalidRequest) BadInput(path, "function request", d.message);
-  return ShownFunction(spec.request, d, "koppel synth function " + path, spec.formula, units);
+  return ShownFunction(spec.request, d, "koppel synth function " + path, spec.formula, units, space);
 }
 
 Design SynthesiseFit(const FitSpec& spec) {

@@ -16,6 +16,7 @@
 #include "koppel/analysis/classification.hpp"
 #include "koppel/core/mechanism.hpp"
 #include "koppel/synthesis/burmester.hpp"
+#include "koppel/synthesis/design_space.hpp"
 
 #include <cstdint>
 #include <string>
@@ -44,6 +45,9 @@ MotionFourBar AnalyseMotionFourBar(const std::vector<Pose>& poses, const Dyad& c
 
 struct MotionOptions {
   bool require_crank = false;  // keep only four-bars whose input turns fully
+  // four-bars outside it are left out (counted, the first one's broken constraint kept); K is the
+  // plane's reference point, mu_min the four-bar's over the travel
+  DesignSpace space;
   bool both_drives = true;     // each pair twice, driven at either centre point
   int threads = 0;             // 0: one per core
   bool IsValid(std::string* why) const;
@@ -53,6 +57,8 @@ struct MotionResult {
   std::vector<MotionFourBar> four_bars;  // passing ones: the defect-free first, each part by mu_min (largest first)
   int defect_free = 0;                   // of four_bars: without a branch or order defect
   int rejected = 0;                      // --require crank
+  int outside_space = 0;                 // outside options.space
+  std::string outside_reason;            // the constraint the first of them broke
   int failed = 0;                        // did not pass the re-analysis (a defect of the synthesis)
   std::vector<std::string> failures;     // their messages
 };
@@ -60,6 +66,10 @@ struct MotionResult {
 // The four-bars FourBarsFromDyads makes of `dyads` dyads (the work: about 2.5 ms each), to be
 // checked against kMaxMotionFourBars before the work starts.
 std::uint64_t MotionFourBarCount(std::size_t dyads, const MotionOptions& options);
+
+// A four-bar's sizes for the design space: pivots, links, the plane's reference point in the
+// coupler's frame (in the first pose), its mu_min.
+FourBarSizes MotionFourBarSizes(const std::vector<Pose>& poses, const MotionFourBar& f);
 
 // Every pair of distinct dyads made a four-bar and re-analysed, on every core.
 MotionResult FourBarsFromDyads(const std::vector<Pose>& poses, const std::vector<Dyad>& dyads, const MotionOptions& options);

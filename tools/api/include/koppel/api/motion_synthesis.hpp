@@ -45,6 +45,7 @@ struct MotionReport {
   std::vector<std::string> notes;  // what the dyad choice noted (e.g. the Ball–Burmester search)
   bool paired = false;
   int dyads = 0, rejected = 0, failed = 0;  // rejected: no crank, with require_crank
+  int outside_space = 0;                     // four-bars outside MotionSpec::space, left out
   int defect_free = 0;                       // designs without a branch or order defect (listed first)
   double four_bars = 0;                      // the four-bars the dyads make, each re-analysed
   std::vector<std::string> failures;

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "koppel/api/model.hpp"
+#include "koppel/synthesis/design_space.hpp"
 #include "koppel/synthesis/design_status.hpp"
 
 #include <functional>
@@ -108,6 +109,9 @@ struct FunctionSpec {
   std::vector<double> at;
   double frame = 1;
   std::string units;  // as CrankRockerSpec::units
+  // a four-bar generator (A0 at the origin, B0 at (frame, 0)) outside it is kNoDesign, its
+  // figures shown and the message naming the constraint it breaks; mu_min over the input range
+  DesignSpace space;
 };
 // A design that was made but fails (it does not run through the whole input range, or the
 // solver's mechanism misses a precision point: another branch) is kNoDesign with its lengths as
@@ -119,7 +123,7 @@ Design SynthesiseFunction(const FunctionSpec& spec);
 // the file's function formula, ranges and points. InputError naming the file and line for a spec
 // that does not read or a request that is malformed.
 // `units`: as CrankRockerSpec::units.
-Design SynthesiseFunctionFile(const std::string& path, const std::string& units = "");
+Design SynthesiseFunctionFile(const std::string& path, const std::string& units = "", const DesignSpace& space = {});
 
 // Least-squares fitting of any mechanism file to targets (koppel synth fit): `problem` is a fit
 // problem file (catalog/include/koppel/catalog/fit_problem.hpp: the mechanism, the free
@@ -153,6 +157,7 @@ struct MotionSpec {
   int curve_samples = 18;    // four poses without circle points
   int grid = 0;              // three poses: also the circle points of an n x n grid (MotionGrid), those without a centre point left out
   bool require_crank = false;  // keep only four-bars whose input turns fully
+  DesignSpace space;         // four-bars outside it are left out (design_space.hpp; K: the plane's reference point)
   int threads = 0;           // 0: one per core
   std::string units;         // as CrankRockerSpec::units: the four-bars' files and length figures
 };

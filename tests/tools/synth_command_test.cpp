@@ -299,4 +299,48 @@ TEST_CASE("synth fit: a design that does not assemble over require reports its d
   CHECK_THAT(b.err, Catch::Contains("bad.yaml:5:") && Catch::Contains("positive"));
 }
 
+// synth deadcentre crank-rocker --design: the family's best mu_min (29.48 deg, crank 0.3397 of a
+// frame of 1: a ratio of 2.94) does not meet a ratio of 2.5; the best inside does, with a
+// smaller mu_min, still proved by the solver (reanalysed_phi0/psi0). A space no member meets, a
+// --beta outside it and a slider-crank with --design are refused.
+TEST_CASE("synth deadcentre crank-rocker --design: the best mu_min inside the space", "[cli][synth]") {
+  test::TempDir dir;
+  const auto figures = [](const std::string& out) {
+    std::map<std::string, double> f;
+    std::istringstream in(out);
+    std::string line;
+    std::getline(in, line);
+    while (std::getline(in, line)) {
+      const auto comma = line.find(',');
+      f[line.substr(0, comma)] = std::stod(line.substr(comma + 1, line.find(',', comma + 1) - comma - 1));
+    }
+    return f;
+  };
+  const test::RunResult free = test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60");
+  REQUIRE(free.exit_code == 0);
+  const auto best = figures(free.out);
+  REQUIRE(best.at("l4") / best.at("l1") > 2.5);
+  const test::RunResult r = test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60 --design " + dir.Write("ratio.yaml", "ratio: 2.5\n"));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto in = figures(r.out);
+  const double longest = std::max({in.at("l1"), in.at("l2"), in.at("l3"), in.at("l4")});
+  const double shortest = std::min({in.at("l1"), in.at("l2"), in.at("l3"), in.at("l4")});
+  CHECK(longest / shortest <= 2.5);
+  CHECK(longest / shortest >= 2.45);  // the constraint binds: the best lies at its edge
+  CHECK(in.at("mu_min") < best.at("mu_min"));
+  CHECK(in.at("mu_min") > best.at("mu_min") - 5);
+  CHECK(in.at("reanalysed_phi0") == Approx(164).margin(1e-6));
+  CHECK(in.at("reanalysed_psi0") == Approx(60).margin(1e-6));
+  const test::RunResult none = test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60 --design " + dir.Write("mu.yaml", "mu_min: 60\n"));
+  CHECK(none.exit_code == 1);
+  CHECK_THAT(none.err, Catch::Contains("no crank-rocker of the family lies inside the design space") && Catch::Contains("mu_min: the smallest"));
+  const test::RunResult beta = test::RunKoppel("synth deadcentre crank-rocker --phi0 164 --psi0 60 --beta 20 --design " + dir.path().string() + "/ratio.yaml");
+  CHECK(beta.exit_code == 1);
+  CHECK_THAT(beta.err, Catch::Contains("outside the design space: ratio:"));
+  const test::RunResult slider = test::RunKoppel("synth deadcentre slider-crank --phi0 200 --stroke 1 --design " + dir.path().string() + "/ratio.yaml");
+  CHECK(slider.exit_code == 2);
+  CHECK_THAT(slider.err, Catch::Contains("--design: the design space is for four-bars"));
+}
+
 }  // namespace koppel::synth_command_test

@@ -1,6 +1,7 @@
 // koppel synth: dead-centre synthesis, design charts, Meyer zur Capellen straight-line linkages
 // and least-squares fitting (synth fit, in fit_command.cpp).
 #include "commands.hpp"
+#include "koppel/catalog/design_space_file.hpp"
 #include "common.hpp"
 #include "model_loading.hpp"
 
@@ -24,7 +25,7 @@ struct Args {
   std::string out, yaml, cognates_dir;
   std::string format = "csv";
   std::string sense = "ccw";
-  std::string units;
+  std::string units, design;
   bool quiet = false;
 };
 
@@ -106,6 +107,7 @@ void RunCrankRocker(const Args& args, double phi0) {
   spec.beta = OptionalNumberFlag("--beta", args.beta);
   spec.lambda = OptionalNumberFlag("--lambda", args.lambda_cr);
   spec.units = args.units;
+  if (!args.design.empty()) spec.space = Checked([&] { return ReadDesignSpace(args.design); });  // file:line, exit 2
   const Design d = Requested([&] { return SynthesiseCrankRocker(spec); });
   if (!d.ok()) Refuse(d);
   Emit(args, d);
@@ -122,6 +124,10 @@ void RunSliderCrank(const Args& args, double phi0) {
   spec.offset = OptionalNumberFlag("--offset", args.offset);
   spec.beta = OptionalNumberFlag("--beta", args.beta);
   spec.units = args.units;
+  if (!args.design.empty()) {
+    Complain("--design: the design space is for four-bars (crank-rocker); a slider-crank's offset or beta chooses its design");
+    throw Exit{kExitBadInput};
+  }
   const Design d = Requested([&] { return SynthesiseSliderCrank(spec); });
   if (!d.ok()) Refuse(d);
   Emit(args, d);
@@ -234,6 +240,8 @@ void AddSynthCommand(CLI::App& app) {
       "  --sense cw writes the mirror image, the document's drawing (\"Drehrichtung mathematisch negativ\").\n"
       "  Exit 1, with the reason, when no crank-rocker exists, when beta lies outside the arc LE, or when mu_min keeps\n"
       "  growing towards a degenerate end of the arc (phi0 = 180 deg: crank and rocker shrink to nothing).\n"
+      "  --design FILE.yaml (lengths, ratio, pivots, mu_min; A0 = (0,0), B0 = (--frame, 0)): the best mu_min inside that\n"
+      "  design space (with --beta or --lambda: that design, refused when outside); exit 1 naming the constraint when none is.\n"
       "slider-crank: the conventions of 'Ebene Schubkurbel' (A0 = (0, -e), slide along x). phi0 from the folded to the extended dead centre\n"
       "  (90 < phi0 < 270 deg; phi0 > 180 puts A0 above the slide line, e < 0), the stroke s0 between them, and the offset\n"
       "  |e| (--offset) or beta (angle between the slide line and A0B_a), each within the range that gives a crank; by\n"
@@ -249,6 +257,7 @@ void AddSynthCommand(CLI::App& app) {
                                        "[deg] (default: best mu_min)");
   dc->add_option("--lambda", args->lambda_cr, "crank-rocker: l1/l2 in (0, 1) instead of beta (default: best mu_min)");
   dc->add_option("--frame", args->frame, "Frame length A0B0 (crank-rocker, default 1)");
+  dc->add_option("--design", args->design, "crank-rocker: the design space, a YAML file (lengths, ratio, pivots, mu_min)");
   dc->add_option("--sense", args->sense, "ccw (default) or cw: the sense the crank runs in the written mechanism\n"
                                          "(cw is the mirror image, the document's 'mathematisch negativ')");
   dc->add_option("--stroke", args->stroke, "Stroke s0 (slider-crank)");

@@ -5,6 +5,7 @@
 #include "bar_linkages.hpp"
 #include "design_proof.hpp"
 #include "maximise.hpp"
+#include "koppel/synthesis/design_space.hpp"
 
 #include "koppel/core/angles.hpp"
 
@@ -289,6 +290,36 @@ CrankRockerDesign BestCrankRocker(const CrankRockerRequest& r) {
   }
   const Geometry g = FromLambda(r, std::exp(-best.x));
   return Prove(r, g);
+}
+
+CrankRockerDesign BestCrankRockerInSpace(const CrankRockerRequest& r, const DesignSpace& space) {
+  if (space.Empty()) return BestCrankRocker(r);
+  std::string why;
+  if (!r.IsValid(&why)) return Failed(r, DesignStatus::kInvalidRequest, why);
+  if (!space.IsValid(&why)) return Failed(r, DesignStatus::kInvalidRequest, "design space: " + why);
+  const auto sizes = [&r](const Geometry& g, double mu) {
+    return FourBarSizes{{0, 0}, {r.frame_length, 0}, g.l1, g.l2, g.l3, std::nullopt, mu};
+  };
+  const DesignScore family = MuMinScore(r);
+  const DesignScore inside = [&](double x) -> std::optional<double> {
+    const std::optional<double> mu = family(x);
+    if (!mu || !space.Violation(sizes(FromLambda(r, std::exp(-x)), *mu)).empty()) return std::nullopt;
+    return mu;
+  };
+  const std::optional<GridMaximum> found = MaximiseOnGrid(inside, 0, kLambdaDecades, kSearchSamples, 1e-13);
+  if (!found) {
+    const std::optional<GridMaximum> any = MaximiseOnGrid(family, 0, kLambdaDecades, kSearchSamples, 1e-13);
+    if (!any) return Failed(r, DesignStatus::kNoDesign, "no crank-rocker has " + Describe(r));
+    return Failed(r, DesignStatus::kNoDesign,
+                  "no crank-rocker of the family lies inside the design space; the best without it broke " +
+                      space.Violation(sizes(FromLambda(r, std::exp(-any->x)), any->value)));
+  }
+  CrankRockerDesign d = Prove(r, FromLambda(r, std::exp(-found->x)));
+  if (!d.ok()) return d;
+  // the solver's mu_min and the lengths of the proved design, against the space once more
+  if (const std::string v = space.Violation({{0, 0}, {r.frame_length, 0}, d.l1, d.l2, d.l3, std::nullopt, d.mu_min}); !v.empty())
+    return Failed(r, DesignStatus::kNoDesign, "the re-analysed design lies outside the design space: " + v);
+  return d;
 }
 
 Mechanism CrankRockerMechanism(const CrankRockerDesign& d) {

@@ -124,10 +124,15 @@ Design SynthesiseCrankRocker(const CrankRockerSpec& spec) {
   request.frame_length = spec.frame;
   std::string why;
   Require(request.IsValid(&why), "phi0/psi0/frame", why);
-  const CrankRockerDesign d = spec.beta     ? CrankRockerFromBeta(request, DegToRad(*spec.beta))
-                              : spec.lambda ? CrankRockerFromLambda(request, *spec.lambda)
-                                            : BestCrankRocker(request);
-  if (d.status == DesignStatus::kInvalidRequest) BadInput("synthesis request", "beta/lambda", d.message);
+  CrankRockerDesign d = spec.beta     ? CrankRockerFromBeta(request, DegToRad(*spec.beta))
+                        : spec.lambda ? CrankRockerFromLambda(request, *spec.lambda)
+                                      : BestCrankRockerInSpace(request, spec.space);
+  if (d.status == DesignStatus::kInvalidRequest) BadInput("synthesis request", "beta/lambda/design", d.message);
+  if (d.ok() && (spec.beta || spec.lambda))  // the design asked for, against the space
+    if (const std::string v = spec.space.Violation({{0, 0}, {d.l4, 0}, d.l1, d.l2, d.l3, std::nullopt, d.mu_min}); !v.empty()) {
+      d.status = DesignStatus::kNoDesign;
+      d.message = "outside the design space: " + v;
+    }
   if (!d.ok()) return Finished(d, Figures{}, Mechanism{});
   const Mechanism m = spec.clockwise ? MirrorMechanism(CrankRockerMechanism(d)) : CrankRockerMechanism(d);
   Design design = Finished(d, CrankRockerFigures(request, d, spec.clockwise), m);

@@ -39,6 +39,7 @@
 #pragma once
 
 #include "koppel/core/mechanism.hpp"
+#include "koppel/synthesis/design_space.hpp"
 #include "koppel/synthesis/design_status.hpp"
 
 #include <string>
@@ -88,6 +89,12 @@ CrankRockerDesign CrankRockerFromLambda(const CrankRockerRequest& request, doubl
 // The design with the largest mu_min. kBoundaryOptimum when the supremum lies where a link
 // vanishes (phi0 = 180 deg: l1, l3 -> 0), kNoDesign when the arc LE is empty.
 CrankRockerDesign BestCrankRocker(const CrankRockerRequest& request);
+
+// The design with the largest mu_min inside `space` (A0 at the origin, B0 at (d, 0), the closed
+// form's lengths and mu_min on the family's grid, refined; then proved, and the proved design
+// checked against the space again). kNoDesign naming the constraint the best design without the
+// space broke when no member of the family lies inside. An empty space: BestCrankRocker.
+CrankRockerDesign BestCrankRockerInSpace(const CrankRockerRequest& request, const DesignSpace& space);
 
 struct SliderCrankRequest {
   double phi0 = 0;    // crank angle from the folded to the extended dead centre, in (0, 2 pi)

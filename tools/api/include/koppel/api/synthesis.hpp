@@ -64,6 +64,9 @@ struct CrankRockerSpec {
   double frame = 1;
   bool clockwise = false;
   std::string units;  // the design's length unit (m, dm, cm, mm, um, km, in, ft: length_units.hpp); empty: none
+  // without beta and lambda: the best mu_min inside it (BestCrankRockerInSpace); with either, a
+  // design outside it is kNoDesign naming the constraint. A0 at the origin, B0 at (frame, 0).
+  DesignSpace space;
 };
 Design SynthesiseCrankRocker(const CrankRockerSpec& spec);
 

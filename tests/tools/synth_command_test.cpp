@@ -343,4 +343,32 @@ TEST_CASE("synth deadcentre crank-rocker --design: the best mu_min inside the sp
   CHECK_THAT(slider.err, Catch::Contains("--design: the design space is for four-bars"));
 }
 
+// synth chart crank-rocker --design: every ok cell keeps the space's ratio (read from its four
+// lengths), and the slider-crank chart refuses a space (exit 2).
+TEST_CASE("synth chart --design: every cell inside the space", "[cli][synth]") {
+  test::TempDir dir;
+  const std::string space = dir.Write("ratio.yaml", "ratio: 2.5\n");
+  const test::RunResult r = test::RunKoppel("synth chart crank-rocker --phi0 160:180:10 --psi0 40:80:20 --rocker-sense both --design " + space);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  std::istringstream in(r.out);
+  std::string line;
+  std::getline(in, line);
+  int ok = 0;
+  while (std::getline(in, line)) {
+    std::vector<std::string> c;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) c.push_back(cell);
+    if (c.size() < 10 || c[3] != "ok") continue;
+    INFO(line);
+    std::vector<double> l = {std::stod(c[6]), std::stod(c[7]), std::stod(c[8]), std::stod(c[9])};
+    CHECK(*std::max_element(l.begin(), l.end()) / *std::min_element(l.begin(), l.end()) <= 2.5 + 1e-12);
+    ++ok;
+  }
+  CHECK(ok > 0);
+  const test::RunResult slider = test::RunKoppel("synth chart slider-crank --design " + space);
+  CHECK(slider.exit_code == 2);
+  CHECK_THAT(slider.err, Catch::Contains("the design space is for four-bars"));
+}
+
 }  // namespace koppel::synth_command_test

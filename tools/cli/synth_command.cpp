@@ -184,6 +184,7 @@ void RunChart(const Args& args) {
     CheckRockerSense(args.rocker_sense, true);
     spec.rocker_sense = args.rocker_sense;
   }
+  if (!args.design.empty()) spec.space = Checked([&] { return ReadDesignSpace(args.design); });  // file:line, exit 2
   const DesignChart chart = Requested([&] { return SynthesiseChart(spec); });
   if (!args.quiet) std::cerr << fmt::format("koppel synth chart: {} designs\n", chart.designs);
   WriteOutput(args.out, args.format == "json" ? JsonText(ChartJson(chart)) : ChartCsv(chart));
@@ -274,12 +275,14 @@ void AddSynthCommand(CLI::App& app) {
       "best beta and max mu_min, the lengths (frame 1) and the arc LE; slider-crank: for each phi0 the best e/s0, l1/s0,\n"
       "l2/s0 and mu_min. The status column says ok, none (no such mechanism exists), boundary (mu_min grows towards a\n"
       "degenerate end, no best design) or failed (the re-analysis refused it); the numbers are empty unless ok.\n"
-      "Ranges FROM:TO:STEP in degrees.\n"
+      "Ranges FROM:TO:STEP in degrees. crank-rocker --design FILE.yaml: each cell the best inside that design space (as\n"
+      "synth deadcentre --design; none where no member of the family lies inside).\n"
       "Example: koppel synth chart crank-rocker --phi0 160:170:2 --psi0 50:70:5 --rocker-sense both -o chart.csv");
   chart->add_option("type", args->type, "crank-rocker or slider-crank")->required();
   chart->add_option("--phi0", args->phi0, "phi0 range FROM:TO:STEP [deg]");
   chart->add_option("--psi0", args->psi0, "psi0 range FROM:TO:STEP [deg] (crank-rocker)");
   chart->add_option("--rocker-sense", args->rocker_sense, "same (default), opposite or both (crank-rocker)");
+  chart->add_option("--design", args->design, "crank-rocker: the design space, a YAML file (lengths, ratio, pivots, mu_min)");
   OutputFile(chart->add_option("-o,--output-file", args->out, "Write the chart to this file instead of stdout"));
   chart->add_option("--format", args->format, "csv (default) or json");
   chart->add_flag("--quiet", args->quiet, "No count of designs on stderr");

@@ -85,7 +85,7 @@ DesignChart CrankRockerChart(const ChartSpec& spec) {
   }
   DesignChart chart;
   chart.columns = {"phi0", "psi0", "rocker_sense", "status", "beta", "mu_min", "l1", "l2", "l3", "l4", "beta_L", "beta_E"};
-  const auto designs = DesignAll<CrankRockerDesign>(requests.size(), [&](size_t i) { return BestCrankRocker(requests[i]); }, spec.threads);
+  const auto designs = DesignAll<CrankRockerDesign>(requests.size(), [&](size_t i) { return BestCrankRockerInSpace(requests[i], spec.space); }, spec.threads);
   for (const CrankRockerDesign& d : designs) {
     const CrankRockerRequest& r = d.request;
     chart.rows.push_back(ChartRow({{RadToDeg(r.phi0), ""}, {RadToDeg(r.psi0), ""}, {std::nullopt, ToString(r.rocker_sense)}}, d.status,
@@ -147,7 +147,10 @@ ChartSpec DefaultChart(const std::string& type) {
 DesignChart SynthesiseChart(const ChartSpec& spec) {
   ChartRequire(spec.threads >= 0 && spec.threads <= kMaxThreads, "threads", fmt::format("must be 0 (one per core) to {}", kMaxThreads));
   if (spec.type == "crank-rocker") return CrankRockerChart(spec);
-  if (spec.type == "slider-crank") return SliderCrankChart(spec);
+  if (spec.type == "slider-crank") {
+    ChartRequire(spec.space.Empty(), "design", "the design space is for four-bars (crank-rocker charts)");
+    return SliderCrankChart(spec);
+  }
   BadInput("design chart", "type", "expected crank-rocker or slider-crank, found '" + spec.type + "'");
 }
 

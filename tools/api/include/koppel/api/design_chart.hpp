@@ -8,6 +8,8 @@
 // grid point without a design is a row with its status word and empty numbers.
 #pragma once
 
+#include "koppel/synthesis/design_space.hpp"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +30,9 @@ struct ChartSpec {
   ChartRange phi0, psi0;              // psi0: crank-rocker only
   std::string rocker_sense = "same";  // crank-rocker: "same", "opposite" or "both"
   int threads = 0;                    // 0: one per core
+  // crank-rocker: each cell the best mu_min inside it (BestCrankRockerInSpace; status none when
+  // no member of the family lies inside); InputError for a slider-crank chart with a space
+  DesignSpace space;
 };
 // The chart of `type` over its default ranges: crank-rocker phi0 150..210 by 2, psi0 20..100 by
 // 2; slider-crank phi0 90..180 by 2. InputError for another type.

@@ -53,19 +53,17 @@ void WriteDesign(const Args& args, const PathDesign& l, size_t i) {
   WriteOutput((std::filesystem::path(args.dir) / (name + ".yaml")).string(), PathDesignYaml(l, name, comment, args.units));
 }
 
-void Run(const Args& args) {
-  CheckFormat(args.format);
-  if (!args.units.empty()) Checked([&] { return UnitOnlyLoads(args.units, "units"); });  // before the search: exit 2
-  PathSpec request;
-  const TimedPathPoints read = ReadPoints(args.points);
-  request.points = read.points;
-  request.timing = read.phi;
-  if (!args.timing_step.empty()) request.timing_step = DegToRad(ParseNumberFlag("--timing-step", args.timing_step));
-  if (!args.starts.empty()) request.starts = ParseCountFlag("--starts", args.starts, 1, kMaxTimedStarts);
-  if (!args.seed.empty()) request.seed = static_cast<std::uint64_t>(ParseCountFlag("--seed", args.seed, 0, 2'000'000'000));
-  const bool timed = !request.timing.empty() || request.timing_step;
+// The timing (a phi column, --timing-step) and the global search's flags, each refused where the
+// search it would steer does not run.
+void ReadTiming(const Args& args, const TimedPathPoints& read, PathSpec* request) {
+  request->timing = read.phi;
+  if (!args.timing_step.empty()) request->timing_step = DegToRad(ParseNumberFlag("--timing-step", args.timing_step));
+  if (!args.starts.empty()) request->starts = ParseCountFlag("--starts", args.starts, 1, kMaxTimedStarts);
+  if (!args.seed.empty()) request->seed = static_cast<std::uint64_t>(ParseCountFlag("--seed", args.seed, 0, 2'000'000'000));
+  const bool timed = !request->timing.empty() || request->timing_step;
   if (timed && !args.atlas.empty()) {
-    Complain("--atlas: not read when the timing is prescribed (" + std::string(request.timing.empty() ? "--timing-step" : "the phi column of " + args.points) +
+    Complain("--atlas: not read when the timing is prescribed (" +
+             std::string(request->timing.empty() ? "--timing-step" : "the phi column of " + args.points) +
              "): the timed search is global; leave --atlas out");
     throw Exit{kExitBadInput};
   }
@@ -78,6 +76,16 @@ void Run(const Args& args) {
     Complain(std::string(args.starts.empty() ? "--seed" : "--starts") + ": only the global search (without --atlas) draws random starts");
     throw Exit{kExitBadInput};
   }
+}
+
+void Run(const Args& args) {
+  CheckFormat(args.format);
+  if (!args.units.empty()) Checked([&] { return UnitOnlyLoads(args.units, "units"); });  // before the search: exit 2
+  PathSpec request;
+  const TimedPathPoints read = ReadPoints(args.points);
+  request.points = read.points;
+  ReadTiming(args, read, &request);
+  const bool timed = !request.timing.empty() || request.timing_step, global = args.atlas.empty();
   request.open = args.open;
   request.top = ParseCountFlag("--top", args.top, 1, 1000);
   if (!args.candidates.empty()) request.candidates = ParseCountFlag("--candidates", args.candidates, 1, 10000);

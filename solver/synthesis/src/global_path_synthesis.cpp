@@ -323,26 +323,70 @@ std::optional<PathLinkage> LinkageOf(const Problem& p, const Polished& s, std::s
   return l;
 }
 
+// The search's problem from a valid request; false (and *why) when the points coincide.
+bool ProblemOf(const PathRequest& request, Problem* p, std::string* why) {
+  p->request = &request;
+  p->free = !request.Timed();
+  p->repeats_first = p->free && !request.open && request.points.back() == request.points.front();
+  p->same_phase.assign(request.points.size(), -1);
+  if (p->repeats_first) p->same_phase.back() = 0;
+  p->scale = Scale(request.points, &p->centre);
+  if (!(p->scale > 0)) {
+    *why = "the points coincide";
+    return false;
+  }
+  if (!p->free) p->offsets = Offsets(request);
+  Bounds(request, p->scale, &p->lower, &p->upper);
+  p->limits = Limits(request.space);
+  return true;
+}
+
+// The best polished starts (sorted, `admitted` of them usable) re-analysed until `top` distinct
+// designs inside the space; the counts and the first failure's reason into *result.
+void ReanalyseBest(const Problem& p, const std::vector<Polished>& polished, int admitted, PathResult* result) {
+  const PathRequest& request = *p.request;
+  std::vector<PathLinkage> kept;
+  std::string failure, outside_reason;
+  int failed = 0, outside = 0;
+  const size_t wanted = static_cast<size_t>(request.top) * kReanalysedPerDesign;
+  for (int i = 0; i < admitted && kept.size() < wanted; ++i) {
+    std::string why;
+    std::optional<PathLinkage> l = LinkageOf(p, polished[i], &why);
+    if (!l) {
+      if (failed++ == 0) failure = why;
+      continue;
+    }
+    const std::string v = request.space.mu_min && !l->mu_min
+                              ? "mu_min: the solver cannot drive it through the worked stretch"
+                              : request.space.Violation({l->geometry.a0, l->geometry.b0, l->crank, l->coupler, l->rocker, l->coupler_point, l->mu_min});
+    if (!v.empty()) {
+      if (outside++ == 0) outside_reason = v;
+      continue;
+    }
+    kept.push_back(std::move(*l));
+    if (DistinctLinkages(kept, kSameDesign * p.scale, nullptr).size() >= static_cast<size_t>(request.top)) break;
+  }
+  std::stable_sort(kept.begin(), kept.end(), [](const PathLinkage& a, const PathLinkage& b) { return a.sse < b.sse; });
+  result->linkages = DistinctLinkages(kept, kSameDesign * p.scale, &result->duplicates);
+  if (result->linkages.size() > static_cast<size_t>(request.top)) result->linkages.resize(request.top);
+  result->failed_reanalysis = failed;
+  result->outside_space = outside;
+  if (!result->linkages.empty()) {
+    result->status = PathStatus::kOk;
+    return;
+  }
+  result->status = PathStatus::kNoCandidate;
+  result->message = failed > 0 ? fmt::format("{} polished designs failed the re-analysis through the mechanism; the best: {}", failed, failure)
+                               : fmt::format("{} polished designs lie outside the design space; the best broke {}", outside, outside_reason);
+}
+
 }  // namespace
 
 PathResult SynthesisePathGlobally(const PathRequest& request) {
   PathResult result;
   if (!request.IsValid(&result.message)) return result;
   Problem p;
-  p.free = !request.Timed();
-  const size_t n = request.points.size();
-  p.repeats_first = p.free && !request.open && request.points.back() == request.points.front();
-  p.same_phase.assign(n, -1);
-  if (p.repeats_first) p.same_phase.back() = 0;
-  p.request = &request;
-  p.scale = Scale(request.points, &p.centre);
-  if (!(p.scale > 0)) {
-    result.message = "the points coincide";
-    return result;
-  }
-  if (!p.free) p.offsets = Offsets(request);
-  Bounds(request, p.scale, &p.lower, &p.upper);
-  p.limits = Limits(request.space);
+  if (!ProblemOf(request, &p, &result.message)) return result;
   const int starts = request.starts > 0 ? request.starts : kTimedStarts;
   std::vector<Polished> polished(starts);
   std::atomic<int> next{0};
@@ -351,54 +395,15 @@ PathResult SynthesisePathGlobally(const PathRequest& request) {
   });
   std::sort(polished.begin(), polished.end(), [](const Polished& a, const Polished& b) { return a.sse != b.sse ? a.sse < b.sse : a.index < b.index; });
   const int admitted = static_cast<int>(std::count_if(polished.begin(), polished.end(), [](const Polished& s) { return std::isfinite(s.sse); }));
+  result.starts = starts;
+  result.admitted_starts = admitted;
   if (admitted == 0) {
     result.status = PathStatus::kNoCandidate;
     result.message = fmt::format("none of {} random starts ({} draws each) gives a four-bar inside the design space that {}", starts,
-                                 kDrawsPerStart,
-                                 p.free ? "passes the points in order" : "closes at every prescribed crank angle");
+                                 kDrawsPerStart, p.free ? "passes the points in order" : "closes at every prescribed crank angle");
     return result;
   }
-  // the best distinct designs, re-analysed; the first failure's reason kept for the message
-  std::vector<PathLinkage> kept;
-  std::string failure, outside_reason;
-  int failed = 0, outside = 0;
-  const size_t wanted = static_cast<size_t>(request.top) * kReanalysedPerDesign;
-  for (int i = 0; i < admitted && kept.size() < wanted; ++i) {
-    std::string why;
-    std::optional<PathLinkage> l = LinkageOf(p, polished[i], &why);
-    if (l) {
-      const std::string v = request.space.mu_min && !l->mu_min
-                                ? "mu_min: the solver cannot drive it through the worked stretch"
-                                : request.space.Violation({l->geometry.a0, l->geometry.b0, l->crank, l->coupler, l->rocker, l->coupler_point, l->mu_min});
-      if (!v.empty()) {
-        ++outside;
-        if (outside_reason.empty()) outside_reason = v;
-        continue;
-      }
-    }
-    if (!l) {
-      ++failed;
-      if (failure.empty()) failure = why;
-      continue;
-    }
-    kept.push_back(std::move(*l));
-    std::vector<PathLinkage> distinct = DistinctLinkages(kept, kSameDesign * p.scale, &result.duplicates);
-    if (distinct.size() >= static_cast<size_t>(request.top)) break;
-  }
-  std::stable_sort(kept.begin(), kept.end(), [](const PathLinkage& a, const PathLinkage& b) { return a.sse < b.sse; });
-  result.linkages = DistinctLinkages(kept, kSameDesign * p.scale, &result.duplicates);
-  if (result.linkages.size() > static_cast<size_t>(request.top)) result.linkages.resize(request.top);
-  result.failed_reanalysis = failed;
-  result.outside_space = outside;
-  result.starts = starts;
-  result.admitted_starts = admitted;
-  if (result.linkages.empty()) {
-    result.status = PathStatus::kNoCandidate;
-    result.message = failed > 0 ? fmt::format("{} polished designs failed the re-analysis through the mechanism; the best: {}", failed, failure)
-                                : fmt::format("{} polished designs lie outside the design space; the best broke {}", outside, outside_reason);
-    return result;
-  }
-  result.status = PathStatus::kOk;
+  ReanalyseBest(p, polished, admitted, &result);
   return result;
 }
 

@@ -530,27 +530,23 @@ void DropOutsideSpace(const DesignSpace& space, std::vector<PathLinkage>* polish
                   polished->end());
 }
 
+// Empty when the atlas can search the request; else why not (a timing, a fixed A0 or frame angle).
+std::string AtlasRequestProblem(const PathRequest& request) {
+  if (request.Timed()) return "a prescribed timing is searched without an atlas (SynthesisePathGlobally)";
+  if (request.space.a0 || request.space.frame_angle)
+    return "design space: A0 and frame_angle are kept by the global search (no atlas); the atlas lays its curves where they fit best";
+  return "";
+}
+
 }  // namespace
 
 PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
   PathResult result;
-  if (!request.IsValid(&result.message)) return result;
-  if (request.Timed()) {
-    result.message = "a prescribed timing is searched without an atlas (SynthesisePathGlobally)";
-    return result;
-  }
-  if (request.space.a0 || request.space.frame_angle) {
-    result.message = "design space: A0 and frame_angle are kept by the global search (no atlas); the atlas lays its curves where they fit best";
-    return result;
-  }
+  if (!request.IsValid(&result.message) || !(result.message = AtlasRequestProblem(request)).empty()) return result;
   const double scale = Scale(request.points);
-  if (!(scale > 0)) {
-    result.message = "the points coincide";
-    return result;
-  }
-  const std::vector<Reading> readings = ReadingsOfPathPoints(request);
+  const std::vector<Reading> readings = scale > 0 ? ReadingsOfPathPoints(request) : std::vector<Reading>{};
   if (readings.empty()) {
-    result.message = "the points have no extent along a path";
+    result.message = scale > 0 ? "the points have no extent along a path" : "the points coincide";
     return result;
   }
   const int wanted = request.candidates > 0 ? request.candidates : std::max(100, 10 * request.top);

@@ -146,5 +146,10 @@ TEST_CASE("synth function --design: a generator outside the space exits 1", "[cl
   const test::RunResult ok = test::RunKoppel("synth function " + test::TestDataPath("function-log10.yaml") + " --design " + wide);
   CHECK(ok.exit_code == 0);
   CHECK(ok.out == test::RunKoppel("synth function " + test::TestDataPath("function-log10.yaml")).out);
+  // a key the generator cannot keep is refused, not ignored
+  const test::RunResult k = test::RunKoppel("synth function " + test::TestDataPath("function-log10.yaml") + " --design " +
+                                            dir.Write("k.yaml", "coupler_point: [-1, 1]\n"));
+  CHECK(k.exit_code == 2);
+  CHECK_THAT(k.err, Catch::Contains("coupler_point: synth function designs no coupler point"));
 }
 }  // namespace koppel::synth_function_command_test

@@ -211,5 +211,10 @@ TEST_CASE("synth motion --design: every listed four-bar inside the space", "[cli
   const test::RunResult refused = test::RunKoppel("synth motion " + test::TestDataPath("motion-three-poses.yaml") + " --grid 10 --design " + bad);
   CHECK(refused.exit_code == 2);
   CHECK_THAT(refused.err, Catch::Contains("bad.yaml:1:") && Catch::Contains("below 90 deg"));
+  // a fixed A0 is kept by synth path's global search only: refused here, not ignored
+  const test::RunResult a0 = test::RunKoppel("synth motion " + test::TestDataPath("motion-three-poses.yaml") + " --grid 10 --design " +
+                                             dir.Write("a0.yaml", "A0: [0, 0]\n"));
+  CHECK(a0.exit_code == 2);
+  CHECK_THAT(a0.err, Catch::Contains("A0: synth motion places its frame itself"));
 }
 }  // namespace koppel::synth_motion_command_test

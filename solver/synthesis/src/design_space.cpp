@@ -33,6 +33,13 @@ bool DesignSpace::IsValid(std::string* why) const {
   return problem.empty();
 }
 
+std::string DesignSpace::Unsupported(const std::string& what, bool with_coupler_point, bool fixed_frame) const {
+  if (coupler_point && !with_coupler_point) return "coupler_point: " + what + " designs no coupler point";
+  if ((a0 || frame_angle) && !fixed_frame)
+    return std::string(a0 ? "A0" : "frame_angle") + ": " + what + " places its frame itself (synth path's global search holds it fixed)";
+  return "";
+}
+
 std::string DesignSpace::Violation(const FourBarSizes& s) const {
   const double frame = (s.b0 - s.a0).norm();
   const std::array<std::pair<const char*, double>, 4> links = {{{"crank", s.crank}, {"coupler", s.coupler}, {"rocker", s.rocker}, {"frame", frame}}};

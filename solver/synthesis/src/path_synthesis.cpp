@@ -533,8 +533,8 @@ void DropOutsideSpace(const DesignSpace& space, std::vector<PathLinkage>* polish
 // Empty when the atlas can search the request; else why not (a timing, a fixed A0 or frame angle).
 std::string AtlasRequestProblem(const PathRequest& request) {
   if (request.Timed()) return "a prescribed timing is searched without an atlas (SynthesisePathGlobally)";
-  if (request.space.a0 || request.space.frame_angle)
-    return "design space: A0 and frame_angle are kept by the global search (no atlas); the atlas lays its curves where they fit best";
+  if (const std::string why = request.space.Unsupported("the atlas's search", true, false); !why.empty())
+    return "design space: " + why + "; the atlas lays its curves where they fit best";
   return "";
 }
 

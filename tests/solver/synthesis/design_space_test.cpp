@@ -84,4 +84,18 @@ TEST_CASE("DesignSpace::IsValid refuses a space no design fits", "[synthesis][de
   CHECK(s.IsValid(&why));
 }
 
+TEST_CASE("DesignSpace::Unsupported names a key a synthesis cannot keep", "[synthesis][design-space]") {
+  DesignSpace space;
+  space.lengths = std::make_pair(0.0, 1.0);
+  CHECK(space.Unsupported("synth function", false, false).empty());
+  space.coupler_point = std::make_pair(-1.0, 1.0);
+  CHECK(space.Unsupported("synth function", false, false) == "coupler_point: synth function designs no coupler point");
+  CHECK(space.Unsupported("synth motion", true, false).empty());
+  space.frame_angle = 0;
+  CHECK_THAT(space.Unsupported("synth motion", true, false), Catch::Contains("frame_angle: synth motion places its frame itself"));
+  space.a0 = Eigen::Vector2d(0, 0);
+  CHECK_THAT(space.Unsupported("synth motion", true, false), Catch::Contains("A0: synth motion places its frame itself"));
+  CHECK(space.Unsupported("synth path", true, true).empty());
+}
+
 }  // namespace koppel::design_space_test

@@ -266,7 +266,7 @@ TEST_CASE("timed path requests: bad timings are refused with their reasons", "[s
   const AtlasIndex no_curves({});
   const PathResult refused = SynthesisePath(no_curves, untimed);
   CHECK(refused.status == PathStatus::kInvalidRequest);
-  CHECK_THAT(refused.message, Catch::Contains("A0 and frame_angle are kept by the global search"));
+  CHECK_THAT(refused.message, Catch::Contains("A0: the atlas's search places its frame itself (synth path's global search holds it fixed)"));
 }
 
 }  // namespace koppel::timed_path_synthesis_test

@@ -146,6 +146,7 @@ ChartSpec DefaultChart(const std::string& type) {
 
 DesignChart SynthesiseChart(const ChartSpec& spec) {
   ChartRequire(spec.threads >= 0 && spec.threads <= kMaxThreads, "threads", fmt::format("must be 0 (one per core) to {}", kMaxThreads));
+  if (const std::string why = spec.space.Unsupported("synth chart", false, false); !why.empty()) ChartRequire(false, "design", why);
   if (spec.type == "crank-rocker") return CrankRockerChart(spec);
   if (spec.type == "slider-crank") {
     ChartRequire(spec.space.Empty(), "design", "the design space is for four-bars (crank-rocker charts)");

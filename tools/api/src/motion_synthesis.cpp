@@ -181,6 +181,8 @@ MotionReport SynthesiseMotionReport(const MotionSpec& spec, const std::string& s
     out.message = dyads.message.empty() ? "no dyad meets the poses" : dyads.message;
     return out;
   }
+  if (const std::string why = spec.space.Unsupported("synth motion", true, false); !why.empty())
+    BadInput(source.empty() ? "synthesis request" : source, "design", why);
   MotionOptions options;
   options.require_crank = spec.require_crank;
   options.space = spec.space;

@@ -124,6 +124,7 @@ Design SynthesiseCrankRocker(const CrankRockerSpec& spec) {
   request.frame_length = spec.frame;
   std::string why;
   Require(request.IsValid(&why), "phi0/psi0/frame", why);
+  if (const std::string why = spec.space.Unsupported("synth deadcentre", false, false); !why.empty()) BadInput("design space", "design", why);
   CrankRockerDesign d = spec.beta     ? CrankRockerFromBeta(request, DegToRad(*spec.beta))
                         : spec.lambda ? CrankRockerFromLambda(request, *spec.lambda)
                                       : BestCrankRockerInSpace(request, spec.space);
@@ -300,7 +301,8 @@ Design ShownFunction(const FunctionRequest& r, const FunctionDesign& d, const st
   // the design space: a four-bar's pivots A0 (0, 0) and B0 (frame, 0), its links and mu_min
   if (!space.Empty()) {
     std::string violation = "the design space is for four-bars; a slider-crank generator is not checked against it";
-    if (four_bar)
+    if (four_bar && space.mu_min && !d.mu_known) violation = "mu_min: the generator's transmission angle over the input range is not known";
+    else if (four_bar)
       violation = space.Violation({Eigen::Vector2d(0, 0), Eigen::Vector2d(d.frame, 0), d.crank, d.coupler, d.rocker, std::nullopt,
                                    d.mu_known ? std::optional<double>(d.mu_min) : std::nullopt});
     if (!violation.empty()) {
@@ -318,6 +320,7 @@ Design ShownFunction(const FunctionRequest& r, const FunctionDesign& d, const st
 }  // namespace
 
 Design SynthesiseFunction(const FunctionSpec& spec) {
+  if (const std::string why = spec.space.Unsupported("synth function", false, false); !why.empty()) BadInput("design space", "design", why);
   const std::optional<Loads> units = UnitsOf(spec.units);
   Require(spec.type == "four-bar" || spec.type == "slider-crank", "type", "expected four-bar or slider-crank, found '" + spec.type + "'");
   Require(static_cast<bool>(spec.f), "f", "no function given");
@@ -345,6 +348,7 @@ Design SynthesiseFunction(const FunctionSpec& spec) {
 }
 
 Design SynthesiseFunctionFile(const std::string& path, const std::string& unit_name, const DesignSpace& space) {
+  if (const std::string why = space.Unsupported("synth function", false, false); !why.empty()) BadInput("design space", "design", why);
   const std::optional<Loads> units = UnitsOf(unit_name);
   const FunctionSpecFile spec = ReadFunctionSpec(path);
   const FunctionDesign d = koppel::SynthesiseFunction(spec.request);

@@ -46,6 +46,10 @@ struct DesignSpace {
   }
   // Empty *why and true when the space can hold a design (no empty interval, ratio >= 1, finite).
   bool IsValid(std::string* why) const;
+  // Empty when a synthesis can keep every key given; else the first key it cannot, in words
+  // ("coupler_point: synth function's generator has no coupler point"). `what` names the synthesis;
+  // `coupler_point`: its designs have one; `fixed_frame`: it can hold A0 and the frame angle.
+  std::string Unsupported(const std::string& what, bool coupler_point, bool fixed_frame) const;
   // The first constraint `sizes` breaks, in words with its figures ("lengths: the coupler is
   // 511, beyond 80"); empty when it lies inside the space.
   std::string Violation(const FourBarSizes& sizes) const;

@@ -6,6 +6,12 @@
 
 namespace koppel::test {
 
+#if defined(KOPPEL_CHECKED_BUILD)
+inline constexpr bool kCheckedBuild = true;
+#else
+inline constexpr bool kCheckedBuild = false;
+#endif
+
 constexpr int SeedCount(int release_count) {
 #if defined(KOPPEL_CHECKED_BUILD)
   const int share = release_count / 5;

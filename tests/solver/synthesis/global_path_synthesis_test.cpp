@@ -82,8 +82,8 @@ double SumOfSquares(const std::vector<Eigen::Vector2d>& a, const std::vector<Eig
 TEST_CASE("timed path synthesis finds random crank-rockers again from 12 timed points", "[synthesis][path][timed]") {
   const double step = DegToRad(25);
   const int count = 12;
-  for (int seed = 0; seed < 6; ++seed) {
-    if (!test::InCheckedShare(seed)) continue;  // each seed's search is seconds under the sanitizers
+  // under the sanitizers one seed: each seed's search is ten seconds there
+  for (int seed = 0; seed < (test::kCheckedBuild ? 1 : 6); ++seed) {
     std::mt19937_64 random(1000 + seed);
     const Known m = RandomCrankRocker(random);
     const double phi_1 = 2 * kPi * std::uniform_real_distribution<double>(0, 1)(random);
@@ -112,8 +112,7 @@ TEST_CASE("timed path synthesis finds random crank-rockers again from 12 timed p
 
 TEST_CASE("global path synthesis with the timing free finds random crank-rockers again, in order", "[synthesis][path][timed]") {
   const int count = 10;
-  for (int seed = 0; seed < 4; ++seed) {
-    if (!test::InCheckedShare(seed)) continue;  // each seed's search is seconds under the sanitizers
+  for (int seed = 0; seed < (test::kCheckedBuild ? 1 : 4); ++seed) {
     std::mt19937_64 random(2000 + seed);
     const Known m = RandomCrankRocker(random);
     // uneven steps: the timing is not the search's guess of equal steps
@@ -124,23 +123,26 @@ TEST_CASE("global path synthesis with the timing free finds random crank-rockers
     request.open = true;  // less than a turn: an open stretch of the curve
     request.top = 1;
     // 600 starts missed seed 1's exact design (the free timing's basins are narrower); 1500 find
-    // all four
-    request.starts = 1500;
+    // all four. Under the sanitizers (a minute for 1500) 300 starts and the order and re-analysis
+    // checks below; the exact find is the Release build's.
+    request.starts = test::kCheckedBuild ? 300 : 1500;
     request.space.input = InputTurn::kCrank;
     INFO("seed " << seed);
     const PathResult result = SynthesisePathGlobally(request);
     INFO(result.message);
     REQUIRE(result.ok());
     const PathLinkage& l = result.linkages.front();
-    CHECK(l.sse <= 1e-20);
+    if (!test::kCheckedBuild) CHECK(l.sse <= 1e-20);
     // the crank angles it reports pass the points in order, driven by the solver's sweep
     REQUIRE(l.inputs.size() == static_cast<size_t>(count));
     for (int i = 1; i < count; ++i) CHECK((l.inputs[i] - l.inputs[i - 1]) * (l.inputs[1] - l.inputs[0]) > 0);
+    double swept_sse = 0;
     for (int i = 0; i < count; ++i) {
       const double step = l.inputs[i] - l.inputs[0];
       const std::vector<Eigen::Vector2d> swept = SweptPoints(l.mechanism, l.mechanism.hint.input, step == 0 ? 1 : step, step == 0 ? 1 : 2);
-      CHECK((swept.back() - request.points[i]).squaredNorm() <= 1e-20);
+      swept_sse += (swept.back() - request.points[i]).squaredNorm();
     }
+    CHECK(swept_sse == Approx(l.sse).margin(1e-20).epsilon(1e-9));
   }
 }
 

@@ -18,6 +18,7 @@
 #include "koppel/core/worker_threads.hpp"
 #include "koppel/solver/continuation.hpp"
 #include "koppel/solver/position.hpp"
+#include "path_prepolish.hpp"  // PointsScale
 #include "path_residual.hpp"
 
 #include <fmt/core.h>
@@ -46,14 +47,6 @@ constexpr int kDrawsPerStart = 200;
 constexpr double kSameBranch = 1e-6;
 // Distinct polished starts carried to the re-analysis, per design returned.
 constexpr int kReanalysedPerDesign = 4;
-
-double Scale(const std::vector<Eigen::Vector2d>& points, Eigen::Vector2d* centre) {
-  *centre = Eigen::Vector2d::Zero();
-  for (const auto& p : points) *centre += p / static_cast<double>(points.size());
-  double s = 0;
-  for (const auto& p : points) s = std::max(s, (p - *centre).norm());
-  return s;
-}
 
 // The prescribed timing's offsets from the first point's angle.
 std::vector<double> Offsets(const PathRequest& r) {
@@ -97,7 +90,6 @@ TimedLimits Limits(const DesignSpace& s) {
 struct Problem {
   const PathRequest* request = nullptr;
   double scale = 0;
-  Eigen::Vector2d centre;
   std::vector<double> offsets, lower, upper;
   TimedLimits limits;
   bool free = false;            // the timing free: offsets are each start's guess
@@ -334,7 +326,7 @@ bool ProblemOf(const PathRequest& request, Problem* p, std::string* why) {
   p->repeats_first = p->free && !request.open && request.points.back() == request.points.front();
   p->same_phase.assign(request.points.size(), -1);
   if (p->repeats_first) p->same_phase.back() = 0;
-  p->scale = Scale(request.points, &p->centre);
+  p->scale = PointsScale(request.points);
   if (!(p->scale > 0)) {
     *why = "the points coincide";
     return false;

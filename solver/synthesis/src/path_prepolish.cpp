@@ -3,7 +3,17 @@
 #include "ceres_solves.hpp"
 #include "path_residual.hpp"
 
+#include <algorithm>
+
 namespace koppel {
+
+double PointsScale(const std::vector<Eigen::Vector2d>& points) {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  for (const auto& p : points) centre += p / static_cast<double>(points.size());
+  double s = 0;
+  for (const auto& p : points) s = std::max(s, (p - centre).norm());
+  return s;
+}
 
 bool CouplerPointAt(const std::vector<double>& v, int branch, double phi, Eigen::Vector2d* point) {
   double r[2];

@@ -19,6 +19,10 @@ namespace koppel {
 double PrePolish(const std::vector<Eigen::Vector2d>& points, int branch, std::vector<double>* unknowns, std::vector<double>* inputs,
                  const std::vector<std::pair<double, double>>* bounds = nullptr);
 
+// The points' size: their largest distance from their centroid (path synthesis's tolerances are
+// relative to it).
+double PointsScale(const std::vector<Eigen::Vector2d>& points);
+
 // The coupler point of `unknowns` at crank angle phi on `branch`; false where the loop does not close.
 bool CouplerPointAt(const std::vector<double>& unknowns, int branch, double phi, Eigen::Vector2d* point);
 

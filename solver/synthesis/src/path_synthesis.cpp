@@ -95,13 +95,6 @@ struct Candidate {
   Reading reading;
 };
 
-double Scale(const std::vector<Eigen::Vector2d>& points) {
-  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-  for (const auto& p : points) centre += p / static_cast<double>(points.size());
-  double s = 0;
-  for (const auto& p : points) s = std::max(s, (p - centre).norm());
-  return s;
-}
 
 
 // The four-bar of the fit's unknowns: A0, B0, a, b, c, K (in the coupler frame), at crank angle
@@ -543,7 +536,7 @@ std::string AtlasRequestProblem(const PathRequest& request) {
 PathResult SynthesisePath(const AtlasIndex& atlas, const PathRequest& request) {
   PathResult result;
   if (!request.IsValid(&result.message) || !(result.message = AtlasRequestProblem(request)).empty()) return result;
-  const double scale = Scale(request.points);
+  const double scale = PointsScale(request.points);
   const std::vector<Reading> readings = scale > 0 ? ReadingsOfPathPoints(request) : std::vector<Reading>{};
   if (readings.empty()) {
     result.message = scale > 0 ? "the points have no extent along a path" : "the points coincide";

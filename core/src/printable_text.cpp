@@ -43,7 +43,7 @@ Decoded Decode(std::string_view text, std::size_t at) {
 bool IsControlOrNonCharacter(std::uint32_t cp) { return cp < 0x20 || (cp >= 0x7F && cp <= 0x9F) || cp == 0xFFFE || cp == 0xFFFF; }
 
 // The unprintable character at `at`, if it is one; `decoded` is its decoding.
-std::optional<Unprintable> UnprintableAt(std::string_view text, std::size_t at, const Decoded& decoded, std::string_view keep) {
+std::optional<Unprintable> UnprintableAt(std::size_t at, const Decoded& decoded, std::string_view keep) {
   if (decoded.length == 0) return Unprintable{at, 1, decoded.code_point, false};
   if (!IsControlOrNonCharacter(decoded.code_point)) return std::nullopt;
   if (decoded.code_point < 0x80 && keep.find(static_cast<char>(decoded.code_point)) != std::string_view::npos) return std::nullopt;
@@ -75,7 +75,7 @@ std::string Unprintable::Describe() const {
 std::optional<Unprintable> FirstUnprintable(std::string_view text, std::string_view keep) {
   for (std::size_t at = 0; at < text.size();) {
     const Decoded decoded = Decode(text, at);
-    if (auto u = UnprintableAt(text, at, decoded, keep)) return u;
+    if (auto u = UnprintableAt(at, decoded, keep)) return u;
     at += decoded.length;
   }
   return std::nullopt;
@@ -86,7 +86,7 @@ std::string PrintableText(std::string_view text, Replacement replacement, std::s
   out.reserve(text.size());
   for (std::size_t at = 0; at < text.size();) {
     const Decoded decoded = Decode(text, at);
-    const std::optional<Unprintable> u = UnprintableAt(text, at, decoded, keep);
+    const std::optional<Unprintable> u = UnprintableAt(at, decoded, keep);
     if (!u) {
       out.append(text.substr(at, decoded.length));
     } else {

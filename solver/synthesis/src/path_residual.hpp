@@ -59,7 +59,7 @@ struct TimedLimits {
     if (!crank) return true;
     if (!grashof || !(shortest == 0 || shortest == 1)) return false;
     if (cos_mu > 1) return true;
-    for (const T f : {u[2] - u[4], u[2] + u[4]}) {
+    for (const T& f : {u[2] - u[4], u[2] + u[4]}) {
       const T cos_gamma = (u[5] * u[5] + u[6] * u[6] - f * f) / (T(2) * u[5] * u[6]);
       if (cos_gamma > T(cos_mu) || cos_gamma < T(-cos_mu)) return false;
     }

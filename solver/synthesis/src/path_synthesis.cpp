@@ -196,7 +196,7 @@ std::string SpaceViolation(const AtlasIndex& atlas, const Candidate& c, const De
   if (!laid) return "no curve";
   const AtlasEntry& e = atlas.entries()[c.entry];
   const double k = laid->scale();
-  return space.Violation({(*laid)({0, 0}), (*laid)({1, 0}), k * e.crank, k * e.coupler, k * e.rocker, std::nullopt});
+  return space.Violation({(*laid)({0, 0}), (*laid)({1, 0}), k * e.crank, k * e.coupler, k * e.rocker, std::nullopt, std::nullopt});
 }
 
 std::optional<Placed> Place(const AtlasIndex& atlas, const Candidate& c, const PathRequest& request) {
@@ -228,7 +228,7 @@ std::optional<Placed> Place(const AtlasIndex& atlas, const Candidate& c, const P
   // a candidate laid outside the design space is not pre-polished: its start breaks the bounds
   const std::vector<std::pair<double, double>> bounds = UnknownBounds(request.space);
   if (!request.space.Violation({{out.unknowns[0], out.unknowns[1]}, {out.unknowns[2], out.unknowns[3]}, out.unknowns[4], out.unknowns[5],
-                                out.unknowns[6], Eigen::Vector2d(out.unknowns[7], out.unknowns[8])}).empty())
+                                out.unknowns[6], Eigen::Vector2d(out.unknowns[7], out.unknowns[8]), std::nullopt}).empty())
     return std::nullopt;
   out.error = PrePolish(request.points, out.placement.branch, &out.unknowns, &out.inputs, bounds.empty() ? nullptr : &bounds);
   if (!std::isfinite(out.error)) return std::nullopt;
@@ -498,7 +498,7 @@ std::vector<size_t> PolishOrder(const std::vector<std::optional<Placed>>& placed
   for (size_t i = 0; i < placed.size(); ++i) {
     if (!placed[i]) continue;
     const std::vector<double>& v = placed[i]->unknowns;
-    const std::string violation = space.Violation({{v[0], v[1]}, {v[2], v[3]}, v[4], v[5], v[6], Eigen::Vector2d(v[7], v[8])});
+    const std::string violation = space.Violation({{v[0], v[1]}, {v[2], v[3]}, v[4], v[5], v[6], Eigen::Vector2d(v[7], v[8]), std::nullopt});
     if (violation.empty()) {
       order.push_back(i);
     } else if (broke->empty() || placed[i]->error < best_broken) {

@@ -195,6 +195,41 @@ TEST_CASE("synth fit: five precision points recover seed 003's dimensions", "[cl
   CHECK_THAT(b.err, Catch::Contains("bad.yaml:1:"));
 }
 
+TEST_CASE("synth fit --design: the fit inside the space, or exit 1 naming what the best design broke", "[cli][synth]") {
+  test::TempDir dir;
+  const std::string problem = std::string(KOPPEL_TEST_DATA_DIR) + "/fit-mzc-precision-points.yaml";
+  // the answer is seed 003's crank-rocker: crank 1, coupler = rocker = 5/2 sqrt 3 = 4.33013, frame 4,
+  // B0 at (4, 0); its mu_min over a turn is at phi = 0, cos mu = (2 (75/4) - 9) / (2 75/4) = 0.76:
+  // 40.54 deg (closed form)
+  const std::string inside = dir.Write("inside.yaml", "lengths: [0.5, 5]\nratio: 5\npivots: {x: [-1, 5], y: [-1, 1]}\ninput: crank\nmu_min: 40\n");
+  const test::RunResult ok = test::RunKoppel("synth fit " + problem + " --quiet --design " + inside);
+  INFO(ok.err);
+  REQUIRE(ok.exit_code == 0);
+  CHECK(test::ParseSummary(ok.out).at("l3") == Approx(2.5 * std::sqrt(3.0)).margin(1e-8));
+  CHECK(ok.out == test::RunKoppel("synth fit " + problem + " --quiet").out);  // the same design as without the space
+
+  const std::string tight = dir.Write("tight.yaml", "lengths: [0.5, 4.2]\n");
+  const test::RunResult short_links = test::RunKoppel("synth fit " + problem + " --quiet --design " + tight);
+  CHECK(short_links.exit_code == 1);
+  CHECK(short_links.out.empty());
+  CHECK_THAT(short_links.err, Catch::Contains("no start gave a design inside the design space") &&
+                                  Catch::Contains("lengths: coupler A-B is 4.33013, beyond 4.2"));
+  const std::string steep = dir.Write("steep.yaml", "mu_min: 45\n");
+  const test::RunResult mu = test::RunKoppel("synth fit " + problem + " --quiet --design " + steep);
+  CHECK(mu.exit_code == 1);
+  CHECK_THAT(mu.err, Catch::Contains("mu_min: the smallest transmission angle is 40.54 deg, below 45 deg"));
+
+  // what synth fit cannot hold: exit 2 before any start; a design file that does not read: its place
+  const std::string a0 = dir.Write("a0.yaml", "A0: [0, 0]\n");
+  const test::RunResult fixed = test::RunKoppel("synth fit " + problem + " --quiet --design " + a0);
+  CHECK(fixed.exit_code == 2);
+  CHECK_THAT(fixed.err, Catch::Contains("A0: synth fit places its frame itself"));
+  const std::string typo = dir.Write("typo.yaml", "lengths: [0.5, 5]\npivot: {x: [0, 1]}\n");
+  const test::RunResult unknown = test::RunKoppel("synth fit " + problem + " --quiet --design " + typo);
+  CHECK(unknown.exit_code == 2);
+  CHECK_THAT(unknown.err, Catch::Contains("typo.yaml:2"));
+}
+
 TEST_CASE("synth fit -o edits the user's file: units, masses, loads kept; forces equal --set of the fitted value", "[cli][synth]") {
   // slider-crank-loads.yaml with l2 free and s = 150 mm at phi = 90 deg. Reference for l2: the
   // closed form of the offset slider-crank at phi = 90 deg, A = (l1, -e) and B = (s, 0), so

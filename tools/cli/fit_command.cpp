@@ -4,6 +4,7 @@
 #include "model_loading.hpp"
 
 #include "koppel/api/fit.hpp"
+#include "koppel/catalog/design_space_file.hpp"
 
 #include <fmt/core.h>
 
@@ -14,7 +15,7 @@ namespace fit_command {  // this file's own names, apart from the other commands
 namespace {
 
 struct Args {
-  std::string problem, yaml, out, format = "csv", threads;
+  std::string problem, yaml, out, format = "csv", threads, design;
   bool quiet = false;
 };
 
@@ -24,6 +25,7 @@ void Run(const Args& args) {
   request.problem = args.problem;
   if (!args.threads.empty()) request.threads = static_cast<int>(ParseCountFlag("--threads", args.threads, 0, kMaxThreads));
   request.yaml = !args.yaml.empty();
+  if (!args.design.empty()) request.space = Checked([&] { return ReadDesignSpace(args.design); });  // file:line, exit 2
   const FitOutcome r = Checked([&] { return FitMechanism(request); });  // a problem file that does not read: exit 2
   if (!args.quiet) {
     for (size_t i = 0; i < r.starts.size(); ++i) std::cerr << fmt::format("koppel synth fit: start {}: {}\n", i + 1, r.starts[i]);
@@ -70,6 +72,10 @@ void AddFitSubcommand(CLI::App& synth) {
   cmd->add_option("--format", args->format, "csv (default) or json");
   cmd->add_flag("--quiet", args->quiet, "Do not print each start's Ceres report on stderr");
   cmd->add_option("--threads", args->threads, "Threads for the starts (default: one per core)");
+  cmd->add_option("--design", args->design, "The design space: a YAML file (lengths and ratio: the distance between every two\n"
+                                             "joints of a link; pivots: every frame joint; input: crank; mu_min: every transmission\n"
+                                             "output over `require:`, else a whole turn). The best start inside it is the result;\n"
+                                             "exit 1 naming the constraint when every start's design lies outside");
   cmd->callback([args] { Run(*args); });
 }
 

@@ -9,6 +9,7 @@
 #include "koppel/solver/sweep.hpp"
 #include "koppel/core/limits.hpp"
 #include "koppel/core/worker_threads.hpp"
+#include "koppel/synthesis/mechanism_space.hpp"
 
 #include <fmt/core.h>
 
@@ -19,6 +20,7 @@
 #include <limits>
 #include <random>
 #include <thread>
+#include <utility>
 
 namespace koppel {
 namespace {
@@ -79,6 +81,25 @@ void CheckRequiredRange(const MechanismBuilder& builder, const std::vector<doubl
   out->start.assembles_over_range = reach.low <= lo && reach.high >= hi;
 }
 
+// The stretch mu_min is held over: the required range, else a whole turn of an R drive from its
+// assembly (FitOptions::space; a slide drive without a required range is refused up front).
+std::pair<double, double> WorkedStretch(const Mechanism& m, const FitOptions& o) {
+  if (o.require_to != o.require_from) return {std::min(o.require_from, o.require_to), std::max(o.require_from, o.require_to)};
+  return {m.hint.input, m.hint.input + 2 * kPi};
+}
+
+// Which design-space constraint the start's solution breaks (FitStart::outside).
+void CheckSpace(const MechanismBuilder& builder, const std::vector<double>& values, const FitOptions& o, StartOutcome* out) {
+  if (o.space.Empty()) return;
+  const Expected<Mechanism> built = builder(values);
+  if (!built) {
+    out->start.outside = "the design does not build: " + built.error();
+    return;
+  }
+  const auto [from, to] = WorkedStretch(*built, o);
+  out->start.outside = MechanismViolation(o.space, *built, from, to);
+}
+
 StartOutcome RunStart(const MechanismBuilder& builder, const TargetModel& model, const std::vector<FitParameter>& parameters,
                       const FitOptions& o, int index, std::vector<double> x) {
   StartOutcome out;
@@ -114,6 +135,7 @@ StartOutcome RunStart(const MechanismBuilder& builder, const TargetModel& model,
   for (double v : out.residuals) out.start.cost += 0.5 * v * v;
   out.x = x;
   CheckRequiredRange(builder, std::vector<double>(x.begin(), x.begin() + n), o, &out);
+  CheckSpace(builder, std::vector<double>(x.begin(), x.begin() + n), o, &out);
   return out;
 }
 
@@ -139,9 +161,10 @@ std::vector<StartOutcome> RunStarts(const MechanismBuilder& builder, const Targe
   return outcomes;
 }
 
-// Designs that assemble over the required range win over any that do not; then the lower
-// cost; then the earlier start.
+// Designs inside the design space win over any outside it; then those that assemble over the
+// required range; then the lower cost; then the earlier start.
 bool Better(const StartOutcome& a, const StartOutcome& b) {
+  if (a.start.outside.empty() != b.start.outside.empty()) return a.start.outside.empty();
   if (a.start.assembles_over_range != b.start.assembles_over_range) return a.start.assembles_over_range;
   return a.start.cost < b.start.cost;
 }
@@ -182,6 +205,7 @@ const char* ToString(FitStatus status) {
     case FitStatus::kAboveTolerance: return "above tolerance";
     case FitStatus::kNotAssembling: return "does not assemble over the required range";
     case FitStatus::kNoUsableStart: return "no usable start";
+    case FitStatus::kOutsideSpace: return "outside the design space";
     case FitStatus::kInvalidOptions: return "invalid options";
   }
   return "not run";
@@ -195,6 +219,7 @@ bool FitOptions::IsValid(std::string* why) const {
     problem = "threads must be 0 (one per core) to " + std::to_string(kMaxThreads) + " (kMaxThreads)";
   else if (!(std::isfinite(require_from) && std::isfinite(require_to))) problem = "the required range must be finite";
   else if (!(length_tolerance > 0 && angle_tolerance > 0)) problem = "the tolerances must be positive";
+  else if (std::string space_why; !space.IsValid(&space_why)) problem = "design space: " + space_why;
   if (why) *why = problem;
   return problem.empty();
 }
@@ -207,6 +232,20 @@ std::string FitReport::Brief() const {
 }
 
 namespace {
+
+// Why the design space cannot be checked on this fit's mechanism (built at the given start; the
+// free parameters change sizes, not which outputs it has or how it is driven); empty when it can.
+std::string SpaceUncheckable(const MechanismBuilder& builder, const std::vector<FitParameter>& parameters, const FitOptions& options) {
+  if (options.space.Empty()) return "";
+  std::vector<double> start;
+  for (const FitParameter& p : parameters) start.push_back(p.start);
+  const Expected<Mechanism> built = builder(start);
+  if (!built) return "";  // the starts say so, each in its own report
+  if (std::string why = UncheckableSpace(options.space, *built); !why.empty()) return why;
+  if (options.space.mu_min && !built->InputIsAngle() && options.require_to == options.require_from)
+    return "mu_min: a slide drive has no whole turn to hold it over; give the worked stretch as `require:`";
+  return "";
+}
 
 // The verdict on the fitted design: every target within its tolerance, and the required range.
 void SetFitVerdict(const Mechanism& fitted, const FitOptions& options, FitReport* report) {
@@ -244,6 +283,11 @@ FitReport Fit(const MechanismBuilder& builder, const std::vector<FitParameter>& 
     report.message = targets.empty() ? "no targets" : why;
     return report;
   }
+  if (std::string why_not = SpaceUncheckable(builder, parameters, options); !why_not.empty()) {
+    report.status = FitStatus::kInvalidOptions;
+    report.message = "design space: " + why_not;
+    return report;
+  }
   const TargetModel model(builder, targets);
   const int n = static_cast<int>(parameters.size());
   const std::vector<StartOutcome> outcomes = RunStarts(builder, model, parameters, targets, options);
@@ -257,8 +301,16 @@ FitReport Fit(const MechanismBuilder& builder, const std::vector<FitParameter>& 
     report.message = "no start gave a design that assembles at every target";
     return report;
   }
+  if (!best->start.outside.empty()) {
+    report.status = FitStatus::kOutsideSpace;
+    report.best_start = best->start.index;
+    report.cost = best->start.cost;
+    report.message = fmt::format("no start gave a design inside the design space; the best (start {}, cost {:.3g}) breaks {}", best->start.index + 1,
+                                 best->start.cost, best->start.outside);
+    return report;
+  }
   for (const StartOutcome& o : outcomes) {
-    if (o.start.usable && o.start.assembles_over_range == best->start.assembles_over_range &&
+    if (o.start.usable && o.start.outside.empty() && o.start.assembles_over_range == best->start.assembles_over_range &&
         o.start.cost <= best->start.cost * (1 + kSameCostRelative) + kSameCostAbsolute)
       ++report.starts_at_best;
   }

@@ -4,6 +4,7 @@
 #include "koppel/synthesis/fit.hpp"
 
 #include "koppel/core/angles.hpp"
+#include "koppel/core/build.hpp"
 #include "support/closed_forms.hpp"
 #include "support/mechanisms.hpp"
 
@@ -372,6 +373,59 @@ TEST_CASE("fit options validate themselves", "[fit]") {
   const FitReport r = Fit(VerticalBuilder(), kLengths, DirectionTargets(false), o);
   CHECK(r.status == FitStatus::kInvalidOptions);
   CHECK(FitReport{}.status == FitStatus::kNotRun);
+}
+
+namespace {
+
+// The four-bar 1, 3.5, 3 with its frame pivot B0 at (d, 0), d free, and one target: the frame's
+// length |A0B0| = 4. Two exact designs, d = 4 and its mirror d = -4 (B0 left of A0), which only
+// the design space's pivot box tells apart.
+MechanismBuilder FramePivotBuilder() {
+  return [](const std::vector<double>& p) -> Expected<Mechanism> {
+    const double d = p[0];
+    const Eigen::Vector2d a(0, 1), b0(d, 0);  // assembled at the crank angle 90 deg
+    const double diagonal = (b0 - a).norm();
+    if (diagonal > 6.5 || diagonal < 0.5) return Expected<Mechanism>::Error("the loop does not close at 90 deg");
+    const double along = (3.5 * 3.5 - 9 + diagonal * diagonal) / (2 * diagonal);
+    const Eigen::Vector2d u = (b0 - a) / diagonal;
+    Mechanism m = test::PlainFourBar(1, 3.5, 3, d, kPi / 2, a + along * u + std::sqrt(3.5 * 3.5 - along * along) * Eigen::Vector2d(-u.y(), u.x()));
+    DistanceOutput(m, "frame", "frame", "A0", "frame", "B0");
+    return m;
+  };
+}
+
+}  // namespace
+
+TEST_CASE("the design space picks the start whose design lies inside it", "[fit][design-space]") {
+  FitTarget frame;
+  frame.name = "frame";
+  frame.output = 2;  // after psi and theta
+  frame.value = 4;
+  const std::vector<FitParameter> params = {{"d", 0.5, -6, 6}};
+  FitOptions options;
+  options.threads = 2;
+  options.space.pivots_x = std::make_pair(0.0, 10.0);
+  const FitReport right = Fit(FramePivotBuilder(), params, {frame}, options);
+  INFO(right.Brief());
+  REQUIRE(right.ok());
+  CHECK(right.values[0] == Approx(4).margin(1e-8));
+  options.space.pivots_x = std::make_pair(-10.0, 0.0);
+  const FitReport left = Fit(FramePivotBuilder(), params, {frame}, options);
+  INFO(left.Brief());
+  REQUIRE(left.ok());
+  CHECK(left.values[0] == Approx(-4).margin(1e-8));
+  // no start inside: nothing fitted, the constraint the best design broke named with its figure
+  options.space.pivots_x = std::make_pair(5.0, 10.0);
+  const FitReport none = Fit(FramePivotBuilder(), params, {frame}, options);
+  CHECK(none.status == FitStatus::kOutsideSpace);
+  CHECK(none.values.empty());
+  CHECK_THAT(none.message, Catch::Contains("pivots: A0 at x = 0, outside [5, 10]"));
+  // a space the mechanism cannot be held to is refused before any start
+  options.space = DesignSpace();
+  options.space.mu_min = DegToRad(30);  // the builder's four-bar has no transmission-angle output
+  const FitReport uncheckable = Fit(FramePivotBuilder(), params, {frame}, options);
+  CHECK(uncheckable.status == FitStatus::kInvalidOptions);
+  CHECK_THAT(uncheckable.message, Catch::Contains("no transmission-angle output"));
 }
 
 }  // namespace koppel::fit_test

@@ -82,6 +82,7 @@ FitOutcome FitMechanism(const FitRequest& request) {
   FitProblem problem = ReadFitProblem(request.problem);  // InputError: its diagnostics
   FitOutcome outcome;
   if (request.threads) problem.options.threads = *request.threads;
+  problem.options.space = request.space;
   if (std::string why; !problem.options.IsValid(&why)) {
     outcome.bad_input = true;
     outcome.message = why;

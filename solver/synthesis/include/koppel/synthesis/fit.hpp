@@ -25,6 +25,7 @@
 #include "koppel/core/angles.hpp"
 #include "koppel/core/expected.hpp"
 #include "koppel/core/mechanism.hpp"
+#include "koppel/synthesis/design_space.hpp"
 
 #include <Eigen/Core>
 
@@ -84,6 +85,10 @@ struct FitOptions {
   // mechanism's length unit), an angle target within angle_tolerance [rad] (1e-6 deg).
   double length_tolerance = 1e-6;
   double angle_tolerance = DegToRad(1e-6);
+  // Where the design must lie (mechanism_space.hpp says what each key means for any mechanism):
+  // the best start inside it is the result; a start outside it never is. mu_min is checked over
+  // the required range, or over a whole turn of an R drive from its assembly when none is given.
+  DesignSpace space;
   bool IsValid(std::string* why) const;
 };
 
@@ -93,6 +98,7 @@ enum class FitStatus {
   kAboveTolerance,  // the best design misses some target
   kNotAssembling,   // targets met, but the design does not assemble over the required range
   kNoUsableStart,   // no start gave a design that assembles at every target
+  kOutsideSpace,    // every usable start's design lies outside FitOptions::space
   kInvalidOptions,  // FitOptions::IsValid failed, or parameters / targets are malformed
 };
 const char* ToString(FitStatus status);
@@ -112,6 +118,7 @@ struct FitStart {
   bool usable = false;          // Ceres returned a usable solution that assembles at every target
   double cost = 0;              // at its solution (usable only)
   bool assembles_over_range = false;
+  std::string outside;          // the design-space constraint its solution breaks; empty inside
 };
 
 struct FitReport {

@@ -5,6 +5,8 @@
 // SynthesiseFit in koppel/api/synthesis.hpp.
 #pragma once
 
+#include "koppel/synthesis/design_space.hpp"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +17,10 @@ struct FitRequest {
   std::string problem;         // the fit problem file
   std::optional<int> threads;  // threads for the starts; unset: the file's, else one per core
   bool yaml = false;           // also write the fitted mechanism file (FitOutcome::yaml)
+  // where the design must lie (koppel/synthesis/mechanism_space.hpp): the best start inside it
+  // is the result; when every start's design lies outside, nothing is fitted and the message
+  // names the constraint the best one broke
+  DesignSpace space;
 };
 
 // One row of the report: quantity, value, unit: the file's length unit ("mm"; "length" when the

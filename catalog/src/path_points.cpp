@@ -27,12 +27,6 @@ std::optional<double> Number(const std::string& field) {
 
 }  // namespace
 
-std::vector<Eigen::Vector2d> ReadPathPoints(const std::string& path) { return ParsePathPoints(ReadInputText(path), path); }
-
-std::vector<Eigen::Vector2d> ParsePathPoints(const std::string& text, const std::string& path) {
-  return ParseTimedPathPoints(text, path).points;
-}
-
 TimedPathPoints ReadTimedPathPoints(const std::string& path) { return ParseTimedPathPoints(ReadInputText(path), path); }
 
 TimedPathPoints ParseTimedPathPoints(const std::string& text, const std::string& path) {

@@ -12,7 +12,7 @@ namespace {
 
 std::vector<Diagnostic> Problems(const std::string& text) {
   try {
-    ParsePathPoints(text, "pts.csv");
+    ParseTimedPathPoints(text, "pts.csv");
   } catch (const InputError& e) {
     return e.diagnostics();
   }
@@ -22,12 +22,12 @@ std::vector<Diagnostic> Problems(const std::string& text) {
 }  // namespace
 
 TEST_CASE("points are read as written", "[points]") {
-  const std::vector<Eigen::Vector2d> p = ParsePathPoints("\xEF\xBB\xBFx,y\r\n1, 2\r\n\r\n+3.5,-1e-308\n-4e3 ,0\n", "pts.csv");
+  const std::vector<Eigen::Vector2d> p = ParseTimedPathPoints("\xEF\xBB\xBFx,y\r\n1, 2\r\n\r\n+3.5,-1e-308\n-4e3 ,0\n", "pts.csv").points;
   REQUIRE(p.size() == 3);
   CHECK(p[0] == Eigen::Vector2d(1, 2));
   CHECK(p[1] == Eigen::Vector2d(3.5, -1e-308));  // a subnormal is a finite number
   CHECK(p[2] == Eigen::Vector2d(-4000, 0));
-  CHECK(ParsePathPoints("\n\nx,y\n0,0\n", "pts.csv").size() == 1);  // blank lines before the header
+  CHECK(ParseTimedPathPoints("\n\nx,y\n0,0\n", "pts.csv").points.size() == 1);  // blank lines before the header
 }
 
 TEST_CASE("every bad points line is reported at its line and column", "[points]") {

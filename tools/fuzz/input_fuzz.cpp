@@ -61,7 +61,7 @@ void Function(const std::string& text) {
 }
 
 void Points(const std::string& text) {
-  const std::vector<Eigen::Vector2d> points = ParsePathPoints(text, "points.csv");
+  const std::vector<Eigen::Vector2d> points = ParseTimedPathPoints(text, "points.csv").points;
   CurveDescriptor descriptor;
   if (points.size() >= 3 && DescribeCurve(points, &descriptor)) (void)OtherBranchOfAmbiguity(descriptor);
 }

@@ -22,8 +22,5 @@ struct TimedPathPoints {
 TimedPathPoints ReadTimedPathPoints(const std::string& path);
 // The same for the text of a file named `path`.
 TimedPathPoints ParseTimedPathPoints(const std::string& text, const std::string& path);
-// The points alone (a phi column read and checked, then left out).
-std::vector<Eigen::Vector2d> ReadPathPoints(const std::string& path);
-std::vector<Eigen::Vector2d> ParsePathPoints(const std::string& text, const std::string& path);
 
 }  // namespace koppel

@@ -32,7 +32,7 @@ class CardReader {
   }
 
   void Read(const YAML::Node& node) {
-    r_.CheckKeys(node, "catalog", {"title", "kind", "class", "motion", "applications", "source", "outputs", "features",
+    r_.CheckKeys(node, "catalog", {"title", "kind", "class", "motion", "applications", "keywords", "source", "outputs", "features",
                                    "variants", "sweep", "where", "equations", "figures"});
     ReadDescription(node);
     if (const YAML::Node o = r_.Require(node, "outputs", "catalog"); o.IsDefined() && !o.IsNull()) ReadAbtrieb(o);
@@ -86,6 +86,7 @@ class CardReader {
       if (const std::string problem = MotionProblem(card_.motion); mo.IsScalar() && !problem.empty()) r_.Error(mo, "catalog.motion", problem);
     }
     if (node["applications"].IsDefined()) card_.applications = r_.TextList(node["applications"], "catalog.applications");
+    if (node["keywords"].IsDefined()) card_.keywords = r_.TextList(node["keywords"], "catalog.keywords");
     if (const YAML::Node s = node["source"]; s.IsDefined() && r_.ExpectMap(s, "catalog.source")) {
       r_.CheckKeys(s, "catalog.source", {"document", "author", "literature"});
       if (s["document"].IsDefined()) Set(card_.document, s["document"], "catalog.source.document");

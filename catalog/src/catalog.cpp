@@ -1,4 +1,5 @@
 #include "koppel/catalog/catalog.hpp"
+#include "koppel/catalog/text_search.hpp"
 #include "koppel/core/module.hpp"
 
 #include "koppel/catalog/check.hpp"
@@ -163,7 +164,7 @@ Catalog Catalog::Load(const std::string& directory) {
       const AccessFeatures computed = ComputeFeatures(file.mechanism, file.card->outputs);
       AccessFeatures merged = Merge(file.card->declared, computed);
       std::vector<std::string> classes = file.card->classes;
-      for (const std::string& c : StructuralClasses(file.mechanism)) {
+      for (const std::string& c : ComputedClasses(file.mechanism)) {
         if (std::find(classes.begin(), classes.end(), c) == classes.end()) classes.push_back(c);
       }
       catalog.entries_.push_back({std::move(file), std::move(merged), std::move(classes)});
@@ -217,34 +218,21 @@ bool Matches(const CatalogEntry& entry, const FeatureQuery& q) {
   if (q.kind && card.kind != *q.kind) return false;
   if (!q.klass.empty() && std::find(entry.classes.begin(), entry.classes.end(), q.klass) == entry.classes.end()) return false;
   if (!q.motion.empty() && !MotionMatches(card.motion, q.motion)) return false;
-  if (!q.text.empty()) {
-    std::string hay = entry.file.id + "\n" + card.title_de + "\n" + card.title_en + "\n" + entry.file.title + "\n" + card.motion;
-    for (const std::string& c : entry.classes) hay += "\n" + c;
-    if (!TextMatches(hay, q.text)) return false;
-  }
+  if (!q.text.empty() && TextScore(entry, q.text) == 0) return false;
   if (q.like && !SameKinematicChain(entry.file.mechanism, *q.like)) return false;
   return true;
 }
 
-namespace {
+bool TextMatches(const std::string& haystack, const std::string& needle) { return SearchScore({{haystack, 1}}, needle) > 0; }
 
-// Lower case, every ASCII character that is not a letter or digit dropped (bytes of UTF-8
-// characters, the German titles' umlauts, are kept as they are).
-std::string Folded(const std::string& text) {
-  std::string out;
-  for (unsigned char c : text) {
-    if (c >= 0x80) out += static_cast<char>(c);
-    else if (std::isalnum(c)) out += static_cast<char>(std::tolower(c));
-  }
-  return out;
-}
-
-}  // namespace
-
-bool TextMatches(const std::string& haystack, const std::string& needle) {
-  const std::string n = Folded(needle);
-  if (n.empty()) return true;
-  return Folded(haystack).find(n) != std::string::npos;
+int TextScore(const CatalogEntry& entry, const std::string& query) {
+  const CatalogCard& card = *entry.file.card;
+  // a word in the id or a title ranks an entry first, then in a class or keyword, the motion, the applications
+  std::vector<SearchField> fields = {{entry.file.id, 4}, {card.title_de, 4}, {card.title_en, 4}, {entry.file.title, 4}, {card.motion, 2}};
+  for (const std::string& c : entry.classes) fields.push_back({c, 3});
+  for (const std::string& k : card.keywords) fields.push_back({k, 3});
+  for (const std::string& a : card.applications) fields.push_back({a, 1});
+  return SearchScore(fields, query);
 }
 
 std::vector<const CatalogEntry*> FindEntries(const Catalog& catalog, const FeatureQuery& query) {
@@ -252,6 +240,9 @@ std::vector<const CatalogEntry*> FindEntries(const Catalog& catalog, const Featu
   for (const CatalogEntry& e : catalog.entries()) {
     if (Matches(e, query)) found.push_back(&e);
   }
+  // ranked by where the words occur; entries of one rank stay in the catalog's (id) order
+  if (!query.text.empty())
+    std::stable_sort(found.begin(), found.end(), [&](const CatalogEntry* a, const CatalogEntry* b) { return TextScore(*a, query.text) > TextScore(*b, query.text); });
   return found;
 }
 

@@ -5,6 +5,8 @@
 #include "koppel/core/angles.hpp"
 #include "koppel/core/expression.hpp"
 #include "koppel/core/structure.hpp"
+#include "koppel/solver/constraints.hpp"
+#include "koppel/solver/position.hpp"
 #include "koppel/solver/sweep.hpp"
 
 #include <algorithm>
@@ -232,6 +234,61 @@ CheckOutcome FeatureCheck(const MechanismFile& file, const CatalogCard& card) {
   return features;
 }
 
+// How far each hint point is moved to show that the hint pins the branch: 2 % of the mechanism's
+// length scale, in eight directions.
+constexpr double kHintNudge = 0.02;
+constexpr int kHintDirections = 8;
+// The same pose: every coordinate within this (relative to the length scale; radians for angles).
+constexpr double kSamePose = 1e-6;
+
+// The assembly hint pins one branch: it leaves no link's pose to the solver's choice
+// (LinksTheHintLeavesOpen), and assembling from its points moved a little lands on the same pose.
+CheckOutcome HintCheck(const MechanismFile& file, const std::string& variant) {
+  CheckOutcome hint;
+  hint.name = "assembly hint pins the branch";
+  hint.kind = CheckKind::kFeatures;
+  hint.variant = variant;
+  hint.tolerance = kSamePose;
+  const Mechanism& m = file.mechanism;
+  std::string open;
+  for (const int l : LinksTheHintLeavesOpen(m)) open += (open.empty() ? "" : ", ") + m.links[l].name;
+  if (!open.empty()) {
+    hint.status = CheckStatus::kFailed;
+    hint.worst = 1;
+    hint.detail = "the hint leaves the pose of " + open + " to the solver (assembly: points: name a point of each)";
+    return hint;
+  }
+  PositionSolver solver(m);
+  Eigen::VectorXd q;
+  if (const SolveReport r = solver.Assemble(q); !r.ok()) {
+    hint.status = CheckStatus::kNotComputed;
+    hint.detail = "the hint does not assemble: " + r.message;
+    return hint;
+  }
+  const double scale = ConstraintSystem(m).length_scale();
+  for (int k = 0; k < kHintDirections; ++k) {
+    Mechanism nudged = m;
+    for (size_t e = 0; e < nudged.hint.points.size(); ++e) {
+      const double angle = 2 * kPi * (k + 0.37 * static_cast<double>(e)) / kHintDirections;
+      nudged.hint.points[e].global += kHintNudge * scale * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    }
+    Eigen::VectorXd other;
+    const SolveReport r = PositionSolver(nudged).Assemble(other);
+    double off = r.ok() ? 0.0 : std::numeric_limits<double>::infinity();
+    for (int i = 0; r.ok() && i < q.size(); ++i)
+      off = std::max(off, i % 3 == 2 ? std::abs(std::remainder(other(i) - q(i), 2 * kPi)) : std::abs(other(i) - q(i)) / scale);
+    hint.worst = std::max(hint.worst, off);
+    if (off > kSamePose) {
+      hint.status = CheckStatus::kFailed;
+      hint.detail = r.ok() ? "a hint moved by 2 % of the mechanism's size assembles another pose (differing by " + std::to_string(off) + ")"
+                           : "a hint moved by 2 % of the mechanism's size does not assemble: " + r.message;
+      return hint;
+    }
+  }
+  hint.status = CheckStatus::kPassed;
+  return hint;
+}
+
 }  // namespace
 
 namespace {
@@ -265,6 +322,7 @@ EntryReport CheckWith(const std::string& path, const MechanismFile& base, const 
   if (variants.empty()) variants.push_back({});
   for (const CheckVariant& v : variants) {
     const MechanismFile file = v.overrides.empty() ? base : ReadMechanismFile(path, v.overrides);
+    report.checks.push_back(HintCheck(file, v.name));
     RunEquations(file, card, v.name, report.checks);
     FigureContext context(file, card);
     for (const FigureCheck& figure : card.figures) {

@@ -64,17 +64,17 @@ std::string SixBarChain(const Mechanism& m, const Graph& g) {
 const std::vector<CatalogClass>& CatalogClasses() {
   static const std::vector<CatalogClass> classes = {
       {"four-bar", "Gelenkviereck: four links, four R joints (computed)"},
-      {"crank-rocker", "Kurbelschwinge: Grashof four-bar, the shortest link is the crank"},
-      {"double-crank", "Doppelkurbel: Grashof four-bar, the frame is the shortest link"},
-      {"double-rocker", "Doppelschwinge: Grashof four-bar, the coupler is the shortest link"},
-      {"triple-rocker", "non-Grashof four-bar: no link turns fully against another"},
-      {"change-point", "Grashof-neutral (s + l = p + q): the chain passes a change point where it can fold"},
+      {"crank-rocker", "Kurbelschwinge: Grashof four-bar, the shortest link is the crank (computed)"},
+      {"double-crank", "Doppelkurbel: Grashof four-bar, the frame is the shortest link (computed)"},
+      {"double-rocker", "Doppelschwinge: Grashof four-bar, the coupler is the shortest link (computed)"},
+      {"triple-rocker", "non-Grashof four-bar: no link turns fully against another (computed)"},
+      {"change-point", "Grashof-neutral (s + l = p + q): the chain passes a change point where it can fold (computed)"},
       {"slider-crank-chain", "four links, three R joints and one P joint, any inversion (computed)"},
-      {"slider-crank", "Schubkurbel: the slider slides on the frame (computed)"},
+      {"slider-crank", "Schubkurbel: the slider slides on the frame (computed; a P pair is the same whichever of its links holds the block, so the hand pump's fixed-block inversion is one too)"},
       {"slotted-link-oscillating", "schwingende Kurbelschleife: the slotted link oscillates"},
       {"slotted-link-rotating", "umlaufende Kurbelschleife: the slotted link turns fully"},
       {"swinging-block", "Schubschwinge: the rod slides in a block that pivots on the frame"},
-      {"fixed-block", "Schubkurbel inversion with the slider block as frame (hand pump)"},
+      {"fixed-block", "the slider-crank chain read with the slider block as frame: the plunger slides in the fixed cylinder and the handle is the coupler (hand pump); a slider-crank as well"},
       {"double-slider", "four links, two R and two P joints: trammel, Scotch yoke, Oldham coupling (computed)"},
       {"watt-six-bar", "six links, the two ternary links jointed to each other (computed)"},
       {"stephenson-six-bar", "six links, the two ternary links not jointed to each other (computed)"},
@@ -108,6 +108,13 @@ std::vector<std::string> StructuralClasses(const Mechanism& m) {
   if (four_links && g.prismatic == 2) classes.push_back("double-slider");
   if (const std::string six = SixBarChain(m, g); !six.empty()) classes.push_back(six);
   if (g.slide_between_moving) classes.push_back("moving-slider");
+  return classes;
+}
+
+std::vector<std::string> ComputedClasses(const Mechanism& m) {
+  std::vector<std::string> classes = StructuralClasses(m);
+  const Classification chain = ClassifyChain(m);
+  if (chain.grashof != GrashofType::kNotApplicable && IsCatalogClass(ToString(chain.grashof))) classes.push_back(ToString(chain.grashof));
   return classes;
 }
 

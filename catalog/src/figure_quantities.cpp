@@ -80,7 +80,8 @@ FigureValue DeadCentreFigure(FigureContext& c, const FigureCheck& f) {
     case FigureQuantity::kDeadCentrePhiI: return Value(wrap(r.phi_i));
     default:
       if (!c.mechanism().InputIsAngle()) return NotComputed("a time ratio needs a rotating drive");
-      return Value(r.phase_ratio);  // phi_H / (360 deg - phi_H), phi_H from phi_a to phi_i counter-clockwise
+      // phi_H / (360 deg - phi_H), phi_H from phi_a to phi_i counter-clockwise; the time ratio >= 1
+      return Value(f.quantity == FigureQuantity::kTimeRatio ? r.TimeRatio() : r.phase_ratio);
   }
 }
 
@@ -253,8 +254,10 @@ std::vector<FigureQuantityInfo> MakeTable() {
       {Q::kDeadCentrePhiI, "deadcentre_phi_i", O::kAny, U::kOfInput, A::kPosition, {}, "input of the folded dead centre (innere Totlage)",
        DeadCentreFigure},
       {Q::kPhaseRatio, "phase_ratio", O::kAny, U::kPlain, A::kSpan, {},
-       "time ratio phi_H / (360 deg - phi_H), phi_H from the extended to the folded dead centre (else: from the maximum to the minimum)",
+       "phase ratio phi_H / (360 deg - phi_H), phi_H from the extended to the folded dead centre (else: from the maximum to the minimum)",
        DeadCentreFigure},
+      {Q::kTimeRatio, "time_ratio", O::kAny, U::kPlain, A::kSpan, {},
+       "time ratio: the slow stroke's crank angle over the fast one's (the phase ratio or its reciprocal, >= 1)", DeadCentreFigure},
       {Q::kProportionalityDs, "proportionality_ds", O::kAny, U::kPlain, A::kSpan, {kFromRequired, kToRequired},
        "band width about the flat-point tangent over from..to (Dittrich, Proportionalgetriebe)", ProportionalityFigure},
       {Q::kProportionalityQp, "proportionality_qp", O::kAny, U::kPlain, A::kSpan, {kFromRequired, kToRequired},

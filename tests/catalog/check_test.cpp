@@ -10,6 +10,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 namespace koppel::check_test {
 namespace {
 
@@ -109,6 +111,34 @@ TEST_CASE("a declared feature that differs from the graph makes check fail", "[c
   CHECK(features.status == CheckStatus::kFailed);
   CHECK_THAT(features.detail, Catch::Contains("ternary links: declared 1, computed 2"));
   CHECK_FALSE(r.passed());
+}
+
+TEST_CASE("an assembly hint that leaves the branch to the solver makes check fail", "[catalog][check]") {
+  test::TempDir dir;
+  const std::string text = test::ReadText(test::CatalogEntryPath("swinging-block"));
+  // the hint before: the frame pivot alone. The rod may run from A through B0 (psi = 0 at phi = 0)
+  // or away from it (psi = 180 deg): the hint said neither.
+  const std::string frame_only = dir.Write("frame-only.yaml", Replace(text, "points: {E: [2*r + d, 0]}", "points: {B0: [3, 0]}"));
+  const CheckOutcome& open = Find(CheckEntry(frame_only), "assembly hint");
+  CHECK(open.status == CheckStatus::kFailed);
+  CHECK_THAT(open.detail, Catch::Contains("leaves the pose of rod to the solver"));
+  // the rod's end on the far side of A: a pinned hint, the other branch, and the figures say so
+  const std::string reversed = dir.Write("reversed.yaml", Replace(text, "points: {E: [2*r + d, 0]}", "points: {E: [-d - r + r, 0]}"));
+  const EntryReport other = CheckEntry(reversed);
+  CHECK(Find(other, "assembly hint").status == CheckStatus::kPassed);
+  CHECK_FALSE(other.passed());
+}
+
+TEST_CASE("a four-bar's Grashof type is computed into its classes", "[catalog][check]") {
+  const Catalog catalog = Catalog::Load(KOPPEL_CATALOG_DIR);
+  auto classes = [&](const std::string& id) { return catalog.Find(id)->classes; };
+  auto has = [](const std::vector<std::string>& c, const std::string& name) { return std::find(c.begin(), c.end(), name) != c.end(); };
+  // Evans: s + l = 1 + 8.0778 > p + q = 9 (koppel classify), the card declares no Grashof type
+  CHECK(has(classes("evans-straight-line"), "triple-rocker"));
+  // the dead-centre synthesis' crank-rocker (crank shortest, Grashof), declared only quick-return
+  CHECK(has(classes("deadcentre-crank-rocker"), "crank-rocker"));
+  CHECK(has(classes("deadcentre-crank-rocker"), "quick-return"));
+  CHECK_FALSE(has(classes("engine-slider-crank"), "triple-rocker"));
 }
 
 TEST_CASE("check passes only with the corrected phi_i, not the printed 2/3 pi", "[catalog][check]") {

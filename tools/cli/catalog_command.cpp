@@ -255,8 +255,10 @@ void AddCatalogCommand(CLI::App& app) {
   find->add_option("--motion", args->motion,
                    "Motion, 'INPUT -> OUTPUT', each side a part of the entry's (e.g. 'rotation -> oscillating translation');\n"
                    "one word alone matches either side");
-  find->add_option("--text,--keyword", args->text, "Words in the id, the titles (German or English), the classes or the motion;\n"
-                                                    "case, hyphens and spaces ignored ('straight line' finds straight-line)");
+  find->add_option("--text,--keyword", args->text, "Words in the id, the titles (German or English), the classes, keywords, motion or\n"
+                                                    "applications, every word somewhere; case, hyphens, spaces and umlauts ignored ('straight\n"
+                                                    "line' finds straight-line), German and English names of one thing alike ('Rast' finds\n"
+                                                    "dwell, 'Eilrücklauf' quick-return); the best matches first");
   find->add_option("--like", args->like, "A mechanism file: entries whose kinematic chain is isomorphic to its own\n"
                                          "(joint types respected, the frame marked)");
   find->callback([args] { RunFind(*args, false); });

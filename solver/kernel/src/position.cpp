@@ -58,6 +58,7 @@ class LinkPoseGuess {
         if (!posed_[l]) pick = l;
       }
       if (pick < 0) break;
+      open_.push_back(pick);
       angle_known_[pick] = true;
       // a free angle: 0 first, then angles spread by the golden ratio (no two attempts alike)
       if (attempt > 0) theta_[pick] = WrapAngle(2 * kPi * std::fmod(0.6180339887498949 * (attempt + 7 * pick), 1.0));
@@ -68,6 +69,8 @@ class LinkPoseGuess {
   }
 
   double theta(int link) const { return theta_[link]; }
+  // the links PoseAll had to pose with a free angle or place, in the order it did
+  const std::vector<int>& open() const { return open_; }
   const Eigen::Vector2d& origin(int link) const { return origin_[link]; }
 
  private:
@@ -142,6 +145,7 @@ class LinkPoseGuess {
   const Mechanism& m_;
   const int n_links_;
   std::vector<bool> posed_, angle_known_;
+  std::vector<int> open_;
   std::vector<double> theta_;
   std::vector<Eigen::Vector2d> origin_;
   // global estimates of link points, (point index, position) per link
@@ -149,6 +153,12 @@ class LinkPoseGuess {
 };
 
 }  // namespace
+
+std::vector<int> LinksTheHintLeavesOpen(const Mechanism& mechanism) {
+  LinkPoseGuess guess(mechanism);
+  guess.PoseAll(0);
+  return guess.open();
+}
 
 const char* ToString(SolveStatus status) {
   switch (status) {

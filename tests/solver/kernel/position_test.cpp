@@ -59,6 +59,22 @@ TEST_CASE("assembly follows the hint to the chosen branch", "[position]") {
   }
 }
 
+TEST_CASE("LinksTheHintLeavesOpen: the links whose pose no hinted point, drive or joint carries", "[position]") {
+  // the four-bar hinted at B: the crank by the drive, coupler by A and B, rocker by B0 and B
+  const Mechanism hinted = test::FourBar(1.0, kL23, kL23, 4.0, 1.0, 0.0, 1);
+  CHECK(LinksTheHintLeavesOpen(hinted).empty());
+  // without its point the coupler's angle is the solver's choice, and with it the rocker's
+  Mechanism bare = hinted;
+  bare.hint.points.clear();
+  const std::vector<int> open = LinksTheHintLeavesOpen(bare);
+  REQUIRE(open.size() == 1);
+  CHECK(bare.links[open[0]].name == "coupler");
+  // a hint on the frame alone carries nothing to a moving link
+  Mechanism frame_only = bare;
+  frame_only.hint.points.push_back({{frame_only.FrameLink(), 1}, Eigen::Vector2d(4, 0)});
+  CHECK(LinksTheHintLeavesOpen(frame_only) == open);
+}
+
 TEST_CASE("a failed Newton leaves q unchanged", "[position]") {
   const Mechanism m = test::FourBar(1.0, 2.0, 2.0, 10.0, 1.0, 0.0, 1);  // cannot be assembled
   PositionSolver solver(m);

@@ -170,7 +170,7 @@ DeadCentres Model::FindDeadCentres(const std::string& output, std::optional<doub
     d.stroke = value(r.stroke);
     d.forward_angle = m.InputIsAngle() ? RadToDeg(r.phi_h) : 0.0;
     d.phase_ratio = m.InputIsAngle() ? r.phase_ratio : 0.0;
-    d.time_ratio = d.phase_ratio > 0 ? std::max(d.phase_ratio, 1.0 / d.phase_ratio) : 0.0;
+    d.time_ratio = m.InputIsAngle() ? r.TimeRatio() : 0.0;
   }
   d.has_extremes = Usable(r.extremes.status);
   d.extremes_message = r.extremes.message;

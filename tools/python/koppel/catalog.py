@@ -15,7 +15,9 @@ def find(links: Count = None, binary: Count = None, ternary: Count = None,
 
     Counts are a number or a range as at the CLI: 4, "4..6", "..6", "4..". kind: "transfer" or
     "guidance"; klass: a class such as "slider-crank"; motion: e.g. "rotation -> translation";
-    text: part of the id or a title. directory: another catalog (default: the one installed with
+    text: words in the id, titles, classes, keywords, motion or applications, English or German
+    (the CLI's `catalog find --text`: umlauts and case ignored, synonyms found, best matches
+    first). directory: another catalog (default: the one installed with
     koppel, or $KOPPEL_CATALOG). Each entry's load(set=...) reads it as a koppel.Mechanism.
     Raises koppel.InputError for a malformed count or an unreadable catalog.
     """

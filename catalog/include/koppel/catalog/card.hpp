@@ -55,7 +55,8 @@ enum class FigureQuantity {
   kDeadCentreSpan,       // crank angle from the folded to the extended dead centre
   kDeadCentrePhiA,       // input of the extended dead centre (äußere Totlage)
   kDeadCentrePhiI,       // input of the folded dead centre (innere Totlage)
-  kPhaseRatio,           // time ratio phi_H / (360 deg - phi_H)
+  kPhaseRatio,           // phase ratio phi_H / (360 deg - phi_H)
+  kTimeRatio,            // time ratio: the slow stroke's crank angle over the fast one's, >= 1
   kProportionalityDs,    // seed 001: band width about the flat-point tangent
   kProportionalityQp,
   kStraightlinePhiG,     // seed 003: longest stretch with Q_G <= qg
@@ -102,6 +103,7 @@ struct CatalogCard {
   std::vector<std::string> classes;  // e.g. four-bar, crank-rocker (catalog_classes.hpp)
   std::string motion;  // "<input motion> -> <output motion>[ ...]", e.g. "full rotation -> oscillating translation"
   std::vector<std::string> applications;
+  std::vector<std::string> keywords;  // more words the search finds it by (text_search.hpp), English and German
   std::string document;  // the source description
   std::string author;
   std::vector<std::string> literature;

@@ -46,14 +46,19 @@ struct FeatureQuery {
   std::optional<CardKind> kind;   // any when not set
   std::string klass;              // one of CatalogClasses(); empty: any
   std::string motion;             // MotionMatches query, e.g. "rotation -> translation"; empty: any
-  std::string text;               // TextMatches the id, titles (de, en), classes or motion; empty: any
+  std::string text;               // words in the id, titles, classes, keywords, motion or applications (TextScore); empty: any
   std::optional<Mechanism> like;  // entries whose kinematic chain is isomorphic to this one's
 };
 
 bool Matches(const CatalogEntry& entry, const FeatureQuery& query);
-// True when `needle` occurs in `haystack` with case, hyphens, spaces and other punctuation
-// ignored: "straight line", "Straight-Line" and "straightline" all find "straight-line".
+// True when every word of `needle` occurs in `haystack` as text_search.hpp compares them (case,
+// hyphens, spaces, punctuation and umlauts ignored; synonyms found): "straight line",
+// "Straight-Line", "straightline" and "Geradführung" all find "straight-line".
 bool TextMatches(const std::string& haystack, const std::string& needle);
+// The rank of `entry` for the words of `query` (SearchScore over its id, titles, classes,
+// keywords, motion and applications); 0 when a word occurs nowhere.
+int TextScore(const CatalogEntry& entry, const std::string& query);
+// The entries that match, in the catalog's order; with query.text, the highest TextScore first.
 std::vector<const CatalogEntry*> FindEntries(const Catalog& catalog, const FeatureQuery& query);
 
 // True when the kinematic chains are isomorphic: a one-to-one map of the links that takes the

@@ -24,6 +24,9 @@ bool IsCatalogClass(const std::string& name);
 
 // The structural classes the graph shows (a subset of CatalogClasses()).
 std::vector<std::string> StructuralClasses(const Mechanism& mechanism);
+// What koppel computes of an entry, added to its declared classes: the structural classes and,
+// for a four-bar, its Grashof type (crank-rocker ... change-point, classification.hpp).
+std::vector<std::string> ComputedClasses(const Mechanism& mechanism);
 // Declared classes the graph contradicts, one message each.
 std::vector<std::string> ClassProblems(const Mechanism& mechanism, const std::vector<std::string>& declared);
 

@@ -11,6 +11,7 @@
 #include "koppel/solver/position.hpp"
 #include "koppel/solver/sweep.hpp"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,9 @@ struct DeadCentreReport {
   bool has_stroke = false;
   bool classified = false;  // phi_a / phi_i from the crank–coupler line-up, not from max/min
   double phi_a = 0, phi_i = 0, s_a = 0, s_i = 0, stroke = 0, phi_h = 0, phase_ratio = 0;
+  // The time ratio: the slow stroke's crank angle over the fast one's, the phase ratio or its
+  // reciprocal, >= 1 (1: no quick return); 0 without a stroke.
+  double TimeRatio() const { return phase_ratio > 0 ? std::max(phase_ratio, 1.0 / phase_ratio) : 0.0; }
   std::string Brief() const;
 };
 

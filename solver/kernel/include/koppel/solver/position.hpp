@@ -59,6 +59,12 @@ inline constexpr int kMaxOrder = 8;
 // The one place that knows the layout.
 int OutputColumn(const Mechanism& mechanism, int output, int component, int order);
 
+// The links whose pose the assembly hint leaves open: its points, the drive and the joints carry
+// no angle or place to them, so the assembly's first guess gives each a free one (and later
+// attempts others): the branch it lands on is the solver's choice, not the file's. Empty when the
+// hint pins every link (a four-bar: one point of the coupler-rocker joint).
+std::vector<int> LinksTheHintLeavesOpen(const Mechanism& mechanism);
+
 class PositionSolver {
  public:
   explicit PositionSolver(const Mechanism& mechanism, NewtonOptions options = {});

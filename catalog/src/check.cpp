@@ -9,10 +9,13 @@
 #include "koppel/solver/position.hpp"
 #include "koppel/solver/sweep.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 
 namespace koppel {
 namespace {
@@ -289,6 +292,41 @@ CheckOutcome HintCheck(const MechanismFile& file, const std::string& variant) {
   return hint;
 }
 
+// A time ratio this far from 1 is a quick return; closer, roundoff of the dead centres' inputs.
+constexpr double kQuickReturn = 1e-6;
+
+// quick-return computed: the card's first Abtrieb output, a scalar over a whole turn of an R drive,
+// has a time ratio other than 1 (its dead centres, dead_centres.hpp); the class is declared
+// exactly when it has. Empty (no check) for an entry where no time ratio is defined that does not
+// declare the class.
+std::optional<CheckOutcome> QuickReturnCheck(FigureContext& context, const CatalogCard& card, const std::string& variant) {
+  const bool declared = std::find(card.classes.begin(), card.classes.end(), "quick-return") != card.classes.end();
+  CheckOutcome quick;
+  quick.name = "class quick-return: the time ratio";
+  quick.kind = CheckKind::kFeatures;
+  quick.variant = variant;
+  quick.tolerance = kQuickReturn;
+  const Mechanism& m = context.mechanism();
+  const int output = card.outputs.empty() ? -1 : m.FindOutput(card.outputs[0]);
+  const SweepOptions range = context.CardRange();
+  const bool whole_turn = m.InputIsAngle() && std::abs(std::abs(range.to - range.from) - 2 * kPi) < 1e-9;
+  if (output < 0 || m.outputs[output].Components() != 1 || !whole_turn) {
+    if (!declared) return std::nullopt;
+    quick.status = CheckStatus::kFailed;
+    quick.detail = "declared, but the entry has no time ratio (a scalar Abtrieb output over a whole turn of a crank)";
+    return quick;
+  }
+  const DeadCentreReport& r = context.DeadCentres(output, 0);
+  const double ratio = r.has_stroke && r.sweep.complete() ? r.TimeRatio() : 1.0;
+  quick.value = ratio;
+  quick.worst = std::abs(ratio - 1);
+  const bool computed = quick.worst > kQuickReturn;
+  quick.status = computed == declared ? CheckStatus::kPassed : CheckStatus::kFailed;
+  if (computed && !declared) quick.detail = fmt::format("{}'s time ratio is {:.6g}: declare quick-return", card.outputs[0], ratio);
+  if (!computed && declared) quick.detail = fmt::format("declared, but {}'s time ratio is {:.6g}", card.outputs[0], ratio);
+  return quick;
+}
+
 }  // namespace
 
 namespace {
@@ -318,6 +356,10 @@ EntryReport CheckWith(const std::string& path, const MechanismFile& base, const 
   EntryReport report;
   report.id = base.id;
   report.checks.push_back(FeatureCheck(base, card));
+  // the classes describe the file's own parameters, not each variant's (a centric slider-crank among
+  // an offset one's variants has no quick return)
+  FigureContext own(base, card);
+  if (std::optional<CheckOutcome> quick = QuickReturnCheck(own, card, "")) report.checks.push_back(*quick);
   std::vector<CheckVariant> variants = card.variants;
   if (variants.empty()) variants.push_back({});
   for (const CheckVariant& v : variants) {

@@ -80,7 +80,7 @@ const std::vector<CatalogClass>& CatalogClasses() {
       {"stephenson-six-bar", "six links, the two ternary links not jointed to each other (computed)"},
       {"straight-line-approximate", "a point moves approximately on a straight line over part of the cycle"},
       {"straight-line-exact", "a point moves exactly on a straight line"},
-      {"quick-return", "the return stroke is faster than the working stroke (time ratio != 1)"},
+      {"quick-return", "the strokes of the output take different crank angles: time ratio != 1 (computed: declared exactly where the first Abtrieb output's time ratio over a turn is not 1)"},
       {"toggle", "Kniehebel: large force amplification near an extended position"},
       {"walking", "a foot point with a flat ground stretch and a lifted return"},
       {"moving-slider", "a P joint between two moving links (computed)"},

@@ -119,7 +119,8 @@ TEST_CASE("an assembly hint that leaves the branch to the solver makes check fai
   // the hint before: the frame pivot alone. The rod may run from A through B0 (psi = 0 at phi = 0)
   // or away from it (psi = 180 deg): the hint said neither.
   const std::string frame_only = dir.Write("frame-only.yaml", Replace(text, "points: {E: [2*r + d, 0]}", "points: {B0: [3, 0]}"));
-  const CheckOutcome& open = Find(CheckEntry(frame_only), "assembly hint");
+  const EntryReport unpinned = CheckEntry(frame_only);
+  const CheckOutcome& open = Find(unpinned, "assembly hint");
   CHECK(open.status == CheckStatus::kFailed);
   CHECK_THAT(open.detail, Catch::Contains("leaves the pose of rod to the solver"));
   // the rod's end on the far side of A: a pinned hint, the other branch, and the figures say so
@@ -127,6 +128,25 @@ TEST_CASE("an assembly hint that leaves the branch to the solver makes check fai
   const EntryReport other = CheckEntry(reversed);
   CHECK(Find(other, "assembly hint").status == CheckStatus::kPassed);
   CHECK_FALSE(other.passed());
+}
+
+TEST_CASE("quick-return is computed: declared exactly where the time ratio is not 1", "[catalog][check]") {
+  test::TempDir dir;
+  // Whitworth's time ratio (180 + 2 asin(d/r))/(180 - 2 asin(d/r)) = 2: without the class, the check says so
+  const std::string whitworth = test::ReadText(test::CatalogEntryPath("whitworth-quick-return"));
+  const std::string undeclared =
+      dir.Write("w.yaml", Replace(whitworth, "class: [slotted-link-rotating, quick-return,", "class: [slotted-link-rotating,"));
+  const EntryReport without = CheckEntry(undeclared);
+  const CheckOutcome& missing = Find(without, "class quick-return");
+  CHECK(missing.status == CheckStatus::kFailed);
+  CHECK_THAT(missing.detail, Catch::Contains("s's time ratio is 2: declare quick-return"));
+  // the centric slider-crank's strokes take 180 deg each: declared, the class fails
+  const std::string engine = test::ReadText(test::CatalogEntryPath("engine-slider-crank"));
+  const std::string declared = dir.Write("e.yaml", Replace(engine, "class: [slider-crank]", "class: [slider-crank, quick-return]"));
+  const EntryReport centric = CheckEntry(declared);
+  const CheckOutcome& wrong = Find(centric, "class quick-return");
+  CHECK(wrong.status == CheckStatus::kFailed);
+  CHECK_THAT(wrong.detail, Catch::Contains("declared, but x's time ratio is 1"));
 }
 
 TEST_CASE("a four-bar's Grashof type is computed into its classes", "[catalog][check]") {

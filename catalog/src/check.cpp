@@ -305,7 +305,7 @@ std::optional<CheckOutcome> QuickReturnCheck(FigureContext& context, const Catal
   quick.name = "class quick-return: the time ratio";
   quick.kind = CheckKind::kFeatures;
   quick.variant = variant;
-  quick.tolerance = kQuickReturn;
+  quick.tolerance = 0;  // a class holds or not: worst 1 when declared and computed differ, else 0
   const Mechanism& m = context.mechanism();
   const int output = card.outputs.empty() ? -1 : m.FindOutput(card.outputs[0]);
   const SweepOptions range = context.CardRange();
@@ -313,14 +313,15 @@ std::optional<CheckOutcome> QuickReturnCheck(FigureContext& context, const Catal
   if (output < 0 || m.outputs[output].Components() != 1 || !whole_turn) {
     if (!declared) return std::nullopt;
     quick.status = CheckStatus::kFailed;
+    quick.worst = 1;
     quick.detail = "declared, but the entry has no time ratio (a scalar Abtrieb output over a whole turn of a crank)";
     return quick;
   }
   const DeadCentreReport& r = context.DeadCentres(output, 0);
   const double ratio = r.has_stroke && r.sweep.complete() ? r.TimeRatio() : 1.0;
   quick.value = ratio;
-  quick.worst = std::abs(ratio - 1);
-  const bool computed = quick.worst > kQuickReturn;
+  const bool computed = std::abs(ratio - 1) > kQuickReturn;
+  quick.worst = computed == declared ? 0 : 1;
   quick.status = computed == declared ? CheckStatus::kPassed : CheckStatus::kFailed;
   if (computed && !declared) quick.detail = fmt::format("{}'s time ratio is {:.6g}: declare quick-return", card.outputs[0], ratio);
   if (!computed && declared) quick.detail = fmt::format("declared, but {}'s time ratio is {:.6g}", card.outputs[0], ratio);

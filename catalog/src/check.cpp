@@ -5,7 +5,6 @@
 #include "koppel/core/angles.hpp"
 #include "koppel/core/expression.hpp"
 #include "koppel/core/structure.hpp"
-#include "koppel/solver/constraints.hpp"
 #include "koppel/solver/position.hpp"
 #include "koppel/solver/sweep.hpp"
 
@@ -268,7 +267,7 @@ CheckOutcome HintCheck(const MechanismFile& file, const std::string& variant) {
     hint.detail = "the hint does not assemble: " + r.message;
     return hint;
   }
-  const double scale = ConstraintSystem(m).length_scale();
+  const double scale = solver.system().length_scale();
   for (int k = 0; k < kHintDirections; ++k) {
     Mechanism nudged = m;
     for (size_t e = 0; e < nudged.hint.points.size(); ++e) {

@@ -5,6 +5,7 @@
 #include "figures.hpp"
 #include "koppel/catalog/classes.hpp"
 #include "koppel/catalog/figure_quantities.hpp"
+#include "koppel/catalog/text_search.hpp"
 #include "koppel/core/structure.hpp"
 #include "yaml_reader.hpp"
 
@@ -337,6 +338,12 @@ class CardReader {
       }
     }
     if (!info) return;
+    // a time ratio is the slow stroke over the fast one, >= 1 (figures named so once checked a phase ratio)
+    if (info->quantity != FigureQuantity::kTimeRatio && FoldForSearch(f.name).find("timeratio") != std::string::npos)
+      r_.Error(item, Child(ipath, "quantity"), "a figure named a time ratio is quantity time_ratio (the slow stroke's crank angle over the fast one's, >= 1)");
+    // a rest says the output stands still: its expected stroke is 0 and its band is the tolerance
+    if (info->quantity == FigureQuantity::kRest && item["expected"].IsScalar() && item["expected"].Scalar() != "0")
+      r_.Error(item["expected"], Child(ipath, "expected"), "a rest's expected value is 0 (the output stands still); its tolerance is the band it rests in");
     // an angle is compared in degrees, so `unit: deg` says so; anything else has no unit
     const bool angle = ValueIsAngle(*info, f);
     if (angle && !unit.IsDefined()) r_.Error(item, Child(ipath, "unit"), "this figure is an angle: give 'unit: deg' and the expected value in degrees");

@@ -327,6 +327,24 @@ std::optional<CheckOutcome> QuickReturnCheck(FigureContext& context, const Catal
   return quick;
 }
 
+// dwell computed: the class is declared exactly where the card states a rest (a `rest` figure: an
+// output that stands within its band over an input range), and each rest is checked as a figure,
+// so a declared dwell the mechanism does not make fails there.
+std::optional<CheckOutcome> DwellCheck(const CatalogCard& card) {
+  const bool declared = std::find(card.classes.begin(), card.classes.end(), "dwell") != card.classes.end();
+  const bool stated = std::any_of(card.figures.begin(), card.figures.end(), [](const FigureCheck& f) { return f.quantity == FigureQuantity::kRest; });
+  if (!declared && !stated) return std::nullopt;
+  CheckOutcome dwell;
+  dwell.name = "class dwell: a rest";
+  dwell.kind = CheckKind::kFeatures;
+  dwell.tolerance = 0;  // a class holds or not
+  dwell.worst = declared == stated ? 0 : 1;
+  dwell.status = declared == stated ? CheckStatus::kPassed : CheckStatus::kFailed;
+  if (declared && !stated) dwell.detail = "declared, but no figure states the rest (quantity rest: the output, from, to and the band as tolerance)";
+  if (stated && !declared) dwell.detail = "a rest figure states a dwell: declare the class dwell";
+  return dwell;
+}
+
 }  // namespace
 
 namespace {
@@ -360,6 +378,7 @@ EntryReport CheckWith(const std::string& path, const MechanismFile& base, const 
   // an offset one's variants has no quick return)
   FigureContext own(base, card);
   if (std::optional<CheckOutcome> quick = QuickReturnCheck(own, card, "")) report.checks.push_back(*quick);
+  if (std::optional<CheckOutcome> dwell = DwellCheck(card)) report.checks.push_back(*dwell);
   std::vector<CheckVariant> variants = card.variants;
   if (variants.empty()) variants.push_back({});
   for (const CheckVariant& v : variants) {

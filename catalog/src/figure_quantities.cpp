@@ -278,6 +278,9 @@ std::vector<FigureQuantityInfo> MakeTable() {
       {Q::kTurns, "turns", O::kAngle, U::kPlain, A::kSpan, {kFrom, kTo}, "full turns of an angle output over the sweep", Turns},
       {Q::kBranchPoint, "branch_point", O::kNone, U::kOfInput, A::kPosition, {{"near", ArgumentKind::kInput, true}},
        "input of the branch point (change point) nearest `near` that the sweep crosses", BranchPointFigure},
+      {Q::kRest, "rest", O::kAny, U::kOfOutput, A::kSpan, {kFromRequired, kToRequired},
+       "a dwell (Rast): max - min of the output over from..to; expected 0, the tolerance is the band it rests in (declares the class dwell)",
+       Extremes},
   };
 }
 

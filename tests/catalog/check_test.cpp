@@ -72,9 +72,9 @@ TEST_CASE("a mutated copy of every entry fails: each figure, each equation and e
     CHECK_FALSE(r.passed());
 
     // a declared feature changed (the card without its figures, which the above covers): the
-    // links count, then the joints of type D
+    // links count, then the joints of type D (a dwell keeps its rest, the figure its class stands on)
     CatalogCard features_only = *e.file.card;
-    features_only.figures.clear();
+    std::erase_if(features_only.figures, [](const FigureCheck& f) { return f.quantity != FigureQuantity::kRest; });
     features_only.equations.clear();
     features_only.variants.clear();
     CHECK(CheckCard(e.file.path, features_only).passed());
@@ -147,6 +147,38 @@ TEST_CASE("quick-return is computed: declared exactly where the time ratio is no
   const CheckOutcome& wrong = Find(centric, "class quick-return");
   CHECK(wrong.status == CheckStatus::kFailed);
   CHECK_THAT(wrong.detail, Catch::Contains("declared, but x's time ratio is 1"));
+}
+
+TEST_CASE("dwell is computed: declared exactly where a rest figure states it, and the rest is checked", "[catalog][check]") {
+  test::TempDir dir;
+  // the toggle press's ram: y = K_y - sqrt(l2^2 - K_x^2) with K on the circles (A, rod) and (T0, l1)
+  // moves 5.72e-4 while the crank turns from -20 to 20 deg (its fourth-order contact at phi = 0)
+  const std::string press = test::ReadText(test::CatalogEntryPath("toggle-press"));
+  const EntryReport as_is = CheckEntry(test::CatalogEntryPath("toggle-press"));
+  CHECK(Find(as_is, "class dwell").status == CheckStatus::kPassed);
+  CHECK_THAT(Find(as_is, "dwell: the ram rests").value, Catch::Matchers::WithinAbs(5.72044e-4, 1e-9));
+  // the class without the rest figure: no rest is stated
+  const std::string no_rest = dir.Write("a.yaml", Replace(press, "quantity: rest", "quantity: stroke"));
+  const CheckOutcome& unstated = Find(CheckEntry(no_rest), "class dwell");
+  CHECK(unstated.status == CheckStatus::kFailed);
+  CHECK_THAT(unstated.detail, Catch::Contains("no figure states the rest"));
+  // the rest without the class
+  const std::string undeclared = dir.Write("b.yaml", Replace(press, "class: [toggle, dwell,", "class: [toggle,"));
+  const CheckOutcome& missing = Find(CheckEntry(undeclared), "class dwell");
+  CHECK(missing.status == CheckStatus::kFailed);
+  CHECK_THAT(missing.detail, Catch::Contains("declare the class dwell"));
+  // a band narrower than the motion: the rest itself fails
+  const std::string narrow = dir.Write("c.yaml", Replace(press, "      tolerance: 1e-3\n", "      tolerance: 1e-4\n"));
+  const EntryReport tight = CheckEntry(narrow);
+  CHECK(Find(tight, "dwell: the ram rests").status == CheckStatus::kFailed);
+  CHECK_FALSE(tight.passed());
+}
+
+TEST_CASE("a figure named a time ratio is the time_ratio quantity, >= 1", "[catalog][check]") {
+  test::TempDir dir;
+  const std::string text = test::ReadText(test::CatalogEntryPath("whitworth-quick-return"));
+  const std::string path = dir.Write("w.yaml", Replace(text, "      quantity: time_ratio\n", "      quantity: phase_ratio\n"));
+  CHECK_THROWS_WITH(CheckEntry(path), Catch::Contains("a figure named a time ratio is quantity time_ratio"));
 }
 
 TEST_CASE("a four-bar's Grashof type is computed into its classes", "[catalog][check]") {

@@ -21,7 +21,7 @@ constexpr double kSame = 1e-12;
 
 std::vector<std::string> MechanismFiles() {
   std::vector<std::string> files;
-  for (const std::string dir : {std::string(KOPPEL_CATALOG_DIR), std::filesystem::path(test::TestDataPath("x")).parent_path().string()}) {
+  for (const std::string& dir : {std::string(KOPPEL_CATALOG_DIR), std::filesystem::path(test::TestDataPath("x")).parent_path().string()}) {
     for (const auto& e : std::filesystem::directory_iterator(dir)) {
       if (e.path().extension() == ".yaml") files.push_back(e.path().string());
     }

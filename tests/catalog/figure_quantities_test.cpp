@@ -47,7 +47,7 @@ TEST_CASE("the figure quantity table has one row per quantity, in enum order, ea
     CHECK(table[i].evaluate != nullptr);
     CHECK(names.insert(table[i].name).second);
   }
-  CHECK(table.size() == static_cast<size_t>(FigureQuantity::kBranchPoint) + 1);
+  CHECK(table.size() == static_cast<size_t>(FigureQuantity::kRest) + 1);
   CHECK(FindFigureQuantity("strok") == nullptr);
 }
 

@@ -122,7 +122,7 @@ TEST_CASE("a source does not read the card; the catalog's reading refuses its pr
   const std::string good = test::ReadText(test::CatalogEntryPath("crank-rocker"));
   for (const auto& [from, to] : {std::pair<std::string, std::string>{"K1: d/a", "K1: d/(a"},
                                  {"  kind: transfer", "  knd: transfer"},
-                                 {"quantity: phase_ratio", "quantity: phase_ration"}}) {
+                                 {"quantity: time_ratio", "quantity: time_ration"}}) {
     const std::string broken = test::Replace(good, from, to);
     REQUIRE(broken != good);
     INFO(to);

@@ -101,7 +101,7 @@ TEST_CASE("catalog search: the words of the catalog's list find their entries in
   // the inversions the keywords name are the slider-crank's own chain with one of its links as frame
   const CatalogEntry* slider_crank = catalog.Find("engine-slider-crank");
   REQUIRE(slider_crank);
-  for (const std::string& id : {"swinging-block", "hand-pump", "slotted-link-rotating", "slotted-link-oscillating"}) {
+  for (const char* id : {"swinging-block", "hand-pump", "slotted-link-rotating", "slotted-link-oscillating"}) {
     INFO(id);
     bool inversion = false;
     for (size_t frame = 0; frame < slider_crank->file.mechanism.links.size(); ++frame) {

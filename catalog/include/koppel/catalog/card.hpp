@@ -69,6 +69,7 @@ enum class FigureQuantity {
   kRevolves,             // 1 when a joint can turn fully, 0 when it oscillates
   kTurns,                // full turns of an angle output over the sweep
   kBranchPoint,          // input of the branch point (change point) nearest `near`
+  kRest,                 // a dwell (Rast): max - min of an output over from..to, expected 0 within the band
 };
 
 // A scalar figure of the document, recomputed from the solver. Every key is checked against

@@ -225,15 +225,17 @@ bool Matches(const CatalogEntry& entry, const FeatureQuery& q) {
 
 bool TextMatches(const std::string& haystack, const std::string& needle) { return SearchScore({{haystack, 1}}, needle) > 0; }
 
-int TextScore(const CatalogEntry& entry, const std::string& query) {
+std::vector<SearchField> SearchFieldsOf(const CatalogEntry& entry) {
   const CatalogCard& card = *entry.file.card;
   // a word in the id or a title ranks an entry first, then in a class or keyword, the motion, the applications
   std::vector<SearchField> fields = {{entry.file.id, 4}, {card.title_de, 4}, {card.title_en, 4}, {entry.file.title, 4}, {card.motion, 2}};
   for (const std::string& c : entry.classes) fields.push_back({c, 3});
   for (const std::string& k : card.keywords) fields.push_back({k, 3});
   for (const std::string& a : card.applications) fields.push_back({a, 1});
-  return SearchScore(fields, query);
+  return fields;
 }
+
+int TextScore(const CatalogEntry& entry, const std::string& query) { return SearchScore(SearchFieldsOf(entry), query); }
 
 std::vector<const CatalogEntry*> FindEntries(const Catalog& catalog, const FeatureQuery& query) {
   std::vector<const CatalogEntry*> found;

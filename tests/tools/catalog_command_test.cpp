@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <sstream>
 
 namespace koppel::catalog_command_test {
 namespace {
@@ -127,6 +128,33 @@ TEST_CASE("catalog find --like finds the entries with the sketch's chain, joint 
   CHECK_THAT(s.out, Catch::Contains("\nslider-crank-offset,"));
   CHECK(s.out.find("mzc-crank-rocker") == std::string::npos);
   CHECK(test::RunKoppel("catalog find --like /nonexistent/sketch.yaml").exit_code == 2);
+}
+
+TEST_CASE("catalog page draws every entry and carries the search module or says it does not", "[cli][catalog]") {
+  test::TempDir dir;
+  const std::string html = (dir.path() / "catalog.html").string();
+  const test::RunResult page = test::RunKoppel("catalog page -o " + html);
+  INFO(page.err);
+  const std::string text = test::ReadText(html);
+  // the ids as catalog list prints them (the reference), each a card with its scheme
+  const test::RunResult list = test::RunKoppel("catalog list --format csv");
+  std::istringstream rows(list.out);
+  std::string row;
+  std::getline(rows, row);  // header
+  int entries = 0;
+  while (std::getline(rows, row)) {
+    const std::string id = row.substr(0, row.find(','));
+    INFO(id);
+    const size_t card = text.find("<section class=\"entry\" id=\"" + id + "\">");
+    REQUIRE(card != std::string::npos);
+    CHECK(text.find("<svg", card) < text.find("</section>", card));
+    ++entries;
+  }
+  CHECK(entries > 30);
+  // with the module the page is whole (exit 0); without it (a build without em++) exit 1 and a word why
+  const bool search = text.find("KoppelSearch") != std::string::npos && text.find("koppel_search_score") != std::string::npos;
+  CHECK(page.exit_code == (search ? 0 : 1));
+  if (!search) CHECK_THAT(page.err, Catch::Contains("no search box"));
 }
 
 TEST_CASE("catalog list and show", "[cli][catalog]") {

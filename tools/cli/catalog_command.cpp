@@ -1,4 +1,4 @@
-// koppel catalog list | find | show | check: the catalog of documented mechanisms.
+// koppel catalog list | find | show | check | page: the catalog of documented mechanisms.
 #include "catalog_command.hpp"
 #include "commands.hpp"
 #include "common.hpp"
@@ -270,6 +270,14 @@ void AddCatalogCommand(CLI::App& app) {
   common(show);
   show->add_option("id", args->ids, "Entry id")->required()->expected(1);
   show->callback([args] { RunShow(*args); });
+
+  CLI::App* page = cmd->add_subcommand(
+      "page", "Every entry on one HTML page that opens offline: its kinematic scheme, titles, classes and motion, and a\n"
+              "search box that finds and ranks entries as find --text does (the same search, compiled into the page).\n"
+              "Example: koppel catalog page -o catalog.html");
+  page->add_option("--catalog", args->directory, "Catalog directory (default: the built-in one)");
+  OutputFile(page->add_option("-o,--output-file", args->out, "Write the page to this file instead of stdout"));
+  page->callback([args] { RunCatalogPage(*args); });
 
   std::string quantities = "Figure quantities a card may use:";
   for (const CatalogTerm& q : FigureQuantityTerms()) quantities += "\n  " + q.name + ": " + q.meaning;

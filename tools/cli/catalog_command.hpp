@@ -51,5 +51,6 @@ void RunShow(const CatalogArgs& args);
 // could not be drawn goes to *problems (and onto the page).
 std::string EntryHtml(const CatalogPage& page, const std::string& text_page, std::vector<std::string>* problems);
 void RunCheck(const CatalogArgs& args);
+void RunCatalogPage(const CatalogArgs& args);
 
 }  // namespace koppel::cli

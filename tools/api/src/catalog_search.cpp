@@ -90,6 +90,7 @@ CatalogHit HitOf(const CatalogEntry& e) {
   const AccessFeatures& f = e.features;
   h.features = {f.drive_joints, f.drive_joints_at_frame, f.output_links, f.output_links_at_frame, f.links, f.joints,
                 f.links_by_degree, f.joints_by_type};
+  for (const SearchField& field : SearchFieldsOf(e)) h.search_fields.emplace_back(field.text, field.weight);
   return h;
 }
 

@@ -4,6 +4,7 @@
 
 #include "koppel/catalog/card.hpp"
 #include "koppel/catalog/mechanism_file.hpp"
+#include "koppel/catalog/text_search.hpp"
 
 #include <optional>
 #include <string>
@@ -58,6 +59,9 @@ bool TextMatches(const std::string& haystack, const std::string& needle);
 // The rank of `entry` for the words of `query` (SearchScore over its id, titles, classes,
 // keywords, motion and applications); 0 when a word occurs nowhere.
 int TextScore(const CatalogEntry& entry, const std::string& query);
+// The fields TextScore searches, with their weights: the catalog page hands them to the same
+// SearchScore compiled for the browser, so that its search box finds what `find --text` finds.
+std::vector<SearchField> SearchFieldsOf(const CatalogEntry& entry);
 // The entries that match, in the catalog's order; with query.text, the highest TextScore first.
 std::vector<const CatalogEntry*> FindEntries(const Catalog& catalog, const FeatureQuery& query);
 

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace koppel {
@@ -27,6 +28,10 @@ struct CatalogHit {
   int links = 0, joints = 0, revolute = 0, prismatic = 0;
   std::string motion;  // "<input motion> -> <output motion>", as the card says
   CatalogFeatures features;
+  // what the text search reads, with the weight a word found there adds to the rank: the id and
+  // titles 4, classes and keywords 3, the motion 2, the applications 1 (the catalog page's search
+  // box scores these with the same code as `find --text`)
+  std::vector<std::pair<std::string, int>> search_fields;
   Model Load(const ParameterValues& set = {}) const { return Model::Load(path, set); }
 };
 

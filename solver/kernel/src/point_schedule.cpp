@@ -91,10 +91,13 @@ bool PointSchedule::AddDyadStage(std::vector<bool>& posed, std::vector<bool>& us
       s.b_at_j = LocalAt(m, k, b);
       s.length_a = (s.a_at_j - s.a_at_anchor).norm();
       const int kb = CloseDyad(s, k, posed, used);
-      // a dyad link far shorter than the mechanism: its normalised determinant no longer bounds
-      // the whole Jacobian's condition, which the continuation's gauge (kFastGauge) relies on
+      // The gauge is the dyad's own: its normalised determinant (the sine between its rows, in its
+      // own links' lengths) says whether this dyad is near a fold or a branch point, whatever the
+      // whole mechanism's size L. The Jacobian is block-triangular in the stages' order, so it is
+      // singular exactly where one dyad's block is: a chain of many small loops (links 1/500 of L)
+      // compiles as a single loop does.
       const double shortest = kb < 0 ? 0.0 : s.kind == Kind::kDyadRR ? std::min(s.length_a, s.length_b) : s.length_a;
-      if (kb < 0 || !(shortest >= kShortestDyadLink * length_scale_)) continue;
+      if (kb < 0 || !(shortest > 0.0)) continue;
       s.per_length_a = 1.0 / s.length_a;
       s.per_length_b = s.kind == Kind::kDyadRR ? 1.0 / s.length_b : 0.0;
       s.landing2 = kLanding * shortest * shortest;

@@ -43,8 +43,6 @@ inline constexpr double kSingularGauge = 1e-12;
 // evaluating the residuals could show. Its point is returned without another evaluation, and the
 // derivatives there carry roundoff only.
 inline constexpr double kLanding = 4.0 * std::numeric_limits<double>::epsilon();
-// Dyad links shorter than this times L are left to the general kernel (see AddDyadStage).
-inline constexpr double kShortestDyadLink = 1e-2;
 
 // Joint k's local point on `link`, and the link across it.
 inline Eigen::Vector2d LocalAt(const Mechanism& m, int k, int link) {

@@ -10,6 +10,7 @@
 #include "koppel/core/build.hpp"
 #include "koppel/solver/assembly.hpp"
 #include "koppel/solver/continuation.hpp"
+#include "koppel/solver/singular.hpp"
 #include "support/mechanisms.hpp"
 #include "support/seeds.hpp"
 
@@ -118,7 +119,64 @@ Mechanism FourBarWithRockerSlider() {
   return m;
 }
 
+// `loops` four-bar loops in a row on one frame line, 4 apart: a crank-rocker (1, 3.5, 3, 4) drives
+// the first rocker, and each rocker drives the next through a coupler of 4 from its point D (2.5
+// along it) to the next rocker's C (2.6 along it): nearly parallelograms, each loop's swing a
+// little smaller than the one before. L is the frame's length, 4 (loops + 1); the crank is 1.
+Mechanism ChainOfLoops(int loops) {
+  Mechanism m;
+  m.name = "chain of " + std::to_string(loops) + " loops";
+  PointList frame{{"A0", {0, 0}}};
+  for (int i = 0; i < loops; ++i) frame.push_back({"P" + std::to_string(i), {4.0 * (i + 1), 0}});
+  AddLink(m, "frame", frame, true);
+  AddLink(m, "crank", {{"A0", {0, 0}}, {"A", {1, 0}}});
+  AddLink(m, "coupler0", {{"A", {0, 0}}, {"B", {3.5, 0}}});
+  AddLink(m, "rocker0", {{"P0", {0, 0}}, {"B", {3, 0}}, {"D", {2.5, 0}}});
+  Revolute(m, "A0", "frame", "crank");
+  Revolute(m, "A", "crank", "coupler0");
+  Revolute(m, "B", "coupler0", "rocker0");
+  Revolute(m, "P0", "frame", "rocker0");
+  HintPoint(m, "coupler0", "B", {3.5, 2.9});  // B above the frame line (the crank at 0: B near (3.6, 2.97))
+  for (int i = 1; i < loops; ++i) {
+    const std::string k = std::to_string(i), previous = std::to_string(i - 1);
+    AddLink(m, "coupler" + k, {{"D" + previous, {0, 0}}, {"C" + k, {4, 0}}});
+    AddLink(m, "rocker" + k, {{"P" + k, {0, 0}}, {"C" + k, {2.6, 0}}, {"D", {2.5, 0}}});
+    Revolute(m, "D" + previous, "rocker" + previous, "coupler" + k, "D", "D" + previous);
+    Revolute(m, "C" + k, "coupler" + k, "rocker" + k);
+    Revolute(m, "P" + k, "frame", "rocker" + k);
+    HintPoint(m, "rocker" + k, "C" + k, Eigen::Vector2d(4.0 * (i + 1) - 0.3, 2.58));  // the rockers upright, leaning back
+  }
+  SetDrive(m, "A0");
+  LinkAngleOutput(m, "psi", "rocker" + std::to_string(loops - 1));
+  return m;
+}
+
 }  // namespace
+
+TEST_CASE("a chain of small loops compiles: each dyad's gauge is its own, not the whole mechanism's size", "[point_schedule]") {
+  // 40 loops: the crank is 1/164 of L, below the 1e-2 of L the schedule once required of every dyad link
+  const Mechanism m = ChainOfLoops(40);
+  PositionSolver solver(m);
+  REQUIRE(1.0 / solver.system().length_scale() < 1e-2);
+  // the reference: the general kernel on its dense path, over a turn, pose for pose
+  CheckAgreement(WalkBoth(m, 360, DegToRad(1.0)), 360);
+  // and the general kernel's own test of a singular position (the whole Jacobian's reciprocal
+  // condition) finds none where the schedule's gauges call the poses regular
+  NewtonOptions dense;
+  dense.dense = true;
+  PositionSolver reference(m, dense);
+  const Assembly assembly = AssembleRegular(m, reference);
+  REQUIRE(assembly.ok());
+  Continuation path(reference);
+  REQUIRE(path.Start(assembly.input, assembly.q).ok());
+  double least = 1.0;
+  for (int i = 10; i <= 360; i += 10) {
+    REQUIRE(path.AdvanceTo(assembly.input + DegToRad(i), DegToRad(1.0)).ok());
+    least = std::min(least, ReciprocalCondition(reference.system(), path.q()));
+  }
+  INFO("least reciprocal condition " << least);
+  CHECK(least > 100 * kSingularRowRcond);
+}
 
 TEST_CASE("the schedule compiles dyad mechanisms and names what it cannot compile", "[point_schedule]") {
   // seed 001's proportional linkage: a slotted link turning about its pivot (RPR) and two blocks

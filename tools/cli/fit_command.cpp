@@ -4,7 +4,7 @@
 #include "model_loading.hpp"
 
 #include "koppel/api/fit.hpp"
-#include "koppel/catalog/design_space_file.hpp"
+#include "koppel/api/design_file.hpp"
 
 #include <fmt/core.h>
 
@@ -25,7 +25,7 @@ void Run(const Args& args) {
   request.problem = args.problem;
   if (!args.threads.empty()) request.threads = static_cast<int>(ParseCountFlag("--threads", args.threads, 0, kMaxThreads));
   request.yaml = !args.yaml.empty();
-  if (!args.design.empty()) request.space = Checked([&] { return ReadDesignSpace(args.design); });  // file:line, exit 2
+  if (!args.design.empty()) request.space = Checked([&] { return ReadDesignFile(args.design); });  // file:line, exit 2
   const FitOutcome r = Checked([&] { return FitMechanism(request); });  // a problem file that does not read: exit 2
   if (!args.quiet) {
     for (size_t i = 0; i < r.starts.size(); ++i) std::cerr << fmt::format("koppel synth fit: start {}: {}\n", i + 1, r.starts[i]);

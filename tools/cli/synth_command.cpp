@@ -1,7 +1,7 @@
 // koppel synth: dead-centre synthesis, design charts, Meyer zur Capellen straight-line linkages
 // and least-squares fitting (synth fit, in fit_command.cpp).
 #include "commands.hpp"
-#include "koppel/catalog/design_space_file.hpp"
+#include "koppel/api/design_file.hpp"
 #include "common.hpp"
 #include "model_loading.hpp"
 
@@ -107,7 +107,7 @@ void RunCrankRocker(const Args& args, double phi0) {
   spec.beta = OptionalNumberFlag("--beta", args.beta);
   spec.lambda = OptionalNumberFlag("--lambda", args.lambda_cr);
   spec.units = args.units;
-  if (!args.design.empty()) spec.space = Checked([&] { return ReadDesignSpace(args.design); });  // file:line, exit 2
+  if (!args.design.empty()) spec.space = Checked([&] { return ReadDesignFile(args.design); });  // file:line, exit 2
   const Design d = Requested([&] { return SynthesiseCrankRocker(spec); });
   if (!d.ok()) Refuse(d);
   Emit(args, d);
@@ -184,7 +184,7 @@ void RunChart(const Args& args) {
     CheckRockerSense(args.rocker_sense, true);
     spec.rocker_sense = args.rocker_sense;
   }
-  if (!args.design.empty()) spec.space = Checked([&] { return ReadDesignSpace(args.design); });  // file:line, exit 2
+  if (!args.design.empty()) spec.space = Checked([&] { return ReadDesignFile(args.design); });  // file:line, exit 2
   const DesignChart chart = Requested([&] { return SynthesiseChart(spec); });
   if (!args.quiet) std::cerr << fmt::format("koppel synth chart: {} designs\n", chart.designs);
   WriteOutput(args.out, args.format == "json" ? JsonText(ChartJson(chart)) : ChartCsv(chart));

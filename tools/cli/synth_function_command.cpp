@@ -4,7 +4,7 @@
 #include "model_loading.hpp"
 
 #include "koppel/api/synthesis.hpp"
-#include "koppel/catalog/design_space_file.hpp"
+#include "koppel/api/design_file.hpp"
 
 namespace koppel::cli {
 namespace synth_function_command {  // this file's own names, apart from the other commands' in a unity build
@@ -16,7 +16,7 @@ struct Args {
 
 void Run(const Args& args) {
   CheckFormat(args.format);
-  const DesignSpace space = args.design.empty() ? DesignSpace() : Checked([&] { return ReadDesignSpace(args.design); });  // file:line, exit 2
+  const DesignSpace space = args.design.empty() ? DesignSpace() : Checked([&] { return ReadDesignFile(args.design); });  // file:line, exit 2
   const Design d = Checked([&] { return SynthesiseFunctionFile(args.spec, args.units, space); });  // bad input: its diagnostics, exit 2
   if (!d.figures.empty()) {  // a design that fails its check still shows its lengths
     Summary s;

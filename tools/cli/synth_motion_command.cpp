@@ -4,7 +4,7 @@
 #include "model_loading.hpp"
 
 #include "koppel/api/motion_synthesis.hpp"
-#include "koppel/catalog/design_space_file.hpp"
+#include "koppel/api/design_file.hpp"
 
 #include <fmt/core.h>
 
@@ -47,7 +47,7 @@ MotionSpec Spec(const Args& args, std::vector<MotionPose> poses) {
   if (n == 2) spec.crank_turn = ParseNumberFlag("--crank-turn", args.crank_turn);
   if (!args.require.empty() && args.require != "crank") BadFlags("--require: only 'crank' (the input turns fully)");
   spec.require_crank = args.require == "crank";
-  if (!args.design.empty()) spec.space = Checked([&] { return ReadDesignSpace(args.design); });  // file:line, exit 2
+  if (!args.design.empty()) spec.space = Checked([&] { return ReadDesignFile(args.design); });  // file:line, exit 2
   if (!args.threads.empty()) spec.threads = ParseCountFlag("--threads", args.threads, 0, kMaxThreads);
   spec.units = args.units;
   return spec;

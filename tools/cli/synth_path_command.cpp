@@ -3,8 +3,7 @@
 #include "common.hpp"
 
 #include "koppel/api/path_synthesis.hpp"
-#include "koppel/catalog/design_space_file.hpp"
-#include "koppel/catalog/length_units.hpp"
+#include "koppel/api/design_file.hpp"
 #include "koppel/core/angles.hpp"
 #include "model_loading.hpp"
 
@@ -80,7 +79,7 @@ void ReadTiming(const Args& args, const TimedPathPoints& read, PathSpec* request
 
 void Run(const Args& args) {
   CheckFormat(args.format);
-  if (!args.units.empty()) Checked([&] { return UnitOnlyLoads(args.units, "units"); });  // before the search: exit 2
+  if (!args.units.empty()) Checked([&] { CheckLengthUnit(args.units, "units"); return 0; });  // before the search: exit 2
   PathSpec request;
   const TimedPathPoints read = ReadPoints(args.points);
   request.points = read.points;
@@ -90,7 +89,7 @@ void Run(const Args& args) {
   request.top = ParseCountFlag("--top", args.top, 1, 1000);
   if (!args.candidates.empty()) request.candidates = ParseCountFlag("--candidates", args.candidates, 1, 10000);
   if (!args.threads.empty()) request.threads = ParseCountFlag("--threads", args.threads, 0, kMaxThreads);
-  if (!args.design.empty()) request.space = Checked([&] { return ReadDesignSpace(args.design); });  // file:line, exit 2
+  if (!args.design.empty()) request.space = Checked([&] { return ReadDesignFile(args.design); });  // file:line, exit 2
   if (const std::string why = PathSpecProblem(request); !why.empty()) {
     Complain(args.points + ": " + why);
     throw Exit{kExitBadInput};

@@ -25,12 +25,7 @@ bool Loads::HasMass() const {
 std::vector<std::string> LoadVariables(const Mechanism& mechanism) {
   std::vector<std::string> names = {mechanism.drive.input_name, mechanism.drive.input_name + "_dot", "t"};
   for (const Output& o : mechanism.outputs) {
-    if (o.Components() == 2) {
-      names.push_back(o.name + "_x");
-      names.push_back(o.name + "_y");
-    } else {
-      names.push_back(o.name);
-    }
+    for (int c = 0; c < o.Components(); ++c) names.push_back(o.ComponentLabel(c));
   }
   return names;
 }

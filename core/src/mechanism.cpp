@@ -21,6 +21,15 @@ bool PointRefValid(const Mechanism& m, const PointRef& ref) {
 
 }  // namespace
 
+std::string ComponentName(const std::string& name, int c) { return name + (c == 0 ? "_x" : "_y"); }
+
+std::optional<std::pair<std::string, int>> SplitComponentName(const std::string& name) {
+  if (name.size() <= 2 || !(name.ends_with("_x") || name.ends_with("_y"))) return std::nullopt;
+  return std::pair(name.substr(0, name.size() - 2), name.back() == 'x' ? 0 : 1);
+}
+
+std::string Output::ComponentLabel(int c) const { return Components() == 2 ? ComponentName(name, c) : name; }
+
 int Link::FindPoint(const std::string& point_name) const { return FindByName(points, point_name); }
 
 bool Mechanism::OutputIsAngle(int output) const { return IsAngleOutput(*this, outputs[output]); }

@@ -196,3 +196,30 @@ TEST_CASE("a scalar output by name; no name is the first scalar output", "[mecha
 }
 
 }  // namespace koppel::mechanism_test
+
+namespace koppel::mechanism_component_test {
+
+TEST_CASE("a point's components are named NAME_x and NAME_y, and read back", "[core][mechanism]") {
+  CHECK(ComponentName("K", 0) == "K_x");
+  CHECK(ComponentName("K", 1) == "K_y");
+  for (const char* name : {"K", "coupler_point", "P_x"}) {
+    for (int c = 0; c < 2; ++c) {
+      const auto split = SplitComponentName(ComponentName(name, c));
+      REQUIRE(split);
+      CHECK(split->first == name);
+      CHECK(split->second == c);
+    }
+  }
+  CHECK_FALSE(SplitComponentName("_x"));
+  CHECK_FALSE(SplitComponentName("psi"));
+  Output point;
+  point.name = "K";
+  point.kind = OutputKind::kPoint;
+  CHECK(point.ComponentLabel(1) == "K_y");
+  Output scalar;
+  scalar.name = "psi";
+  scalar.kind = OutputKind::kLinkAngle;
+  CHECK(scalar.ComponentLabel(0) == "psi");
+}
+
+}  // namespace koppel::mechanism_component_test

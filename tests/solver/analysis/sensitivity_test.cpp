@@ -238,7 +238,7 @@ TEST_CASE("the clearance gradient of every output at every joint against a pin m
   // Watt six-bar with a transmission angle on its second loop, the slider-crank (slide, mu)
   Mechanism six_bar = test::WattSixBar();
   six_bar.outputs.push_back(
-      Output{.name = "mu2", .kind = OutputKind::kTransmissionAngle, .joint = six_bar.FindJoint("D"), .link = six_bar.FindLink("link5")});
+      Output{.name = "mu2", .kind = OutputKind::kTransmissionAngle, .joint = six_bar.FindJoint("D"), .link = six_bar.FindLink("link5"), .p = {}, .q = {}});
   for (const Mechanism& m : {test::FourBar(1, 3.5, 3, 4, 2, 0.5, +1), six_bar, test::SliderCrank(1.0, 2.6, 0.8)}) {
     PositionSolver solver(m);
     const double input = DegToRad(60);

@@ -295,13 +295,14 @@ TEST_CASE("play alone: the Monte Carlo's spread is linear_std at every joint and
   // with a transmission angle on its second loop: one joint's play at a time, c = 1e-3
   Mechanism four_bar = test::FourBar(1, 3.5, 3, 4, 2, 0.5, +1);
   const int frame = four_bar.FindLink("frame"), coupler = four_bar.FindLink("coupler");
-  Output distance{.name = "A0K", .kind = OutputKind::kDistance};
-  distance.p = {frame, four_bar.links[frame].FindPoint("A0")};
-  distance.q = {coupler, four_bar.links[coupler].FindPoint("K")};
+  const Output distance{.name = "A0K",
+                        .kind = OutputKind::kDistance,
+                        .p = {frame, four_bar.links[frame].FindPoint("A0")},
+                        .q = {coupler, four_bar.links[coupler].FindPoint("K")}};
   four_bar.outputs.push_back(distance);
   Mechanism six_bar = test::WattSixBar();
   six_bar.outputs.push_back(
-      Output{.name = "mu2", .kind = OutputKind::kTransmissionAngle, .joint = six_bar.FindJoint("D"), .link = six_bar.FindLink("link5")});
+      Output{.name = "mu2", .kind = OutputKind::kTransmissionAngle, .joint = six_bar.FindJoint("D"), .link = six_bar.FindLink("link5"), .p = {}, .q = {}});
   const Mechanism slider_crank = test::SliderCrank(1.0, 2.6, 0.8);
   struct Case {
     const Mechanism* m;

@@ -167,7 +167,7 @@ TEST_CASE("timed path synthesis keeps a fixed A0 and frame angle and the prescri
     CHECK(std::abs(l.geometry.b0.y()) <= 1e-12 * l.frame);
     CHECK(l.geometry.b0.x() > 0);
     CHECK(l.phi_1 == phi.front());
-    CHECK(request.space.Violation({l.geometry.a0, l.geometry.b0, l.crank, l.coupler, l.rocker, l.coupler_point}).empty());
+    CHECK(request.space.Violation({l.geometry.a0, l.geometry.b0, l.crank, l.coupler, l.rocker, l.coupler_point, std::nullopt}).empty());
   }
   CHECK(result.linkages.front().sse <= 1e-20);
 }
@@ -193,7 +193,7 @@ TEST_CASE("timed path synthesis returns no design outside the design space", "[s
   REQUIRE(result.ok());
   for (const PathLinkage& l : result.linkages) {
     INFO("sse " << l.sse);
-    CHECK(request.space.Violation({l.geometry.a0, l.geometry.b0, l.crank, l.coupler, l.rocker, l.coupler_point}).empty());
+    CHECK(request.space.Violation({l.geometry.a0, l.geometry.b0, l.crank, l.coupler, l.rocker, l.coupler_point, std::nullopt}).empty());
     // the sum of squares is the sweep's, through the angles in order
     const std::vector<Eigen::Vector2d> swept = SweptPoints(l.mechanism, l.mechanism.hint.input, DegToRad(20), 18);
     CHECK(SumOfSquares(swept, points) == Approx(l.sse).epsilon(1e-9));

@@ -96,8 +96,7 @@ std::vector<const CatalogEntry*> EntriesOf(const Catalog& catalog, const std::ve
 // "P_x", "P_y" for a point output's components, the name otherwise
 std::string OutputShown(const Mechanism& m, const std::string& output, int component) {
   const int o = m.FindOutput(output);
-  if (o < 0 || m.outputs[o].Components() == 1) return output;
-  return output + (component == 1 ? "_y" : "_x");
+  return o < 0 ? output : m.outputs[o].ComponentLabel(component);
 }
 
 void CardTexts(const CatalogEntry& e, CatalogPage* page) {

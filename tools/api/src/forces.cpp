@@ -43,8 +43,8 @@ auto WhereVirtualWork(Get get) {
 void AddJointColumns(const Mechanism& m, std::vector<ForcesColumn>& columns) {
   for (size_t j = 0; j < m.joints.size(); ++j) {
     const std::string& name = m.joints[j].name;
-    columns.push_back({name + "_x", "N", WhereComputed([j](const ForcesRow& r) { return r.joints[j].force.x(); })});
-    columns.push_back({name + "_y", "N", WhereComputed([j](const ForcesRow& r) { return r.joints[j].force.y(); })});
+    columns.push_back({ComponentName(name, 0), "N", WhereComputed([j](const ForcesRow& r) { return r.joints[j].force.x(); })});
+    columns.push_back({ComponentName(name, 1), "N", WhereComputed([j](const ForcesRow& r) { return r.joints[j].force.y(); })});
     if (m.joints[j].type == JointType::kPrismatic) {
       columns.push_back({name + "_N", "N", WhereComputed([j](const ForcesRow& r) { return r.joints[j].normal; })});
       columns.push_back({name + "_M", "N m", WhereComputed([j](const ForcesRow& r) { return r.joints[j].moment; })});

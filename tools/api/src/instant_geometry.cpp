@@ -34,8 +34,8 @@ std::vector<NamedValue> CurvatureReport::Quantities() const {
   std::vector<NamedValue> q;
   auto add = [&](const std::string& name, std::optional<double> value, const std::string& unit) { q.push_back({name, value, unit}); };
   auto add_point = [&](const std::string& prefix, const std::optional<Point2>& p, const std::string& unit) {
-    add(prefix + "_x", p ? std::optional<double>(p->x) : std::nullopt, unit);
-    add(prefix + "_y", p ? std::optional<double>(p->y) : std::nullopt, unit);
+    add(ComponentName(prefix, 0), p ? std::optional<double>(p->x) : std::nullopt, unit);
+    add(ComponentName(prefix, 1), p ? std::optional<double>(p->y) : std::nullopt, unit);
   };
   add(input_name, input, input_unit);
   add_point(point, status == AnalysisStatus::kFailed ? std::nullopt : std::optional<Point2>(position), length_unit);

@@ -52,8 +52,8 @@ std::string MotionComment(const MotionFourBar& f, int rank, const std::string& s
 Design MotionDesign(const MotionFourBar& f, int rank, const std::string& source, const std::optional<Loads>& units) {
   std::vector<DesignFigure> figures;
   const auto point = [&](const std::string& name, const Eigen::Vector2d& p) {
-    figures.push_back({name + "_x", p.x(), "length"});
-    figures.push_back({name + "_y", p.y(), "length"});
+    figures.push_back({ComponentName(name, 0), p.x(), "length"});
+    figures.push_back({ComponentName(name, 1), p.y(), "length"});
   };
   point("A0", f.crank.centre);
   point("A", f.crank.circle);

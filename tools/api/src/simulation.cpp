@@ -62,7 +62,7 @@ void LayOut(const Model& model, Motion& motion) {
   for (int o = 0; o < static_cast<int>(m.outputs.size()); ++o) {
     const Output& out = m.outputs[o];
     for (int c = 0; c < out.Components(); ++c) {
-      motion.columns.push_back(out.Components() == 2 ? out.name + (c == 0 ? "_x" : "_y") : out.name);
+      motion.columns.push_back(out.ComponentLabel(c));
       motion.units.push_back(m.OutputIsAngle(o) ? "deg" : length);
     }
   }

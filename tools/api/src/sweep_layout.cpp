@@ -29,7 +29,7 @@ SweepColumns SweepLayout(const Mechanism& m, int order, const std::string& lengt
     const Output& out = m.outputs[o];
     const bool angle = m.OutputIsAngle(o);
     for (int c = 0; c < out.Components(); ++c) {
-      const std::string base = out.Components() == 2 ? out.name + (c == 0 ? "_x" : "_y") : out.name;
+      const std::string base = out.ComponentLabel(c);
       for (int k = 0; k <= order; ++k) {
         std::string name = base;
         if (k > 0) name.append("_d").append(std::to_string(k));

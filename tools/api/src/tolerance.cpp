@@ -26,11 +26,11 @@ std::pair<int, int> ResolveOutput(const Model& model, const std::string& name) {
   const int direct = m.FindOutput(name);
   if (direct >= 0) {
     if (m.outputs[direct].Components() == 1) return {direct, 0};
-    BadInput(model.path(), "output", "'" + name + "' is a point: name its component, " + name + "_x or " + name + "_y");
+    BadInput(model.path(), "output", "'" + name + "' is a point: name its component, " + ComponentName(name, 0) + " or " + ComponentName(name, 1));
   }
-  if (name.size() > 2 && (name.ends_with("_x") || name.ends_with("_y"))) {
-    const int point = m.FindOutput(name.substr(0, name.size() - 2));
-    if (point >= 0 && m.outputs[point].Components() == 2) return {point, name.back() == 'x' ? 0 : 1};
+  if (const auto split = SplitComponentName(name)) {
+    const int point = m.FindOutput(split->first);
+    if (point >= 0 && m.outputs[point].Components() == 2) return {point, split->second};
   }
   BadInput(model.path(), "output", "the mechanism has no output '" + name + "'");
 }

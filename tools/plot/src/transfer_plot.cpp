@@ -85,8 +85,7 @@ PlotResult TransferPlot(const Mechanism& m, const TransferPlotOptions& options) 
     double low = 0, high = 0;
     for (int c = 0; c < out.Components(); ++c) {
       Curve curve;
-      const std::string component = scalar ? "" : (c == 0 ? "_x" : "_y");
-      curve.name = scalar ? "" : out.name + component;
+      curve.name = scalar ? "" : out.ComponentLabel(c);
       curve.colour = c;
       curve.runs = InputRuns(m, run, run.Column(m, options.output, c, k), options.output, k);
       double a, b;

@@ -46,7 +46,7 @@ void AddViewOutputs(const Mechanism& m, const SampledRun& run, const std::string
       for (int c = 0; c < 2; ++c) {
         std::vector<double> v;
         for (int i = 0; i < run.size(); ++i) v.push_back(Rounded(run.outputs(i, run.Column(m, o, c, 0))));
-        readout->push_back({{"label", out.name + (c == 0 ? "_x" : "_y")}, {"values", v}});
+        readout->push_back({{"label", out.ComponentLabel(c)}, {"values", v}});
       }
       continue;
     }

@@ -20,7 +20,9 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace koppel {
@@ -86,7 +88,16 @@ struct Output {
   double offset = 0.0;  // angle outputs: subtracted from the value (a zero reference) [rad]
 
   int Components() const { return kind == OutputKind::kPoint ? 2 : 1; }
+  // What tables, charts, readouts and forms call its component `c`: the output's name for a
+  // scalar, ComponentName(name, c) for a point ("K_x", "K_y").
+  std::string ComponentLabel(int c) const;
 };
+
+// Component `c` (0: x, 1: y) of a point or vector named `name`: "K_x", "K_y". The one rule every
+// table column, chart label and form field follows.
+std::string ComponentName(const std::string& name, int c);
+// The inverse: "K_y" -> ("K", 1); nothing for a name without the suffix (or only the suffix).
+std::optional<std::pair<std::string, int>> SplitComponentName(const std::string& name);
 
 // Rough global positions of points that choose the assembly branch (Einbaulage).
 struct AssemblyHint {

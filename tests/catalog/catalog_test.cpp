@@ -203,13 +203,16 @@ TEST_CASE("a catalog directory that does not exist is reported", "[catalog]") {
 namespace koppel::catalog_test {
 namespace {
 
-// The reference for the keyword search: "straight" and "line" joined by one hyphen or space,
-// any case, in one of the fields the search covers, found by hand-written scanning.
+// The reference for the keyword search: "straight" and "line" joined by one hyphen or space, or
+// its German name Geradführung (its synonym), any case, in one of the fields the search covers
+// (id, titles, motion, classes, keywords, applications), found by hand-written scanning.
 bool SaysStraightLine(const CatalogEntry& e) {
   std::string fields = e.file.id + "\n" + e.file.card->title_de + "\n" + e.file.card->title_en + "\n" + e.file.title + "\n" + e.file.card->motion;
   for (const std::string& c : e.classes) fields += "\n" + c;
+  for (const std::string& k : e.file.card->keywords) fields += "\n" + k;
+  for (const std::string& a : e.file.card->applications) fields += "\n" + a;
   std::transform(fields.begin(), fields.end(), fields.begin(), [](unsigned char c) { return std::tolower(c); });
-  for (const char* form : {"straight-line", "straight line", "straightline"})
+  for (const char* form : {"straight-line", "straight line", "straightline", "geradführung", "geradfuehrung"})
     if (fields.find(form) != std::string::npos) return true;
   return false;
 }

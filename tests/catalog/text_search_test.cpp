@@ -77,22 +77,24 @@ TEST_CASE("catalog search: the words of the catalog's list find their entries in
   };
   const std::set<std::string> straight = WithClass(catalog, "straight-line");
   const std::set<std::string> quick = WithClass(catalog, "quick-return");
+  const std::set<std::string> dwell = WithClass(catalog, "dwell");
   const std::vector<Word> words = {
-      {{"wiper", "Scheibenwischer"}, {"crank-rocker"}},
-      {{"steering", "Lenkung", "Lenkgetriebe"}, {"double-rocker"}},
-      {{"hydraulic", "Hydraulik", "hydraulisch"}, {"swinging-block"}},
+      {{"wiper", "Scheibenwischer"}, {"crank-rocker", "windscreen-wiper-parallel"}},
+      {{"steering", "Lenkung", "Lenkgetriebe"}, {"double-rocker", "ackermann-steering", "rapson-slide"}},
+      {{"hydraulic", "Hydraulik", "hydraulisch"}, {"swinging-block", "hydraulic-boom-cylinder", "backhoe-bucket-linkage"}},
       {{"dead center", "dead centre", "Totlage", "dead-centre"}, {"deadcentre-crank-rocker", "deadcentre-slider-crank"}},
-      {{"Rast", "dwell", "Rastgetriebe"}, {"toggle-press"}},
+      {{"Rast", "dwell", "Rastgetriebe"}, dwell},
       {{"Kniehebel", "toggle"}, {"toggle-press"}},
       {{"Eilrücklauf", "Eilruecklauf", "eilrucklauf", "quick return", "quick-return"}, quick},
       {{"Geradführung", "Geradfuehrung", "straight line", "Straight-Line"}, straight},
       {{"coupler curve", "Koppelkurve"}, {"stephenson-six-bar", "hoekens-straight-line", "chebyshev-straight-line", "mzc-crank-rocker"}},
-      {{"function generator", "Funktionsgetriebe"}, {"proportional-linkage"}},
-      {{"inversion", "Umkehrung"}, {"swinging-block", "hand-pump", "slotted-link-rotating", "slotted-link-oscillating"}},
+      {{"function generator", "Funktionsgetriebe"}, {"proportional-linkage", "function-generator-log"}},
+      {{"inversion", "Umkehrung"}, {"swinging-block", "hand-pump", "slotted-link-rotating", "slotted-link-oscillating", "inverted-slider-crank"}},
       {{"Schubkurbel", "slider-crank"}, {"engine-slider-crank", "slider-crank-offset"}},
   };
   CHECK(straight.size() >= 9);
   CHECK(quick.size() >= 4);
+  CHECK(dwell.size() >= 3);  // the toggle press and the single- and double-dwell six-bars
   for (const Word& w : words)
     for (const std::string& spelling : w.spellings) {
       INFO(spelling);
@@ -118,6 +120,53 @@ TEST_CASE("catalog search: the words of the catalog's list find their entries in
   REQUIRE(!ranked.empty());
   CHECK(TextScore(*ranked.front(), q.text) >= TextScore(*ranked.back(), q.text));
   CHECK(ranked.front()->file.id.find("crank-rocker") != std::string::npos);
+}
+
+// The mechanisms a textbook's table of useful linkages lists, each found by its English and its
+// German name (the reference: the entry the name means, by its id).
+TEST_CASE("catalog search: each textbook linkage is found by its English and its German name", "[catalog][search]") {
+  const Catalog catalog = Catalog::Load(KOPPEL_CATALOG_DIR);
+  const std::vector<std::pair<std::vector<std::string>, std::string>> names = {
+      {{"pantograph", "Storchschnabel"}, "pantograph"},
+      {{"drag link", "Doppelkurbel", "quick return", "Eilrücklauf"}, "drag-link-quick-return"},
+      {{"single dwell", "Rastgetriebe", "dwell", "Rast"}, "single-dwell-six-bar"},
+      {{"double dwell", "zwei Rasten", "dwell", "Rast"}, "double-dwell-six-bar"},
+      {{"jaw crusher", "Backenbrecher", "Blake"}, "blake-jaw-crusher"},
+      {{"toggle clamp", "Kniehebelspanner", "Kniehebel"}, "toggle-clamp"},
+      {{"kite", "Drachen", "deltoid"}, "kite-four-bar"},
+      {{"Ackermann", "steering", "Lenkung", "Lenktrapez"}, "ackermann-steering"},
+      {{"level luffing", "Wippkran", "crane", "Kran"}, "level-luffing-crane"},
+      {{"parallel motion", "Watt"}, "watt-parallel-motion"},
+      {{"scissor lift", "Scherenhubtisch", "lazy tongs"}, "scissor-lift"},
+      {{"Walschaerts", "valve gear", "Heusinger", "Steuerung"}, "walschaerts-valve-gear"},
+      {{"film advance", "claw", "Greiferwerk", "Filmtransport"}, "film-advance-claw"},
+      {{"Klann", "walking", "Schreitwerk"}, "klann-linkage"},
+      {{"Chebyshev", "walking", "Tschebyschow", "Schreitwerk"}, "chebyshev-walker"},
+      {{"Chebyshev lambda", "Tschebyschow", "straight line", "Geradführung"}, "chebyshev-lambda"},
+      {{"pumpjack", "Pferdekopfpumpe", "oil well", "Tiefpumpe"}, "pumpjack"},
+      {{"treadle", "Tretkurbel", "Tretantrieb"}, "treadle"},
+      {{"radial engine", "Sternmotor"}, "radial-engine"},
+      {{"backhoe", "excavator", "Bagger", "hydraulic", "Hydraulik"}, "backhoe-bucket-linkage"},
+      {{"function generator", "Funktionsgetriebe"}, "function-generator-log"},
+      {{"motion generation", "Führungsgetriebe", "three positions", "Lagensynthese"}, "motion-generation-four-bar"},
+      {{"wiper", "Scheibenwischer"}, "windscreen-wiper-parallel"},
+      {{"inversion", "Umkehrung", "oscillating cylinder", "Schwingzylinder"}, "inverted-slider-crank"},
+      {{"hydraulic cylinder", "Hydraulikzylinder", "boom", "Ausleger"}, "hydraulic-boom-cylinder"},
+      {{"Rapson", "steering", "Ruder"}, "rapson-slide"},
+      {{"V engine", "V-Motor"}, "v-twin-engine"},
+      {{"shaking conveyor", "Schüttelrutsche", "Schwingförderer"}, "shaking-conveyor"},
+      {{"press brake", "Abkantpresse"}, "press-brake-toggle"},
+      {{"boxer", "Boxermotor"}, "two-cylinder-boxer"},
+  };
+  CHECK(catalog.entries().size() >= 60);
+  for (const auto& [spellings, id] : names) {
+    REQUIRE(catalog.Find(id));
+    for (const std::string& spelling : spellings) {
+      DYNAMIC_SECTION("'" << spelling << "' finds " << id) {
+        CHECK(Found(catalog, spelling).count(id) == 1);
+      }
+    }
+  }
 }
 
 }  // namespace koppel::text_search_test

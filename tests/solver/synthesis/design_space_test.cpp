@@ -10,7 +10,7 @@ namespace koppel::design_space_test {
 
 namespace {
 // crank 1, coupler 3.5, rocker 3, frame 4 (A0 at the origin, B0 at (4, 0)): Grashof, crank shortest
-FourBarSizes CrankRocker() { return {{0, 0}, {4, 0}, 1, 3.5, 3, Eigen::Vector2d(1, 0.5)}; }  // K 1 along A -> B, 0.5 left
+FourBarSizes CrankRocker() { return {{0, 0}, {4, 0}, 1, 3.5, 3, Eigen::Vector2d(1, 0.5), std::nullopt}; }  // K 1 along A -> B, 0.5 left
 }  // namespace
 
 TEST_CASE("DesignSpace: each constraint names what a four-bar breaks", "[synthesis][design-space]") {
@@ -41,11 +41,11 @@ TEST_CASE("DesignSpace: each constraint names what a four-bar breaks", "[synthes
   crank.input = InputTurn::kCrank;
   CHECK(crank.Violation(CrankRocker()).empty());
   // the rocker shortest: a Grashof rocker-crank, whose input at A0 only rocks
-  CHECK_THAT(crank.Violation({{0, 0}, {4, 0}, 3, 3.5, 1, std::nullopt}), Catch::Contains("does not turn fully"));
+  CHECK_THAT(crank.Violation({{0, 0}, {4, 0}, 3, 3.5, 1, std::nullopt, std::nullopt}), Catch::Contains("does not turn fully"));
   // non-Grashof (3 + 5 > 4 + 2.5: the triple-rocker of the catalog)
-  CHECK_THAT(crank.Violation({{0, 0}, {5, 0}, 3, 4, 2.5, std::nullopt}), Catch::Contains("does not turn fully"));
+  CHECK_THAT(crank.Violation({{0, 0}, {5, 0}, 3, 4, 2.5, std::nullopt, std::nullopt}), Catch::Contains("does not turn fully"));
   // the frame shortest: a double crank turns fully
-  CHECK(crank.Violation({{0, 0}, {1, 0}, 3, 3.5, 4, std::nullopt}).empty());
+  CHECK(crank.Violation({{0, 0}, {1, 0}, 3, 3.5, 4, std::nullopt, std::nullopt}).empty());
 
   // A0 and the frame angle fixed: held to kFixedTolerance of the longest link (4 here)
   DesignSpace fixed;

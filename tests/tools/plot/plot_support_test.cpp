@@ -136,3 +136,14 @@ TEST_CASE("JSON in a page's script: no <, > or &, the same JSON read back", "[pl
 
 }  // namespace
 }  // namespace koppel::plot_support_test
+
+namespace koppel::plot_support_fill_test {
+
+TEST_CASE("Fill: each {{KEY}} its value, an unknown key kept, an unclosed {{ left as it is", "[plot_support]") {
+  using plot::Fill;
+  CHECK(Fill("<p>{{A}} and {{B}}</p>", {{"A", "1"}, {"B", "{{A}}"}}) == "<p>1 and {{A}}</p>");  // a value is not filled again
+  CHECK(Fill("{{C}}", {{"A", "1"}}) == "{{C}}");
+  CHECK(Fill("a {{A}} b {{A", {{"A", "1"}}) == "a 1 b {{A");  // once looped forever
+}
+
+}  // namespace koppel::plot_support_fill_test

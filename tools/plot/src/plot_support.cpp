@@ -104,6 +104,7 @@ std::string Fill(const std::string& page, const std::vector<std::pair<std::strin
     const size_t open = page.find("{{", at);
     if (open == std::string::npos) break;
     const size_t close = page.find("}}", open);
+    if (close == std::string::npos) break;  // "{{" with no "}}": the rest as it is
     out += page.substr(at, open - at);
     const std::string key = page.substr(open + 2, close - open - 2);
     bool found = false;

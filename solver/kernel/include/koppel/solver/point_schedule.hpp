@@ -12,9 +12,12 @@
 //             |J - A| = a, |J - B| = b   (A, B the posed hinges);
 //   dyad RP:  a link hinged to a posed link at A and to a block at J, the block on the slide line
 //             of a posed guide (its angle is the guide's plus the joint's):
-//             |J - A| = a, n . (point of the block - point of the line) = 0.
-// A mechanism made of other parts (triads, a slotted link turning about its pivot, redundant
-// joints) is not compiled (compiled() false, why_not() says what): the caller keeps the general
+//             |J - A| = a, n . (point of the block - point of the line) = 0;
+//   dyad PRP: two blocks on posed guides hinged to each other: the meeting point of two lines;
+//   dyad RPR: a block hinged to a posed link at A, sliding on the line of a link that turns about
+//             a posed pivot B (a slotted link): n . (A - B) = offset (point_schedule_slides.cpp).
+// A dyad's gauge is its own normalised determinant, whatever the mechanism's size.
+// A mechanism made of other parts (triads, redundant joints) is not compiled (compiled() false, why_not() says what): the caller keeps the general
 // kernel (position.hpp) for it. The schedule is the fast path of a regular step, never the only
 // one: singular poses, assembly and higher orders stay with the general kernel.
 //

@@ -320,10 +320,14 @@ std::optional<CheckOutcome> QuickReturnCheck(FigureContext& context, const Catal
   const double ratio = r.has_stroke && r.sweep.complete() ? r.TimeRatio() : 1.0;
   quick.value = ratio;
   const bool computed = std::abs(ratio - 1) > kQuickReturn;
-  quick.worst = computed == declared ? 0 : 1;
-  quick.status = computed == declared ? CheckStatus::kPassed : CheckStatus::kFailed;
+  // a quick return states its time ratio (the slow stroke over the fast one, >= 1) as a figure
+  const bool stated = std::any_of(card.figures.begin(), card.figures.end(), [](const FigureCheck& f) { return f.quantity == FigureQuantity::kTimeRatio; });
+  const bool holds = computed == declared && (stated || !declared);
+  quick.worst = holds ? 0 : 1;
+  quick.status = holds ? CheckStatus::kPassed : CheckStatus::kFailed;
   if (computed && !declared) quick.detail = fmt::format("{}'s time ratio is {:.6g}: declare quick-return", card.outputs[0], ratio);
   if (!computed && declared) quick.detail = fmt::format("declared, but {}'s time ratio is {:.6g}", card.outputs[0], ratio);
+  if (computed && declared && !stated) quick.detail = fmt::format("{}'s time ratio is {:.6g}: state it as a time_ratio figure", card.outputs[0], ratio);
   return quick;
 }
 

@@ -37,12 +37,15 @@ DesignSpace ParseDesignSpaceText(const std::string& text, const std::string& pat
   const YAML::Node root = ParseYamlText(text, path);
   YamlReader r(path, nullptr);
   r.set_fallback(YAML::Mark());
-  if (!r.ExpectMap(root, "")) throw InputError(r.diagnostics());
+  // a file of comments alone would leave the synthesis as it is: refused (--design that changes nothing)
+  if (root.IsNull()) r.Error(root, "", "the design file states no constraint: give a map of lengths, ratio, pivots, input, A0, frame_angle, coupler_point or mu_min");
+  if (root.IsNull() || !r.ExpectMap(root, "")) throw InputError(r.diagnostics());
   r.CheckKeys(root, "", {"lengths", "ratio", "pivots", "input", "A0", "frame_angle", "coupler_point", "mu_min"});
   DesignSpace space;
   if (const YAML::Node n = root["lengths"]; n.IsDefined()) {
     space.lengths = Interval(r, n, "lengths");
     if (space.lengths && space.lengths->second <= 0) r.Error(n, "lengths", "the largest length must be positive");
+    else if (space.lengths && space.lengths->first < 0) r.Error(n, "lengths", "the smallest length cannot be negative (0 admits any)");
   }
   if (const YAML::Node n = root["ratio"]; n.IsDefined()) {
     if (const auto v = r.Number(n, "ratio")) {

@@ -72,9 +72,11 @@ TEST_CASE("a mutated copy of every entry fails: each figure, each equation and e
     CHECK_FALSE(r.passed());
 
     // a declared feature changed (the card without its figures, which the above covers): the
-    // links count, then the joints of type D (a dwell keeps its rest, the figure its class stands on)
+    // links count, then the joints of type D (a dwell keeps its rest and a quick return its time
+    // ratio, the figures their classes stand on)
     CatalogCard features_only = *e.file.card;
-    std::erase_if(features_only.figures, [](const FigureCheck& f) { return f.quantity != FigureQuantity::kRest; });
+    std::erase_if(features_only.figures,
+                  [](const FigureCheck& f) { return f.quantity != FigureQuantity::kRest && f.quantity != FigureQuantity::kTimeRatio; });
     features_only.equations.clear();
     features_only.variants.clear();
     CHECK(CheckCard(e.file.path, features_only).passed());
@@ -147,6 +149,14 @@ TEST_CASE("quick-return is computed: declared exactly where the time ratio is no
   const CheckOutcome& wrong = Find(centric, "class quick-return");
   CHECK(wrong.status == CheckStatus::kFailed);
   CHECK_THAT(wrong.detail, Catch::Contains("declared, but x's time ratio is 1"));
+  // declared and computed, but without a time_ratio figure: the class's number is not stated
+  const Catalog catalog = Catalog::Load(KOPPEL_CATALOG_DIR);
+  CatalogCard unstated = *catalog.Find("whitworth-quick-return")->file.card;
+  std::erase_if(unstated.figures, [](const FigureCheck& f) { return f.quantity == FigureQuantity::kTimeRatio; });
+  const EntryReport silent = CheckCard(test::CatalogEntryPath("whitworth-quick-return"), unstated);
+  const CheckOutcome& quiet = Find(silent, "class quick-return");
+  CHECK(quiet.status == CheckStatus::kFailed);
+  CHECK_THAT(quiet.detail, Catch::Contains("state it as a time_ratio figure"));
 }
 
 TEST_CASE("dwell is computed: declared exactly where a rest figure states it, and the rest is checked", "[catalog][check]") {

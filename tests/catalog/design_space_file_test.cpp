@@ -136,6 +136,15 @@ TEST_CASE("every problem of a design file is reported at once, each at its line"
   REQUIRE(outside.size() == 1);
   CHECK_THAT(outside[0].message, Catch::Contains("A0 lies outside pivots.x"));
   CHECK_FALSE(Problems("[1, 2]\n").empty());  // a design file is a map
+  // a negative smallest length: no link is negative, so the bound is a slip, not a constraint
+  const std::vector<Diagnostic> below = Problems("lengths: [-5, 3]\n");
+  REQUIRE(below.size() == 1);
+  CHECK(below[0].line == 1);
+  CHECK_THAT(below[0].message, Catch::Contains("smallest length cannot be negative"));
+  // comments alone state no constraint: a --design that would change nothing is refused
+  const std::vector<Diagnostic> empty = Problems("# nothing yet\n");
+  REQUIRE(empty.size() == 1);
+  CHECK_THAT(empty[0].message, Catch::Contains("states no constraint"));
 }
 
 }  // namespace koppel::design_space_file_test

@@ -136,7 +136,7 @@ TEST_CASE("catalog search: each textbook linkage is found by its English and its
       {{"kite", "Drachen", "deltoid"}, "kite-four-bar"},
       {{"Ackermann", "steering", "Lenkung", "Lenktrapez"}, "ackermann-steering"},
       {{"level luffing", "Wippkran", "crane", "Kran"}, "level-luffing-crane"},
-      {{"parallel motion", "Watt"}, "watt-parallel-motion"},
+      {{"parallel motion", "Parallelbewegung", "Wattsches Parallelogramm", "beam engine", "Balanciermaschine"}, "watt-parallel-motion"},
       {{"scissor lift", "Scherenhubtisch", "lazy tongs"}, "scissor-lift"},
       {{"Walschaerts", "valve gear", "Heusinger", "Steuerung"}, "walschaerts-valve-gear"},
       {{"film advance", "claw", "Greiferwerk", "Filmtransport"}, "film-advance-claw"},

@@ -158,6 +158,18 @@ TEST_CASE("the page's malformed mechanism is refused at its field", "[api][edito
   j["links"][2]["name"] = 5;
   CHECK(refusal(j).path == "links[2].name");
   CHECK_THAT(refusal(j).message, Catch::Contains("wrong type"));
+  // a joint type the file format does not have, a fractional index and a point's bad field, each at its path
+  j = good;
+  j["joints"][0]["type"] = "p";
+  CHECK(refusal(j).path == "joints[0].type");
+  CHECK_THAT(refusal(j).message, Catch::Contains("expected R or P, found 'p'"));
+  j = good;
+  j["joints"][0]["link_a"] = 1.7;
+  CHECK(refusal(j).path == "joints[0].link_a");
+  CHECK_THAT(refusal(j).message, Catch::Contains("not a whole number"));
+  j = good;
+  j["links"][1]["points"][1]["x"] = "1";
+  CHECK(refusal(j).path == "links[1].points[1].x");
   j = good;
   j.erase("hint");
   CHECK(refusal(j).file == "editor JSON");

@@ -51,6 +51,13 @@ T Field(const json& object, const char* key, const std::string& where) {
   }
 }
 
+// A whole number (an index into the links, points or joints): 1.7 is refused, not cut to 1.
+int IndexField(const json& object, const char* key, const std::string& where) {
+  const auto it = object.find(key);
+  if (it == object.end() || !it->is_number_integer()) BadInput(kEditorJson, where + "." + key, "missing or not a whole number");
+  return it->get<int>();
+}
+
 PointRef PointRefOf(const json& object, const char* key, const std::string& where) {
   const auto pair = Field<std::vector<int>>(object, key, where);
   if (pair.size() != 2) BadInput(kEditorJson, where + "." + key, "expected [link, point]");
@@ -61,19 +68,25 @@ Link LinkOf(const json& j, const std::string& where) {
   Link link;
   link.name = Field<std::string>(j, "name", where);
   link.is_frame = Field<bool>(j, "frame", where);
-  for (const json& p : j.at("points"))
-    link.points.push_back({Field<std::string>(p, "name", where), {Field<double>(p, "x", where), Field<double>(p, "y", where)}});
+  const json& points = j.at("points");
+  for (size_t k = 0; k < points.size(); ++k) {
+    const json& p = points[k];
+    const std::string at = where + ".points[" + std::to_string(k) + "]";
+    link.points.push_back({Field<std::string>(p, "name", at), {Field<double>(p, "x", at), Field<double>(p, "y", at)}});
+  }
   return link;
 }
 
 Joint JointOf(const json& j, const std::string& where) {
   Joint joint;
   joint.name = Field<std::string>(j, "name", where);
-  joint.type = Field<std::string>(j, "type", where) == "P" ? JointType::kPrismatic : JointType::kRevolute;
-  joint.link_a = Field<int>(j, "link_a", where);
-  joint.link_b = Field<int>(j, "link_b", where);
-  joint.point_a = Field<int>(j, "point_a", where);
-  joint.point_b = Field<int>(j, "point_b", where);
+  const std::string type = Field<std::string>(j, "type", where);
+  if (type != "R" && type != "P") BadInput(kEditorJson, where + ".type", "expected R or P, found '" + type + "'");
+  joint.type = type == "P" ? JointType::kPrismatic : JointType::kRevolute;
+  joint.link_a = IndexField(j, "link_a", where);
+  joint.link_b = IndexField(j, "link_b", where);
+  joint.point_a = IndexField(j, "point_a", where);
+  joint.point_b = IndexField(j, "point_b", where);
   const auto axis = Field<std::vector<double>>(j, "axis", where);
   if (axis.size() != 2) BadInput(kEditorJson, where + ".axis", "expected [x, y]");
   const Eigen::Vector2d a(axis[0], axis[1]);
@@ -92,8 +105,8 @@ Output OutputOf(const json& j, const std::string& where) {
   for (const auto& [k, word] : kOutputKinds)
     if (kind == word) o.kind = k, known = true;
   if (!known) BadInput(kEditorJson, where + ".kind", "unknown output kind '" + kind + "'");
-  o.joint = Field<int>(j, "joint", where);
-  o.link = Field<int>(j, "link", where);
+  o.joint = IndexField(j, "joint", where);
+  o.link = IndexField(j, "link", where);
   o.p = PointRefOf(j, "p", where);
   o.q = PointRefOf(j, "q", where);
   o.offset = Field<double>(j, "offset", where);

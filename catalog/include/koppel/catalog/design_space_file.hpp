@@ -1,5 +1,5 @@
 // The design file of a synthesis (--design FILE.yaml): the design space
-// (koppel/synthesis/design_space.hpp) as an engineer writes it, every key optional:
+// (koppel/synthesis/design_space.hpp) as an engineer writes it, every key optional (but one at least):
 //   lengths: [min, max]        every link, the frame too
 //   ratio: max                 longest link / shortest link
 //   pivots: {x: [a, b], y: [c, d]}   both frame pivots inside this box

@@ -169,12 +169,14 @@ TEST_CASE("dwell is computed: declared exactly where a rest figure states it, an
   CHECK_THAT(Find(as_is, "dwell: the ram rests").value, Catch::Matchers::WithinAbs(5.72044e-4, 1e-9));
   // the class without the rest figure: no rest is stated
   const std::string no_rest = dir.Write("a.yaml", Replace(press, "quantity: rest", "quantity: stroke"));
-  const CheckOutcome& unstated = Find(CheckEntry(no_rest), "class dwell");
+  const EntryReport without_rest = CheckEntry(no_rest);  // kept: Find returns a reference into it
+  const CheckOutcome& unstated = Find(without_rest, "class dwell");
   CHECK(unstated.status == CheckStatus::kFailed);
   CHECK_THAT(unstated.detail, Catch::Contains("no figure states the rest"));
   // the rest without the class
   const std::string undeclared = dir.Write("b.yaml", Replace(press, "class: [toggle, dwell,", "class: [toggle,"));
-  const CheckOutcome& missing = Find(CheckEntry(undeclared), "class dwell");
+  const EntryReport without_class = CheckEntry(undeclared);
+  const CheckOutcome& missing = Find(without_class, "class dwell");
   CHECK(missing.status == CheckStatus::kFailed);
   CHECK_THAT(missing.detail, Catch::Contains("declare the class dwell"));
   // a band narrower than the motion: the rest itself fails

@@ -5,6 +5,7 @@
 
 #include "koppel/catalog/catalog.hpp"
 
+#include "support/seeds.hpp"
 #include "support/temp_file.hpp"
 #include "support/text.hpp"
 
@@ -56,7 +57,9 @@ TEST_CASE("every catalog entry passes its own checks", "[catalog][check]") {
 
 TEST_CASE("a mutated copy of every entry fails: each figure, each equation and each declared feature", "[catalog][check]") {
   const Catalog catalog = Catalog::Load(KOPPEL_CATALOG_DIR);
+  int index = 0;
   for (const CatalogEntry& e : catalog.entries()) {
+    if (!test::InCheckedShare(index++)) continue;  // every entry in the Release build, a fifth under the sanitizers
     INFO(e.file.id);
     // every expected value and formula moved by twice its tolerance (and a little more, so that
     // rounding cannot keep it inside): each check must now fail on its own
